@@ -1,0 +1,600 @@
+/*
+ * projcurve.h — the public interface of libprojcurve.
+ *
+ * libprojcurve projects curves onto B-spline and NURBS surfaces:
+ *   - directional projection (every q on S with (q - p) x Dir = 0, (q - p).Dir > 0),
+ *   - orthogonal projection (every foot point q on S whose normal passes through p),
+ *   - point projection (closest point of a curve or a surface to a point).
+ * Results are traced branches in the surface's parameter domain and, composed
+ * with the surface by blossoming, Bezier/NURBS curves lying exactly on it.
+ *
+ * Conventions (apply to every function below unless its comment says otherwise):
+ *   - Every fallible function takes a projcurve_context first and returns a
+ *     projcurve_status; PROJCURVE_OK is 0. On failure a message describing the
+ *     problem is stored in the context (projcurve_context_message) and the
+ *     caller's objects and output pointers are left untouched.
+ *   - The context may be NULL: the call then behaves the same, but no message
+ *     is kept. A context must not be used by two threads at the same time.
+ *   - Handles (surfaces, curves, results, models) are immutable after creation
+ *     and may be shared read-only between threads. Options handles are mutable
+ *     and must not be modified while another thread reads them.
+ *   - *_destroy functions accept NULL and never fail.
+ *   - Arrays are copied at creation: the caller keeps ownership of its memory.
+ *   - Points are 3 doubles (x, y, z). Surface control nets are stored with the
+ *     u index running fastest: point (i, j) is at ctrl[3 * (j * n_u + i)].
+ */
+#ifndef PROJCURVE_H
+#define PROJCURVE_H
+
+#include <stddef.h>
+
+#include "projcurve_version.h"
+
+#if defined(_WIN32) && !defined(PROJCURVE_STATIC)
+#  ifdef PROJCURVE_BUILDING
+#    define PROJCURVE_API __declspec(dllexport)
+#  else
+#    define PROJCURVE_API __declspec(dllimport)
+#  endif
+#elif defined(__GNUC__) && defined(PROJCURVE_BUILDING)
+#  define PROJCURVE_API __attribute__((visibility("default")))
+#else
+#  define PROJCURVE_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ======================================================================== */
+/* Version                                                                   */
+/* ======================================================================== */
+
+/* Version of the library actually loaded, as
+ * MAJOR * 10000 + MINOR * 100 + PATCH. Compare with PROJCURVE_VERSION_NUMBER
+ * (the version of the header compiled against). Thread-safe. */
+PROJCURVE_API unsigned projcurve_version_number(void);
+
+/* The same as a string "MAJOR.MINOR.PATCH" (static storage). Thread-safe. */
+PROJCURVE_API const char *projcurve_version_string(void);
+
+/* ======================================================================== */
+/* Status codes                                                              */
+/* ======================================================================== */
+
+typedef enum projcurve_status {
+    PROJCURVE_OK = 0,
+    PROJCURVE_ERR_NULL_ARGUMENT = 1,   /* a required pointer was NULL */
+    PROJCURVE_ERR_INVALID_ARGUMENT = 2,/* a value that makes no sense */
+    PROJCURVE_ERR_OUT_OF_RANGE = 3,    /* a value outside its documented bounds */
+    PROJCURVE_ERR_UNKNOWN_OPTION = 4,  /* an option key the library does not know */
+    PROJCURVE_ERR_NOT_FINITE = 5,      /* NaN or infinity in coordinates/values */
+    PROJCURVE_ERR_BAD_KNOTS = 6,       /* knot vector decreasing, too short, empty domain */
+    PROJCURVE_ERR_BAD_COUNT = 7,       /* counts that do not match each other */
+    PROJCURVE_ERR_BAD_WEIGHT = 8,      /* a weight <= 0 or not finite */
+    PROJCURVE_ERR_BAD_DEGREE = 9,      /* degree 0 or above PROJCURVE_MAX_DEGREE */
+    PROJCURVE_ERR_OVERFLOW = 10,       /* sizes whose product overflows */
+    PROJCURVE_ERR_OUT_OF_DOMAIN = 11,  /* parameter outside the domain */
+    PROJCURVE_ERR_ZERO_DIRECTION = 12, /* projection/ray direction of length 0 */
+    PROJCURVE_ERR_NO_MEMORY = 13,      /* an allocation failed */
+    PROJCURVE_ERR_VERSION = 14,        /* header/library major versions differ */
+    PROJCURVE_ERR_NOT_CONVERGED = 15,  /* an iteration hit its bound */
+    PROJCURVE_ERR_LIMIT_REACHED = 16,  /* a size limit was hit; partial result kept */
+    PROJCURVE_ERR_CALLBACK = 17,       /* a user callback failed or returned NaN */
+    PROJCURVE_ERR_SINGULAR = 18,       /* a degenerate configuration (zero gradient, ...) */
+    PROJCURVE_ERR_IO = 19,             /* a file could not be opened/read/written */
+    PROJCURVE_ERR_PARSE = 20,          /* malformed file contents */
+    PROJCURVE_ERR_UNSUPPORTED = 21,    /* valid input the library does not handle */
+    PROJCURVE_ERR_INDEX = 22,          /* an index past the end */
+    PROJCURVE_ERR_WRONG_KIND = 23      /* the handle is of another kind (e.g. not NURBS) */
+} projcurve_status;
+
+/* A short, static English name for every status (never NULL; unknown codes
+ * give "unknown status"). Thread-safe. */
+PROJCURVE_API const char *projcurve_status_string(projcurve_status status);
+
+/* Highest degree accepted for curves and surfaces. */
+#define PROJCURVE_MAX_DEGREE 30
+
+/* ======================================================================== */
+/* Context: error messages                                                   */
+/* ======================================================================== */
+
+typedef struct projcurve_context projcurve_context;
+
+/* Creates a context. Pass PROJCURVE_VERSION_MAJOR as abi_major: a caller built
+ * against another major version gets PROJCURVE_ERR_VERSION.
+ * Statuses: OK, NULL_ARGUMENT (out), VERSION, NO_MEMORY. Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_context_create(unsigned abi_major,
+                                                        projcurve_context **out);
+
+/* Releases a context (NULL is accepted). */
+PROJCURVE_API void projcurve_context_destroy(projcurve_context *ctx);
+
+/* Message of the last failed call made with ctx ("" if none; NULL ctx gives
+ * "no context"). Valid until the next call with ctx. */
+PROJCURVE_API const char *projcurve_context_message(const projcurve_context *ctx);
+
+/* Status of the last failed call made with ctx (OK if none). */
+PROJCURVE_API projcurve_status projcurve_context_status(const projcurve_context *ctx);
+
+/* Forgets the last failure. */
+PROJCURVE_API void projcurve_context_clear(projcurve_context *ctx);
+
+/* ======================================================================== */
+/* Options                                                                   */
+/* ======================================================================== */
+
+typedef struct projcurve_options projcurve_options;
+
+/* Option keys. Each has a type (double or integer), bounds and a default;
+ * projcurve_option_info tells them. */
+typedef enum projcurve_option {
+    /* double: Hausdorff tolerance eps_D in model units; 0 = automatic
+     * (1e-4 of the surface's bounding-box diagonal). Bounds [0, 1e300]. */
+    PROJCURVE_OPT_TOL_DISTANCE = 1,
+    /* double: joint angle tolerance eps_T in degrees, (0, 90]. Default 1. */
+    PROJCURVE_OPT_TOL_ANGLE_DEG = 2,
+    /* double: Newton tolerance eps1 = eps2 of seed 000 s3.3, relative to the
+     * model size. Default 1e-12, bounds [1e-15, 1e-3]. */
+    PROJCURVE_OPT_NEWTON_TOL = 3,
+    /* integer: Newton iteration cap per correction. Default 20, [1, 200]. */
+    PROJCURVE_OPT_NEWTON_MAX_ITER = 4,
+    /* integer: PROJCURVE_METHOD_SECOND_ORDER (default) or PROJCURVE_METHOD_RK4. */
+    PROJCURVE_OPT_METHOD = 5,
+    /* double: constant parameter increment dt for tracing; 0 = automatic
+     * arc-length step (default). Bounds [0, 1e300]. */
+    PROJCURVE_OPT_PARAM_STEP = 6,
+    /* double: arc-length step as a fraction of the estimated total length
+     * of the projection, used when PARAM_STEP is 0. Default 1/64, [1e-7, 1]. */
+    PROJCURVE_OPT_ARC_STEP_FRACTION = 7,
+    /* integer: maximum number of traced points per projection.
+     * Default 10,000,000, [16, 2^40]. */
+    PROJCURVE_OPT_MAX_POINTS = 8,
+    /* integer: maximum number of composed pieces per projection.
+     * Default 1,000,000, [1, 2^40]. */
+    PROJCURVE_OPT_MAX_PIECES = 9,
+    /* integer: 1 = compose pieces exactly on S (default), 0 = trace only
+     * (polylines, no eps_D / eps_T refinement). */
+    PROJCURVE_OPT_COMPOSE = 10,
+    /* integer: 1 = detect branches born in mid-curve (default), 0 = trace
+     * only the branches seeded at the start of the curve. */
+    PROJCURVE_OPT_JUMP_DETECTION = 11
+} projcurve_option;
+
+#define PROJCURVE_METHOD_SECOND_ORDER 0
+#define PROJCURVE_METHOD_RK4 1
+
+typedef enum projcurve_option_type {
+    PROJCURVE_OPTION_DOUBLE = 0,
+    PROJCURVE_OPTION_INTEGER = 1
+} projcurve_option_type;
+
+/* Creates options holding every default.
+ * Statuses: OK, NULL_ARGUMENT, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_options_create(projcurve_context *ctx,
+                                                        projcurve_options **out);
+PROJCURVE_API void projcurve_options_destroy(projcurve_options *opts);
+
+/* Type, bounds and default of an option (any output pointer may be NULL).
+ * Statuses: OK, UNKNOWN_OPTION. Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_option_info(projcurve_context *ctx,
+                                                     projcurve_option key,
+                                                     projcurve_option_type *type,
+                                                     double *min_value,
+                                                     double *max_value,
+                                                     double *default_value);
+
+/* Setters. Statuses: OK, NULL_ARGUMENT, UNKNOWN_OPTION, WRONG_KIND (the key
+ * has the other type), NOT_FINITE, OUT_OF_RANGE. On failure opts is unchanged. */
+PROJCURVE_API projcurve_status projcurve_options_set_double(projcurve_context *ctx,
+                                                            projcurve_options *opts,
+                                                            projcurve_option key,
+                                                            double value);
+PROJCURVE_API projcurve_status projcurve_options_set_int(projcurve_context *ctx,
+                                                         projcurve_options *opts,
+                                                         projcurve_option key,
+                                                         long long value);
+/* Getters. Statuses: OK, NULL_ARGUMENT, UNKNOWN_OPTION, WRONG_KIND. */
+PROJCURVE_API projcurve_status projcurve_options_get_double(projcurve_context *ctx,
+                                                            const projcurve_options *opts,
+                                                            projcurve_option key,
+                                                            double *value);
+PROJCURVE_API projcurve_status projcurve_options_get_int(projcurve_context *ctx,
+                                                         const projcurve_options *opts,
+                                                         projcurve_option key,
+                                                         long long *value);
+
+/* ======================================================================== */
+/* Curves                                                                    */
+/* ======================================================================== */
+
+typedef struct projcurve_curve projcurve_curve;
+
+/* Creates a B-spline (weights == NULL) or NURBS curve of the given degree
+ * (1..PROJCURVE_MAX_DEGREE) from n_ctrl points (3 doubles each), n_ctrl
+ * weights and n_ctrl + degree + 1 knots. The domain is
+ * [knots[degree], knots[n_ctrl]]; unclamped and periodic knot vectors are
+ * converted exactly to clamped form over that domain.
+ * Statuses: OK, NULL_ARGUMENT, BAD_DEGREE, BAD_COUNT, BAD_KNOTS, NOT_FINITE,
+ * BAD_WEIGHT, OVERFLOW, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_curve_create_nurbs(projcurve_context *ctx,
+                                                            int degree,
+                                                            size_t n_ctrl,
+                                                            const double *ctrl,
+                                                            const double *weights,
+                                                            const double *knots,
+                                                            projcurve_curve **out);
+
+/* A user-defined curve: fills out[0..8] with P(t), P'(t), P''(t) and returns 0;
+ * any other return value is a failure. Must be callable from any thread that
+ * uses the curve, and deterministic. */
+typedef int (*projcurve_curve_fn)(void *user, double t, double out[9]);
+
+/* Creates a curve from a callback over [t0, t1] (t0 < t1, both finite).
+ * The callback is not called here. user must outlive the curve.
+ * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, INVALID_ARGUMENT, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_curve_create_callback(projcurve_context *ctx,
+                                                               projcurve_curve_fn fn,
+                                                               void *user,
+                                                               double t0, double t1,
+                                                               projcurve_curve **out);
+
+PROJCURVE_API void projcurve_curve_destroy(projcurve_curve *curve);
+
+/* Parameter domain. Statuses: OK, NULL_ARGUMENT. */
+PROJCURVE_API projcurve_status projcurve_curve_domain(projcurve_context *ctx,
+                                                      const projcurve_curve *curve,
+                                                      double *t0, double *t1);
+
+/* Point and derivatives up to order n_deriv (0..3; callback curves 0..2):
+ * out receives 3 * (n_deriv + 1) doubles: C, C', C'', C'''.
+ * Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (n_deriv), OUT_OF_DOMAIN,
+ * NOT_FINITE (t), CALLBACK. */
+PROJCURVE_API projcurve_status projcurve_curve_eval(projcurve_context *ctx,
+                                                    const projcurve_curve *curve,
+                                                    double t, int n_deriv,
+                                                    double *out);
+
+/* Shape of a NURBS curve (any output may be NULL): degree, control point
+ * count, knot count, and 1 if rational. Statuses: OK, NULL_ARGUMENT,
+ * WRONG_KIND (callback curve). */
+PROJCURVE_API projcurve_status projcurve_curve_nurbs_info(projcurve_context *ctx,
+                                                          const projcurve_curve *curve,
+                                                          int *degree, size_t *n_ctrl,
+                                                          size_t *n_knots, int *rational);
+
+/* Copies the clamped NURBS data out: ctrl (3 * n_ctrl), weights (n_ctrl),
+ * knots (n_knots); any may be NULL. Statuses: OK, NULL_ARGUMENT, WRONG_KIND. */
+PROJCURVE_API projcurve_status projcurve_curve_nurbs_data(projcurve_context *ctx,
+                                                          const projcurve_curve *curve,
+                                                          double *ctrl, double *weights,
+                                                          double *knots);
+
+/* ======================================================================== */
+/* Surfaces                                                                  */
+/* ======================================================================== */
+
+typedef struct projcurve_surface projcurve_surface;
+
+/* Creates a B-spline (weights == NULL) or NURBS surface of degrees
+ * (deg_u, deg_v) from an n_u x n_v control net (u fastest), n_u * n_v weights
+ * and the knot vectors (n_u + deg_u + 1 and n_v + deg_v + 1 knots). Domain and
+ * clamping as for curves. The Bezier patch decomposition and the patch
+ * bounding-volume hierarchy are built here, once.
+ * Statuses: OK, NULL_ARGUMENT, BAD_DEGREE, BAD_COUNT, BAD_KNOTS, NOT_FINITE,
+ * BAD_WEIGHT, OVERFLOW, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_surface_create_nurbs(projcurve_context *ctx,
+                                                              int deg_u, int deg_v,
+                                                              size_t n_u, size_t n_v,
+                                                              const double *ctrl,
+                                                              const double *weights,
+                                                              const double *knots_u,
+                                                              const double *knots_v,
+                                                              projcurve_surface **out);
+
+PROJCURVE_API void projcurve_surface_destroy(projcurve_surface *surface);
+
+/* Domain as {u0, u1, v0, v1}. Statuses: OK, NULL_ARGUMENT. */
+PROJCURVE_API projcurve_status projcurve_surface_domain(projcurve_context *ctx,
+                                                        const projcurve_surface *surface,
+                                                        double domain[4]);
+
+/* Shape (any output may be NULL): degrees, net size, number of non-empty
+ * knot spans in u and v (Bezier patches = spans_u * spans_v), rational flag.
+ * Statuses: OK, NULL_ARGUMENT. */
+PROJCURVE_API projcurve_status projcurve_surface_info(projcurve_context *ctx,
+                                                      const projcurve_surface *surface,
+                                                      int *deg_u, int *deg_v,
+                                                      size_t *n_u, size_t *n_v,
+                                                      size_t *spans_u, size_t *spans_v,
+                                                      int *rational);
+
+/* Point and partial derivatives up to total order n_deriv (0..2): out receives
+ * S (n_deriv 0), then Su, Sv (1), then Suu, Suv, Svv (2), 3 doubles each.
+ * Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (n_deriv), NOT_FINITE,
+ * OUT_OF_DOMAIN. */
+PROJCURVE_API projcurve_status projcurve_surface_eval(projcurve_context *ctx,
+                                                      const projcurve_surface *surface,
+                                                      double u, double v, int n_deriv,
+                                                      double *out);
+
+/* Axis-aligned bounding box {xmin, ymin, zmin, xmax, ymax, zmax} of the
+ * control net (contains the surface). Statuses: OK, NULL_ARGUMENT. */
+PROJCURVE_API projcurve_status projcurve_surface_bounds(projcurve_context *ctx,
+                                                        const projcurve_surface *surface,
+                                                        double box[6]);
+
+/* ======================================================================== */
+/* Point projection (seed 004 and its surface analogue)                      */
+/* ======================================================================== */
+
+/* Closest point of the curve to p: parameter *t, point q (may be NULL) and
+ * distance *dist (may be NULL). End points are candidates.
+ * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, CALLBACK, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_curve_closest_point(projcurve_context *ctx,
+                                                             const projcurve_curve *curve,
+                                                             const double p[3],
+                                                             double *t, double q[3],
+                                                             double *dist);
+
+/* Closest point of the surface to p: parameters uv, point q and distance
+ * (q, dist may be NULL). Edges and corners are candidates.
+ * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_surface_closest_point(projcurve_context *ctx,
+                                                               const projcurve_surface *surface,
+                                                               const double p[3],
+                                                               double uv[2], double q[3],
+                                                               double *dist);
+
+/* Every interior local foot point of p on the surface ((S - p).Su =
+ * (S - p).Sv = 0), sorted by distance. Up to `capacity` (u, v) pairs are
+ * written to uv; *count receives the number found (which may exceed
+ * capacity). Statuses: OK, NULL_ARGUMENT, NOT_FINITE, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_surface_foot_points(projcurve_context *ctx,
+                                                             const projcurve_surface *surface,
+                                                             const double p[3],
+                                                             size_t capacity, double *uv,
+                                                             size_t *count);
+
+/* ======================================================================== */
+/* Line / surface intersection                                               */
+/* ======================================================================== */
+
+/* Flags of a hit. */
+#define PROJCURVE_HIT_TANGENT 1u  /* the line grazes S (Dir nearly in the tangent plane) */
+#define PROJCURVE_HIT_BOUNDARY 2u /* the hit lies on the boundary of S's domain */
+
+/* All intersections of the line origin + lambda * dir with the surface,
+ * sorted by lambda; with ray_only != 0 only lambda > 0. Up to capacity hits
+ * are written: hits[3k..3k+2] = (u, v, lambda) and flags[k] (flags may be
+ * NULL); *count gets the number found (may exceed capacity). Hits on shared
+ * patch edges or corners are reported once. A line that misses gives
+ * *count = 0 and OK.
+ * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_surface_intersect_line(projcurve_context *ctx,
+                                                                const projcurve_surface *surface,
+                                                                const double origin[3],
+                                                                const double dir[3],
+                                                                int ray_only,
+                                                                size_t capacity,
+                                                                double *hits,
+                                                                unsigned *flags,
+                                                                size_t *count);
+
+/* ======================================================================== */
+/* Projection                                                                */
+/* ======================================================================== */
+
+typedef struct projcurve_result projcurve_result;
+
+/* Directional projection of curve onto surface along dir (seed 000). opts
+ * may be NULL (defaults). On success *out holds every branch.
+ * PROJCURVE_ERR_LIMIT_REACHED also sets *out: a partial result, readable,
+ * whose truncated branches end with PROJCURVE_END_LIMIT.
+ * A curve that misses the surface gives OK and a result with no branches.
+ * Statuses: OK, LIMIT_REACHED, NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION,
+ * OUT_OF_RANGE (tolerances), CALLBACK, NO_MEMORY. Thread-safe for distinct
+ * contexts; the inputs are only read. */
+PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *ctx,
+                                                             const projcurve_surface *surface,
+                                                             const projcurve_curve *curve,
+                                                             const double dir[3],
+                                                             const projcurve_options *opts,
+                                                             projcurve_result **out);
+
+/* Orthogonal projection of curve onto surface (seed 003, parametric form):
+ * every continuous branch of foot points. Same result and statuses as the
+ * directional projection (ZERO_DIRECTION aside). */
+PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
+                                                            const projcurve_surface *surface,
+                                                            const projcurve_curve *curve,
+                                                            const projcurve_options *opts,
+                                                            projcurve_result **out);
+
+/* An implicit surface f(x) = 0: fills *value, grad[3] and hess[9] (row-major)
+ * at x and returns 0; any other return value is a failure. */
+typedef int (*projcurve_implicit_fn)(void *user, const double x[3], double *value,
+                                     double grad[3], double hess[9]);
+
+/* Orthogonal projection onto an implicit surface (seed 003, eq. 32): traces the
+ * foot point curve in 3-space starting from the foot point of P(t0) nearest
+ * to it. Branches carry 3D points instead of (u, v) and composed pieces are a
+ * cubic B-spline approximation within eps_D. model_size sets the scale for
+ * relative tolerances (> 0).
+ * Statuses: as projcurve_project_orthogonal, plus CALLBACK and SINGULAR. */
+PROJCURVE_API projcurve_status projcurve_project_orthogonal_implicit(projcurve_context *ctx,
+                                                                     projcurve_implicit_fn fn,
+                                                                     void *user,
+                                                                     double model_size,
+                                                                     const projcurve_curve *curve,
+                                                                     const projcurve_options *opts,
+                                                                     projcurve_result **out);
+
+/* ======================================================================== */
+/* Results                                                                   */
+/* ======================================================================== */
+
+/* Why a branch starts. */
+typedef enum projcurve_branch_start {
+    PROJCURVE_START_CURVE_START = 0, /* seeded at the start of the curve */
+    PROJCURVE_START_JUMP = 1,        /* born in mid-curve (jump detection) */
+    PROJCURVE_START_BOUNDARY = 2,    /* enters through the boundary of S */
+    PROJCURVE_START_SILHOUETTE = 3   /* born at a fold where Dir is tangent to S */
+} projcurve_branch_start;
+
+/* Why a branch ends. */
+typedef enum projcurve_branch_end {
+    PROJCURVE_END_CURVE_END = 0,     /* reached the end of the curve */
+    PROJCURVE_END_BOUNDARY = 1,      /* left S through its boundary */
+    PROJCURVE_END_SILHOUETTE = 2,    /* met a fold (det J = 0) */
+    PROJCURVE_END_CURVATURE_CENTRE = 3, /* orthogonal: P(t) at a centre of curvature */
+    PROJCURVE_END_LIMIT = 4,         /* a size limit stopped it */
+    PROJCURVE_END_FAILED = 5         /* the corrector could not continue */
+} projcurve_branch_end;
+
+/* Statistics keys for projcurve_result_stat. */
+typedef enum projcurve_stat {
+    PROJCURVE_STAT_POINTS = 0,        /* traced points, all branches */
+    PROJCURVE_STAT_STEPS = 1,         /* predictor steps attempted */
+    PROJCURVE_STAT_NEWTON_ITERATIONS = 2,
+    PROJCURVE_STAT_AVG_ERROR = 3,     /* seed 000 eq. (3.8): mean |predicted - corrected| */
+    PROJCURVE_STAT_JUMPS = 4,         /* branches found in mid-curve */
+    PROJCURVE_STAT_PIECES = 5,        /* composed pieces, all branches */
+    PROJCURVE_STAT_TOL_DISTANCE = 6,  /* eps_D actually used (model units) */
+    PROJCURVE_STAT_MAX_ERROR = 7      /* largest |predicted - corrected| */
+} projcurve_stat;
+
+PROJCURVE_API void projcurve_result_destroy(projcurve_result *result);
+
+/* Number of branches (0 for NULL). Thread-safe. */
+PROJCURVE_API size_t projcurve_result_branch_count(const projcurve_result *result);
+
+/* A statistic. Statuses: OK, NULL_ARGUMENT, UNKNOWN_OPTION (key). */
+PROJCURVE_API projcurve_status projcurve_result_stat(projcurve_context *ctx,
+                                                     const projcurve_result *result,
+                                                     projcurve_stat key, double *value);
+
+/* Branch summary (outputs may be NULL): curve parameter range, how it
+ * started and ended, number of traced points and of composed pieces.
+ * Statuses: OK, NULL_ARGUMENT, INDEX. */
+PROJCURVE_API projcurve_status projcurve_result_branch_info(projcurve_context *ctx,
+                                                            const projcurve_result *result,
+                                                            size_t branch,
+                                                            double t_range[2],
+                                                            projcurve_branch_start *start,
+                                                            projcurve_branch_end *end,
+                                                            size_t *n_points,
+                                                            size_t *n_pieces);
+
+/* The traced polyline (the 2D pcurve) of a branch: up to capacity vertices
+ * are written as (t, u, v) triples ((t, x, y, z) quadruples for implicit
+ * results, see projcurve_result_point_dim); *count receives the vertex count.
+ * Statuses: OK, NULL_ARGUMENT, INDEX. */
+PROJCURVE_API projcurve_status projcurve_result_branch_points(projcurve_context *ctx,
+                                                              const projcurve_result *result,
+                                                              size_t branch,
+                                                              size_t capacity,
+                                                              double *points,
+                                                              size_t *count);
+
+/* 3 for (t, u, v) results of parametric surfaces, 4 for (t, x, y, z)
+ * results of implicit surfaces (0 for NULL). */
+PROJCURVE_API int projcurve_result_point_dim(const projcurve_result *result);
+
+/* One composed piece of a branch: a Bezier curve of degree *degree with
+ * *degree + 1 control points (3 doubles each) and weights (all 1 when not
+ * rational), over the curve-parameter range range[2]; uv_range[4] gives
+ * (u, v) at its start and end. Output arrays must hold
+ * PROJCURVE_MAX_PIECE_POINTS points. Any output may be NULL.
+ * Statuses: OK, NULL_ARGUMENT, INDEX. */
+#define PROJCURVE_MAX_PIECE_POINTS (2 * PROJCURVE_MAX_DEGREE + 1)
+PROJCURVE_API projcurve_status projcurve_result_piece(projcurve_context *ctx,
+                                                      const projcurve_result *result,
+                                                      size_t branch, size_t piece,
+                                                      int *degree, double *ctrl,
+                                                      double *weights, double range[2],
+                                                      double uv_range[4]);
+
+/* The whole branch as one NURBS curve handle (pieces joined, knots at the
+ * joins), usable with the curve functions; release with
+ * projcurve_curve_destroy. Statuses: OK, NULL_ARGUMENT, INDEX, NO_MEMORY,
+ * INVALID_ARGUMENT (branch without composed pieces). */
+PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *ctx,
+                                                             const projcurve_result *result,
+                                                             size_t branch,
+                                                             projcurve_curve **out);
+
+/* ======================================================================== */
+/* Files: IGES, STEP and G+Smo XML                                           */
+/* ======================================================================== */
+
+typedef struct projcurve_model projcurve_model;
+
+/* Reads a file: IGES (.igs/.iges), STEP (.stp/.step) or G+Smo XML (.xml),
+ * recognised by content. Surfaces become surface handles, curves curve
+ * handles; entities that are not read are listed (projcurve_model_skipped).
+ * Statuses: OK, NULL_ARGUMENT, IO, PARSE (with line/entity in the message),
+ * UNSUPPORTED, NO_MEMORY, and any surface/curve creation status. */
+PROJCURVE_API projcurve_status projcurve_model_read_file(projcurve_context *ctx,
+                                                         const char *path,
+                                                         projcurve_model **out);
+
+/* The same from memory (len bytes; need not be NUL-terminated). */
+PROJCURVE_API projcurve_status projcurve_model_read_memory(projcurve_context *ctx,
+                                                           const char *data, size_t len,
+                                                           projcurve_model **out);
+
+PROJCURVE_API void projcurve_model_destroy(projcurve_model *model);
+
+/* Counts (0 for NULL). */
+PROJCURVE_API size_t projcurve_model_surface_count(const projcurve_model *model);
+PROJCURVE_API size_t projcurve_model_curve_count(const projcurve_model *model);
+PROJCURVE_API size_t projcurve_model_skipped_count(const projcurve_model *model);
+
+/* Borrowed handles, valid while the model lives (NULL past the end). */
+PROJCURVE_API const projcurve_surface *projcurve_model_surface(const projcurve_model *model,
+                                                               size_t index);
+PROJCURVE_API const projcurve_curve *projcurve_model_curve(const projcurve_model *model,
+                                                           size_t index);
+/* Description of a skipped entity, e.g. "IGES entity 144 at DE 21"
+ * (NULL past the end). */
+PROJCURVE_API const char *projcurve_model_skipped(const projcurve_model *model,
+                                                  size_t index);
+
+/* An IGES writer: collect surfaces, curves and projection results, then
+ * write them as one IGES 5.3 file. */
+typedef struct projcurve_iges_writer projcurve_iges_writer;
+
+PROJCURVE_API projcurve_status projcurve_iges_writer_create(projcurve_context *ctx,
+                                                            projcurve_iges_writer **out);
+PROJCURVE_API void projcurve_iges_writer_destroy(projcurve_iges_writer *writer);
+
+/* Adds a surface (entity 128); the surface is copied.
+ * Statuses: OK, NULL_ARGUMENT, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_iges_writer_add_surface(projcurve_context *ctx,
+                                                                 projcurve_iges_writer *w,
+                                                                 const projcurve_surface *s);
+/* Adds a NURBS curve (entity 126). Statuses: OK, NULL_ARGUMENT, WRONG_KIND
+ * (callback curve), NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_iges_writer_add_curve(projcurve_context *ctx,
+                                                               projcurve_iges_writer *w,
+                                                               const projcurve_curve *c);
+/* Adds every composed branch of a projection result onto s: a 3D curve (126)
+ * and a curve on surface (142) with its 2D pcurve; s is written too if it
+ * was not added before. Statuses: OK, NULL_ARGUMENT, INVALID_ARGUMENT,
+ * NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
+                                                                projcurve_iges_writer *w,
+                                                                const projcurve_surface *s,
+                                                                const projcurve_result *r);
+/* Writes the file. Statuses: OK, NULL_ARGUMENT, IO, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,
+                                                           const projcurve_iges_writer *w,
+                                                           const char *path);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* PROJCURVE_H */

@@ -1,0 +1,54 @@
+/*
+ * The layout behind the public opaque handles. Only the library sees it.
+ */
+#ifndef PC_API_HANDLES_H
+#define PC_API_HANDLES_H
+
+#include "bezier/bezier.h"
+#include "bezier/bvh.h"
+#include "nurbs/nurbs.h"
+#include "projcurve.h"
+
+struct projcurve_surface {
+    pc_nurbs_surface nurbs;
+    pc_patch_grid grid;   /* Bezier patches, built at creation */
+    pc_bvh bvh;           /* over grid.patches, built at creation */
+    double box[6];        /* bounding box of the control net */
+    double size;          /* its diagonal: the model scale for relative tolerances */
+};
+
+typedef enum pc_curve_kind { PC_CURVE_NURBS = 0, PC_CURVE_CALLBACK = 1 } pc_curve_kind;
+
+struct projcurve_curve {
+    pc_curve_kind kind;
+    double t0, t1;
+    pc_nurbs_curve nurbs;      /* PC_CURVE_NURBS */
+    projcurve_curve_fn fn;     /* PC_CURVE_CALLBACK */
+    void *user;
+};
+
+/* Point and derivatives up to order n_deriv (<= 2 for callbacks, <= 3 for
+ * NURBS) of any curve, t clamped to the domain; out[0..n_deriv]. Returns OK,
+ * or CALLBACK when a user callback fails or gives a non-finite value.
+ * hint may be NULL. */
+projcurve_status pc_curve_eval(const projcurve_curve *c, double t, int n_deriv, size_t *hint,
+                               pc_vec3 *out);
+
+struct projcurve_options {
+    double tol_distance;       /* eps_D, 0 = automatic */
+    double tol_angle_deg;      /* eps_T */
+    double newton_tol;         /* relative to model size */
+    long long newton_max_iter;
+    long long method;          /* PROJCURVE_METHOD_* */
+    double param_step;         /* 0 = arc-length stepping */
+    double arc_step_fraction;
+    long long max_points;
+    long long max_pieces;
+    long long compose;
+    long long jump_detection;
+};
+
+/* Fills o with every default (used when the caller passes NULL options). */
+void pc_options_defaults(struct projcurve_options *o);
+
+#endif /* PC_API_HANDLES_H */

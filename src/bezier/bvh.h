@@ -1,0 +1,43 @@
+/*
+ * Bounding-volume hierarchy over the Bezier patches of a surface, built once
+ * per surface handle. Leaves hold a few patches; boxes are the patches'
+ * control-net boxes.
+ */
+#ifndef PC_BEZIER_BVH_H
+#define PC_BEZIER_BVH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "bezier/bezier.h"
+
+typedef struct pc_bvh_node {
+    double box[6];
+    uint32_t first;  /* leaf: first index into order[]; inner: left child */
+    uint32_t count;  /* leaf: number of patches; inner: 0 (right = left + 1) */
+} pc_bvh_node;
+
+typedef struct pc_bvh {
+    pc_bvh_node *nodes;
+    size_t n_nodes;
+    uint32_t *order;  /* patch indices, leaves point into ranges of it */
+    int depth;        /* height of the tree, bounds the traversal stack */
+} pc_bvh;
+
+projcurve_status pc_bvh_build(projcurve_context *ctx, pc_bvh *bvh, const pc_patch_grid *grid);
+void pc_bvh_free(pc_bvh *bvh);
+
+/* Calls visit(user, patch_index) for every patch whose box meets the line
+ * origin + lambda * dir with lambda in [lambda_min, lambda_max] (use
+ * -INFINITY / INFINITY for a full line). The box test is padded by `pad`
+ * (model units) so that grazing hits are not lost. A nonzero return from
+ * visit stops the walk. */
+typedef int (*pc_bvh_visit_fn)(void *user, size_t patch_index);
+void pc_bvh_query_line(const pc_bvh *bvh, pc_vec3 origin, pc_vec3 dir, double lambda_min,
+                       double lambda_max, double pad, pc_bvh_visit_fn visit, void *user);
+
+/* The same for every patch whose box is within `radius` of point p. */
+void pc_bvh_query_sphere(const pc_bvh *bvh, pc_vec3 p, double radius, pc_bvh_visit_fn visit,
+                         void *user);
+
+#endif /* PC_BEZIER_BVH_H */

@@ -1,0 +1,43 @@
+/*
+ * Line / surface intersection: every hit of origin + lambda * dir with a
+ * NURBS surface. BVH and control-net culling choose candidate patches,
+ * Bezier clipping isolates each root, Newton polishes it to full precision.
+ */
+#ifndef PC_INTERSECT_H
+#define PC_INTERSECT_H
+
+#include <stddef.h>
+
+#include "api/handles.h"
+#include "common/vec.h"
+
+typedef struct pc_hit {
+    double u, v, lambda;
+    unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY */
+} pc_hit;
+
+/* A growable list of hits owned by the caller (pc_hit_list_free). */
+typedef struct pc_hit_list {
+    pc_hit *items;
+    size_t count, capacity;
+} pc_hit_list;
+
+void pc_hit_list_free(pc_hit_list *list);
+
+/* Clears `hits` and fills it with every intersection sorted by lambda; with
+ * ray_only, only lambda > 0. dir need not be unit length but must be finite
+ * and non-zero (the caller validates). Each hit satisfies the line equation
+ * to ~1e-12 of the model size. Hits that coincide (shared patch edges and
+ * corners) are reported once. Statuses: OK, NO_MEMORY. */
+projcurve_status pc_intersect_line(projcurve_context *ctx, const projcurve_surface *s,
+                                   pc_vec3 origin, pc_vec3 dir, int ray_only,
+                                   pc_hit_list *hits);
+
+/* Hits restricted to the given patches (indices into s->grid.patches), used
+ * by jump detection to look only at the patches near a predicted point. */
+projcurve_status pc_intersect_line_patches(projcurve_context *ctx, const projcurve_surface *s,
+                                           const size_t *patch_indices, size_t n_patches,
+                                           pc_vec3 origin, pc_vec3 dir, int ray_only,
+                                           pc_hit_list *hits);
+
+#endif /* PC_INTERSECT_H */

@@ -1,0 +1,24 @@
+/*
+ * Tolerance control (seed 000 s2 steps 3-5, s4) of traced branches, then
+ * composition onto the surface. Independent of the kind of projection: the
+ * exact projection curve is reached point by point through the projector.
+ */
+#ifndef PC_REFINE_H
+#define PC_REFINE_H
+
+#include "api/handles.h"
+#include "trace/projector.h"
+#include "trace/result.h"
+
+/* For every branch of r (points (t, u, v)): inserts vertices until each
+ * segment's image on S is within eps_D (Hausdorff, 3D) of the exact
+ * projection and every joint is within eps_T, splits segments at the knot
+ * lines of S, and composes each segment with its Bezier patch (compose/).
+ * eps_D and eps_T come from opts (automatic eps_D = 1e-4 model size).
+ * Statuses: OK, LIMIT_REACHED (opts->max_pieces; the pieces made so far stay),
+ * NO_MEMORY. */
+projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projector *proj,
+                                       const struct projcurve_options *opts,
+                                       projcurve_result *r);
+
+#endif /* PC_REFINE_H */

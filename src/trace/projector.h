@@ -1,0 +1,51 @@
+/*
+ * What the kind of projection (directional, orthogonal) contributes to the
+ * generic machinery: the equations. trace/, refine/ and compose/ only talk to
+ * this interface, so the orthogonal projection reuses them unchanged.
+ *
+ * The projection curve is q(t) = (u(t), v(t)) with F(u, v, t) = 0 (two scalar
+ * equations). The implementation provides F's Newton corrector and the
+ * derivatives q', q'' for the second-order predictor.
+ */
+#ifndef PC_TRACE_PROJECTOR_H
+#define PC_TRACE_PROJECTOR_H
+
+#include "api/handles.h"
+#include "common/vec.h"
+
+typedef struct pc_projector pc_projector;
+
+/* Local state at (t, u, v): filled by pc_projector.derivatives. */
+typedef struct pc_proj_point {
+    double t, u, v;
+    double du, dv;     /* q'(t) */
+    double ddu, ddv;   /* q''(t) */
+    double det;        /* determinant of the Jacobian of F in (u, v), normalised
+                          (directional: Dir.(Su x Sv)/|Su x Sv|; orthogonal:
+                          det K / (|Su||Sv|)^2); its sign change marks a fold or
+                          a centre of curvature */
+    pc_vec3 s;         /* S(u, v) */
+    pc_vec3 p;         /* P(t) */
+} pc_proj_point;
+
+struct pc_projector {
+    const projcurve_surface *surface;
+    const projcurve_curve *curve;
+    double model_size;     /* scale for relative tolerances */
+    double newton_tol;     /* absolute tolerance (model units) */
+    int newton_max_iter;
+    /* Newton on F(., ., t) = 0 from the guess uv; uv is updated in place,
+     * clamped to the surface domain. Returns 1 on convergence, 0 otherwise;
+     * *iterations (may be NULL) gets the iteration count. */
+    int (*correct)(const pc_projector *self, double t, double uv[2], int *iterations);
+    /* q', q'' and det at (t, u, v). Returns 0 when the Jacobian is singular
+     * or a callback failed. */
+    int (*derivatives)(const pc_projector *self, double t, double u, double v,
+                       pc_proj_point *out);
+    /* Residual |F| in model units (distance of S(u, v) from the exact
+     * projection condition), for tests and error estimates. */
+    double (*residual)(const pc_projector *self, double t, double u, double v);
+    const void *data;      /* kind-specific (direction frame, ...) */
+};
+
+#endif /* PC_TRACE_PROJECTOR_H */

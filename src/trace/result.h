@@ -1,0 +1,66 @@
+/*
+ * The projection result: branches of traced points, the composed pieces, and
+ * statistics. Built by trace/ (points), refine/ and compose/ (pieces), read
+ * by api/result.c.
+ */
+#ifndef PC_TRACE_RESULT_H
+#define PC_TRACE_RESULT_H
+
+#include <stddef.h>
+
+#include "projcurve.h"
+
+/* A composed piece: Bezier curve of `degree` on S over curve parameters
+ * [t0, t1], (u, v) at its ends. Points are Cartesian, weights separate. */
+typedef struct pc_piece {
+    int degree;
+    double t0, t1;
+    double uv[4];    /* u(t0), v(t0), u(t1), v(t1) */
+    double *ctrl;    /* 3 * (degree + 1) */
+    double *weights; /* degree + 1 */
+} pc_piece;
+
+typedef struct pc_branch {
+    double *points;     /* point_dim doubles per vertex: t, u, v (or t, x, y, z) */
+    size_t n_points, cap_points;
+    projcurve_branch_start start;
+    projcurve_branch_end end;
+    pc_piece *pieces;
+    size_t n_pieces, cap_pieces;
+} pc_branch;
+
+typedef struct pc_stats {
+    double points, steps, newton_iterations, jumps, pieces;
+    double error_sum, error_max; /* |predicted - corrected| over corrected steps */
+    double tol_distance;
+} pc_stats;
+
+struct projcurve_result {
+    int point_dim;      /* 3 = (t, u, v); 4 = (t, x, y, z) */
+    pc_branch *branches;
+    size_t n_branches, cap_branches;
+    pc_stats stats;
+};
+
+/* Allocation helpers; every function returns OK or NO_MEMORY. */
+projcurve_status pc_result_create(projcurve_context *ctx, int point_dim,
+                                  projcurve_result **out);
+/* Appends an empty branch and returns it through *branch (pointer valid until
+ * the next pc_result_add_branch). */
+projcurve_status pc_result_add_branch(projcurve_context *ctx, projcurve_result *r,
+                                      pc_branch **branch);
+projcurve_status pc_branch_add_point(projcurve_context *ctx, pc_branch *b, int point_dim,
+                                     const double *point);
+/* Inserts a vertex before index `at`. */
+projcurve_status pc_branch_insert_point(projcurve_context *ctx, pc_branch *b, int point_dim,
+                                        size_t at, const double *point);
+/* Appends a piece; ctrl/weights are copied (weights NULL = all 1). */
+projcurve_status pc_branch_add_piece(projcurve_context *ctx, pc_branch *b, int degree,
+                                     double t0, double t1, const double uv[4],
+                                     const double *ctrl, const double *weights);
+/* Removes every piece of the branch (when recomposing). */
+void pc_branch_clear_pieces(pc_branch *b);
+/* Removes the branch at index i, keeping the order of the others. */
+void pc_result_remove_branch(projcurve_result *r, size_t i);
+
+#endif /* PC_TRACE_RESULT_H */

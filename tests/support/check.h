@@ -1,0 +1,70 @@
+/*
+ * Minimal test harness: checks print the inputs, expected and actual values
+ * and count failures; a test program returns pc_test_finish().
+ * A test that needs something missing (a data file, a tool) calls
+ * pc_test_skip(), which exits with the CTest skip code 77.
+ */
+#ifndef PC_TEST_CHECK_H
+#define PC_TEST_CHECK_H
+
+#include <stddef.h>
+
+#include "projcurve.h"
+
+extern int pc_test_failures;
+extern int pc_test_checks;
+
+void pc_test_fail_at(const char *file, int line, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+#define CHECK(cond)                                                   \
+    do {                                                              \
+        ++pc_test_checks;                                             \
+        if (!(cond))                                                  \
+            pc_test_fail_at(__FILE__, __LINE__, "CHECK(%s)", #cond);  \
+    } while (0)
+
+/* |actual - expected| <= tol, printing both. */
+#define CHECK_NEAR(actual, expected, tol)                                          \
+    do {                                                                           \
+        ++pc_test_checks;                                                          \
+        const double pc_a_ = (actual), pc_e_ = (expected), pc_t_ = (tol);          \
+        if (!(fabs(pc_a_ - pc_e_) <= pc_t_))                                       \
+            pc_test_fail_at(__FILE__, __LINE__, "%s = %.17g, expected %.17g +- %.3g", \
+                            #actual, pc_a_, pc_e_, pc_t_);                         \
+    } while (0)
+
+/* A call that must return the given status. */
+#define CHECK_STATUS(call, expected)                                                 \
+    do {                                                                             \
+        ++pc_test_checks;                                                            \
+        const projcurve_status pc_s_ = (call);                                       \
+        if (pc_s_ != (expected))                                                     \
+            pc_test_fail_at(__FILE__, __LINE__, "%s returned %s, expected %s", #call, \
+                            projcurve_status_string(pc_s_),                          \
+                            projcurve_status_string(expected));                      \
+    } while (0)
+
+#define CHECK_OK(call) CHECK_STATUS(call, PROJCURVE_OK)
+
+/* Prints a summary and returns the process exit code. */
+int pc_test_finish(const char *name);
+
+/* Exits with code 77 (CTest SKIP_RETURN_CODE) after printing why. */
+void pc_test_skip(const char *why);
+
+/* Path of a file under ../shared (e.g. "cases/MANIFEST.tsv"), in a static
+ * buffer. The root is $PROJCURVE_SHARED_DIR if set, else the source tree's. */
+const char *pc_test_shared_path(const char *relative);
+
+/* Deterministic pseudo-random numbers for tests (xorshift64*). */
+typedef struct pc_test_rng {
+    unsigned long long state;
+} pc_test_rng;
+void pc_test_rng_seed(pc_test_rng *rng, unsigned long long seed);
+double pc_test_rng_uniform(pc_test_rng *rng, double lo, double hi);
+
+#endif /* PC_TEST_CHECK_H */
