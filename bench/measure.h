@@ -1,0 +1,45 @@
+/*
+ * One case measured: the whole projection timed (median after warm-up),
+ * its shape (branches, pieces, control points, worst joint angle) and its
+ * deviation from the exact projection measured on dense samples.
+ */
+#ifndef PCB_MEASURE_H
+#define PCB_MEASURE_H
+
+#include <stddef.h>
+
+#include "cases.h"
+#include "deviation.h"
+#include "timing.h"
+
+typedef struct pcb_measurement {
+    double ms;              /* median ms per projection */
+    double branches;
+    double pieces;          /* composed pieces, all branches */
+    double control_points;  /* of the joined branch curves */
+    double points;          /* traced points */
+    double max_joint_deg;   /* worst tangent angle between consecutive pieces */
+    pcb_deviation deviation;
+    double uniform_pieces;  /* equal-t pieces a uniform split needs for eps_D (NaN: not asked) */
+} pcb_measurement;
+
+/* Every field NaN. */
+void pcb_measurement_clear(pcb_measurement *m);
+
+/* Measures case c: exact_samples curve parameters for the oracle; with
+ * with_uniform, also the uniform split count. Returns 0, or -1 with a
+ * message in status. */
+int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, size_t exact_samples,
+                     int with_uniform, pcb_measurement *m, char *status, size_t status_size);
+
+/* Shape figures of a result (branches, pieces, control points, joint angle,
+ * points). Returns OK or the failing library status. */
+projcurve_status pcb_result_shape(projcurve_context *ctx, const projcurve_result *r,
+                                  pcb_measurement *m);
+
+/* Smallest number of equal-t pieces per branch whose (u, v) chords,
+ * composed on the surface, stay within eps of the exact projection
+ * (doubling, then bisection; capped). */
+double pcb_uniform_pieces(const pcb_exact *ex, const projcurve_result *r, double eps);
+
+#endif /* PCB_MEASURE_H */
