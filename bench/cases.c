@@ -54,7 +54,7 @@ static int parse_manifest_line(char *line, pcb_case *c)
     if (n < 8)
         return -1;
     memset(c, 0, sizeof *c);
-    snprintf(c->name, sizeof c->name, "%s", fields[0]);
+    snprintf(c->name, sizeof c->name, "%.*s", PCB_CASE_NAME_MAX - 1, fields[0]);
     c->orthogonal = strcmp(fields[1], "orthogonal") == 0;
     for (int i = 0; i < 3; ++i)
         c->dir[i] = strtod(fields[2 + i], NULL);

@@ -13,9 +13,13 @@
 #define PCB_BUILD_TYPE "unknown"
 #endif
 
+/* A measurement (all its timed runs) should not take much longer. */
+#define PCB_BUDGET_S 10.0
+
 pcb_timing pcb_timing_for(const pcb_args *args, int reps, double min_run_s)
 {
     pcb_timing t;
+    t.budget_s = PCB_BUDGET_S;
     if (args->quick) {
         t.warmup = 0;
         t.reps = 1;

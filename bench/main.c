@@ -6,6 +6,7 @@
  *   projcurve-bench all --out DIR [--quick] [--shared DIR]
  */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "bench.h"
@@ -103,7 +104,9 @@ int main(int argc, char **argv)
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? PCB_EXIT_USAGE : 0;
     }
-    pcb_args args = {NULL, NULL, PCB_SHARED_DIR, 0};
+    /* The same override as the tests: $PROJCURVE_SHARED_DIR, then --shared. */
+    const char *shared = getenv("PROJCURVE_SHARED_DIR");
+    pcb_args args = {NULL, NULL, shared && shared[0] ? shared : PCB_SHARED_DIR, 0};
     const char *out_dir = NULL;
     if (parse_options(argc, argv, &args, &out_dir) != 0) {
         usage(stderr);

@@ -71,25 +71,32 @@ static void tick_label(char *buf, size_t size, const axis *a, double axis_value)
     if (a->log)
         snprintf(buf, size, "1e%d", (int)lround(axis_value));
     else
-        snprintf(buf, size, "%.3g", axis_value);
+        snprintf(buf, size, "%.4g", axis_value);
+}
+
+/* A round step (1, 2 or 5 times a power of ten) giving about `target`
+ * intervals over span. */
+static double nice_step(double span, int target)
+{
+    const double raw = span / (double)target;
+    const double mag = pow(10.0, floor(log10(raw)));
+    const double f = raw / mag;
+    return (f < 1.5 ? 1.0 : f < 3.5 ? 2.0 : f < 7.5 ? 5.0 : 10.0) * mag;
 }
 
 static void draw_ticks(FILE *f, const axis *a, int vertical, double x0, double y0, double x1,
                        double y1)
 {
-    int n = LINEAR_TICKS;
-    double step = (a->hi - a->lo) / (double)(n - 1);
-    if (a->log) {
-        const double decades = a->hi - a->lo;
-        const double stride = ceil(decades / (double)(MAX_LOG_TICKS - 1));
-        n = (int)floor(decades / stride) + 1;
-        step = stride;
-    }
-    for (int i = 0; i < n; ++i) {
-        const double v = a->lo + step * (double)i;
+    double step = a->log ? ceil((a->hi - a->lo) / (double)(MAX_LOG_TICKS - 1))
+                         : nice_step(a->hi - a->lo, LINEAR_TICKS - 1);
+    const double first = a->log ? a->lo : ceil(a->lo / step) * step;
+    for (int i = 0; i < MAX_LOG_TICKS + LINEAR_TICKS; ++i) {
+        const double v = first + step * (double)i;
+        if (v > a->hi + 1e-9 * step)
+            break;
         const double frac = (v - a->lo) / (a->hi - a->lo);
         char label[32];
-        tick_label(label, sizeof label, a, v);
+        tick_label(label, sizeof label, a, fabs(v) < 1e-12 * step ? 0.0 : v);
         if (vertical) {
             const double y = y1 - frac * (y1 - y0);
             fprintf(f, "<line x1='%.1f' y1='%.1f' x2='%.1f' y2='%.1f' stroke='#ddd'/>\n", x0, y,

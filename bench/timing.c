@@ -44,8 +44,10 @@ static int run_once(pcb_work_fn fn, void *user, size_t n, double *per_call)
     return rc;
 }
 
-/* Warm-up, then the smallest power of two n whose run lasts min_run_s. */
-static int calibrate(const pcb_timing *timing, pcb_work_fn fn, void *user, size_t *n_out)
+/* Warm-up, then the smallest power of two n whose run lasts min_run_s;
+ * *run_s receives the duration of that run. */
+static int calibrate(const pcb_timing *timing, pcb_work_fn fn, void *user, size_t *n_out,
+                     double *run_s)
 {
     for (int w = 0; w < timing->warmup; ++w) {
         const int rc = fn(user, 1);
@@ -58,7 +60,8 @@ static int calibrate(const pcb_timing *timing, pcb_work_fn fn, void *user, size_
         const int rc = run_once(fn, user, n, &per_call);
         if (rc)
             return rc;
-        if (per_call * (double)n >= timing->min_run_s)
+        *run_s = per_call * (double)n;
+        if (*run_s >= timing->min_run_s)
             break;
         n *= 2;
     }
@@ -66,19 +69,27 @@ static int calibrate(const pcb_timing *timing, pcb_work_fn fn, void *user, size_
     return 0;
 }
 
-static int clamp_reps(int reps)
+/* Timed runs to make when one run lasts run_s seconds. */
+static int reps_for(const pcb_timing *timing, double run_s)
 {
-    return reps < 1 ? 1 : reps > PCB_MAX_REPS ? PCB_MAX_REPS : reps;
+    int reps = timing->reps < 1 ? 1 : timing->reps > PCB_MAX_REPS ? PCB_MAX_REPS : timing->reps;
+    if (timing->budget_s > 0.0 && run_s * reps > timing->budget_s) {
+        const int fit = (int)(timing->budget_s / run_s);
+        const int floor_reps = reps < PCB_MIN_REPS ? reps : PCB_MIN_REPS;
+        reps = fit < floor_reps ? floor_reps : fit;
+    }
+    return reps;
 }
 
 int pcb_time_median(const pcb_timing *timing, pcb_work_fn fn, void *user,
                     double *seconds_per_call)
 {
     size_t n = 1;
-    int rc = calibrate(timing, fn, user, &n);
+    double run_s = 0.0;
+    int rc = calibrate(timing, fn, user, &n, &run_s);
     if (rc)
         return rc;
-    const int reps = clamp_reps(timing->reps);
+    const int reps = reps_for(timing, run_s);
     double runs[PCB_MAX_REPS];
     for (int r = 0; r < reps; ++r) {
         rc = run_once(fn, user, n, &runs[r]);
@@ -93,12 +104,13 @@ int pcb_time_pair(const pcb_timing *timing, pcb_work_fn a, void *user_a, pcb_wor
                   void *user_b, pcb_pair *out)
 {
     size_t n_a = 1, n_b = 1;
-    int rc = calibrate(timing, a, user_a, &n_a);
+    double run_a = 0.0, run_b = 0.0;
+    int rc = calibrate(timing, a, user_a, &n_a, &run_a);
     if (!rc)
-        rc = calibrate(timing, b, user_b, &n_b);
+        rc = calibrate(timing, b, user_b, &n_b, &run_b);
     if (rc)
         return rc;
-    const int reps = clamp_reps(timing->reps);
+    const int reps = reps_for(timing, run_a + run_b);
     double runs_a[PCB_MAX_REPS], runs_b[PCB_MAX_REPS], ratios[PCB_MAX_REPS];
     for (int r = 0; r < reps; ++r) {
         /* Alternate which goes first so that neither always runs on a cold

@@ -20,7 +20,12 @@ typedef struct pcb_timing {
     int warmup;        /* untimed runs before measuring */
     int reps;          /* timed runs, 1..PCB_MAX_REPS; the median is reported */
     double min_run_s;  /* each timed run lasts at least this long */
+    double budget_s;   /* 0, or fewer runs (at least PCB_MIN_REPS) when the
+                          runs would take longer than this in all */
 } pcb_timing;
+
+/* Fewest timed runs a time budget may leave. */
+#define PCB_MIN_REPS 3
 
 /* Does the work n times; returns 0, or nonzero on failure (then the
  * measurement stops and reports the failure). */
