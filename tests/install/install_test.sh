@@ -68,3 +68,13 @@ if ldd "$work/consumer/consumer_c_static" | grep -q libprojcurve; then
     echo "FAIL: consumer_c_static depends on the shared library"; exit 1
 fi
 echo "find_package consumers: OK"
+
+# Another major version is another ABI: the package must refuse it.
+major=$(sed -n 's/^#define PROJCURVE_VERSION_MAJOR \([0-9]*\)$/\1/p' "$prefix/include/projcurve_version.h")
+if "$cmake_exe" -S "$here" -B "$work/consumer_next" -DCMAKE_PREFIX_PATH="$prefix" \
+        -DPROJCURVE_WANTED_VERSION=$((major + 1)) >"$work/next.log" 2>&1; then
+    echo "FAIL: find_package(projcurve $((major + 1))) accepted version $major"; exit 1
+fi
+grep -q "compatible with requested version" "$work/next.log" ||
+    { cat "$work/next.log"; echo "FAIL: unexpected find_package failure"; exit 1; }
+echo "find_package(projcurve $((major + 1))) refused: OK"
