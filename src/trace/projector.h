@@ -26,6 +26,9 @@ typedef struct pc_proj_point {
                           a centre of curvature */
     pc_vec3 s;         /* S(u, v) */
     pc_vec3 p;         /* P(t) */
+    double speed;      /* |Q'(t)| = |Su u' + Sv v'| in model units (seed 000
+                          eq. (3.6)), for the arc-length step (3.7); 0 when
+                          unknown (the engine then measures it itself) */
 } pc_proj_point;
 
 struct pc_projector {
@@ -46,6 +49,11 @@ struct pc_projector {
      * projection condition), for tests and error estimates. */
     double (*residual)(const pc_projector *self, double t, double u, double v);
     const void *data;      /* kind-specific (direction frame, ...) */
+    /* Optional (may be NULL): correct() stores here the estimation error of
+     * its initial guess, seed 000 eq. (3.8) for the directional kind (the
+     * sine of the angle between Dir and S(guess) - P). The engine averages
+     * it into the statistics; when NULL it uses residual() / model_size. */
+    double *guess_error;
 };
 
 #endif /* PC_TRACE_PROJECTOR_H */
