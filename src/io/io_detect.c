@@ -4,6 +4,8 @@
 #include "io/io_model.h"
 
 #define PC_IGES_LETTER_COLUMN 72
+/* Columns a first record may be off by and still be recognised. */
+#define PC_IGES_SHIFT_TOLERANCE 8
 
 static size_t skip_space_and_bom(const char *data, size_t len)
 {
@@ -16,8 +18,10 @@ static size_t skip_space_and_bom(const char *data, size_t len)
     return pos;
 }
 
-/* IGES: the first record carries a section letter (S, or G without a start
- * section) in column 73. */
+/* IGES: the first record ends with a section letter (S, or G without a
+ * start section) and a sequence number. The letter belongs in column 73;
+ * a record whose columns are shifted is still taken as IGES here so that
+ * the reader can say which line is wrong. */
 static int looks_like_iges(const char *data, size_t len)
 {
     const char *nl = memchr(data, '\n', len);
@@ -26,9 +30,15 @@ static int looks_like_iges(const char *data, size_t len)
         --first;
     if (!nl && len > 80)
         first = 80; /* bare records */
-    if (first <= PC_IGES_LETTER_COLUMN || first > 80)
+    if (first <= PC_IGES_LETTER_COLUMN - PC_IGES_SHIFT_TOLERANCE ||
+        first > 80 + PC_IGES_SHIFT_TOLERANCE)
         return 0;
-    const char c = data[PC_IGES_LETTER_COLUMN];
+    size_t at = first;
+    while (at > 0 && (isdigit((unsigned char)data[at - 1]) || data[at - 1] == ' '))
+        --at;
+    if (at == 0 || first - at < 7)
+        return 0;
+    const char c = data[at - 1];
     return c == 'S' || c == 'G' || c == 'C' || c == 'B';
 }
 

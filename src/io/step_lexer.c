@@ -111,7 +111,7 @@ projcurve_status pc_step_index(pc_step_file *f)
         const size_t start_line = line;
         if (s[pos] != '#')
             return pc_fail(f->ctx, PROJCURVE_ERR_PARSE,
-                           "STEP line %zu: expected an instance '#n = ...'", line);
+                           "STEP line %zu: expected an instance '#n = ...' or ENDSEC", line);
         char *end = NULL;
         const long id = strtol(s + pos + 1, &end, 10);
         if (end == s + pos + 1 || id <= 0)
