@@ -44,9 +44,9 @@ static projcurve_status read_entity(pc_iges_file *f, projcurve_model *model, siz
     projcurve_status st = pc_iges_curve(f, de, &c, &reason);
     if (st != PROJCURVE_OK)
         return st;
+    consumed[index] = 1; /* read or listed here with its reason, not again below */
     if (reason != NULL)
         return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin, reason);
-    consumed[index] = 1;
     if (e->type == 102) {
         /* Its members are read through it. */
         pc_iges_params p;
