@@ -1,7 +1,15 @@
 # Runs one projcurve-bench subcommand in quick mode and checks its outputs:
 # exit code 0, JSON that parses and holds the documented members as numbers,
 # and an SVG document. Times are never checked.
-#   cmake -DBENCH=... -DCOMMAND=... -DOUT_DIR=... -P check_quick_run.cmake
+#   cmake -DBENCH=... -DCOMMAND=... -DOUT_DIR=... -DSHARED_DIR=... -P check_quick_run.cmake
+# cases and occt need the shared cases; without them there is nothing to run.
+if(DEFINED ENV{PROJCURVE_SHARED_DIR})
+  set(SHARED_DIR $ENV{PROJCURVE_SHARED_DIR})
+endif()
+if(COMMAND MATCHES "^(cases|occt)$" AND NOT EXISTS ${SHARED_DIR}/cases/MANIFEST.tsv)
+  message(STATUS "BENCH-SKIPPED: no ${SHARED_DIR}/cases/MANIFEST.tsv")
+  return()
+endif()
 file(MAKE_DIRECTORY ${OUT_DIR})
 set(json ${OUT_DIR}/${COMMAND}.json)
 set(svg ${OUT_DIR}/${COMMAND}.svg)

@@ -38,6 +38,7 @@ static const char *const table2_cases[] = {"song_yong_example1", "real_lens_dire
 typedef struct case_row {
     const pcb_case *c;
     pcb_measurement m;
+    pcb_method_pair methods;
     char status[PCB_CASE_ERROR_MAX + 16];
 } case_row;
 
@@ -94,6 +95,19 @@ static void write_table2_json(pcb_json *j, const table2_row *r)
     pcb_json_object_end(j);
 }
 
+static void write_methods_json(pcb_json *j, const case_row *r)
+{
+    const pcb_method_pair *p = &r->methods;
+    pcb_json_object_begin(j, NULL);
+    pcb_json_string(j, "name", r->c->name);
+    pcb_json_number(j, "second_order_ms", p->second_ms);
+    pcb_json_number(j, "rk4_ms", p->rk4_ms);
+    pcb_json_number(j, "rk4_over_second_order", p->rk4_over_second);
+    pcb_json_number(j, "second_order_points", p->second_points);
+    pcb_json_number(j, "rk4_points", p->rk4_points);
+    pcb_json_object_end(j);
+}
+
 static void write_outputs(const pcb_args *args, const case_row *rows, size_t n,
                           const table2_row *t2, size_t n2)
 {
@@ -103,6 +117,11 @@ static void write_outputs(const pcb_args *args, const case_row *rows, size_t n,
         pcb_json_array_begin(&j, "cases");
         for (size_t i = 0; i < n; ++i)
             write_case_json(&j, &rows[i]);
+        pcb_json_array_end(&j);
+        pcb_json_array_begin(&j, "methods");
+        for (size_t i = 0; i < n; ++i)
+            if (!rows[i].c->error[0])
+                write_methods_json(&j, &rows[i]);
         pcb_json_array_end(&j);
         pcb_json_array_begin(&j, "table2");
         for (size_t i = 0; i < n2; ++i)
@@ -223,6 +242,23 @@ int pcb_cmd_cases(const pcb_args *args)
                      r->c->expected_branches);
         }
         print_case(r);
+        fflush(stdout);
+    }
+    printf("\nsecond order against RK4, whole projection, same tolerances\n");
+    printf("%-30s %10s %10s %8s %9s %9s\n", "case", "second_ms", "rk4_ms", "rk4/2nd", "pts_2nd",
+           "pts_rk4");
+    for (size_t i = 0; i < list.n; ++i) {
+        case_row *r = &rows[i];
+        if (r->c->error[0])
+            continue;
+        char status[PCB_CASE_ERROR_MAX];
+        if (pcb_compare_methods(r->c, &timing, &r->methods, status, sizeof status) != 0) {
+            fprintf(stderr, "cases: methods %s: %s\n", r->c->name, status);
+            rc = 1;
+        }
+        printf("%-30s %10.3f %10.3f %8.2f %9.0f %9.0f\n", r->c->name, r->methods.second_ms,
+               r->methods.rk4_ms, r->methods.rk4_over_second, r->methods.second_points,
+               r->methods.rk4_points);
         fflush(stdout);
     }
     printf("\nTable 2 (seed 000): eps_D x eps_T%s\n",

@@ -147,6 +147,59 @@ cleanup:
     return ok ? 0 : -1;
 }
 
+/* Points traced by one projection with opts. */
+static projcurve_status traced_points(projcurve_context *ctx, const pcb_case *c,
+                                      const projcurve_options *opts, double *points)
+{
+    projcurve_result *r = NULL;
+    projcurve_status st = pcb_case_project(ctx, c, opts, &r);
+    if (st == PROJCURVE_OK)
+        st = projcurve_result_stat(ctx, r, PROJCURVE_STAT_POINTS, points);
+    projcurve_result_destroy(r);
+    return st;
+}
+
+int pcb_compare_methods(const pcb_case *c, const pcb_timing *timing, pcb_method_pair *out,
+                        char *status, size_t status_size)
+{
+    out->second_ms = out->rk4_ms = out->rk4_over_second = NAN;
+    out->second_points = out->rk4_points = NAN;
+    status[0] = '\0';
+    projcurve_context *ctx = NULL;
+    projcurve_options *second = NULL, *rk4 = NULL;
+    projcurve_status st = projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx);
+    if (st == PROJCURVE_OK)
+        st = pcb_case_options(ctx, c, &second);
+    if (st == PROJCURVE_OK)
+        st = pcb_case_options(ctx, c, &rk4);
+    if (st == PROJCURVE_OK)
+        st = projcurve_options_set_int(ctx, rk4, PROJCURVE_OPT_METHOD, PROJCURVE_METHOD_RK4);
+    if (st == PROJCURVE_OK)
+        st = traced_points(ctx, c, second, &out->second_points);
+    if (st == PROJCURVE_OK)
+        st = traced_points(ctx, c, rk4, &out->rk4_points);
+    int ok = st == PROJCURVE_OK;
+    if (!ok) {
+        snprintf(status, status_size, "%s: %s", projcurve_status_string(st),
+                 projcurve_context_message(ctx));
+    } else {
+        project_work w_second = {c, second}, w_rk4 = {c, rk4};
+        pcb_pair pair;
+        ok = pcb_time_pair(timing, work_project, &w_rk4, work_project, &w_second, &pair) == 0;
+        if (ok) {
+            out->rk4_ms = 1e3 * pair.a_s;
+            out->second_ms = 1e3 * pair.b_s;
+            out->rk4_over_second = pair.ratio;
+        } else {
+            snprintf(status, status_size, "a timed projection failed");
+        }
+    }
+    projcurve_options_destroy(second);
+    projcurve_options_destroy(rk4);
+    projcurve_context_destroy(ctx);
+    return ok ? 0 : -1;
+}
+
 /* ---- uniform split ------------------------------------------------------ */
 
 typedef struct branch_guess {

@@ -42,4 +42,15 @@ projcurve_status pcb_result_shape(projcurve_context *ctx, const projcurve_result
  * (doubling, then bisection; capped). */
 double pcb_uniform_pieces(const pcb_exact *ex, const projcurve_result *r, double eps);
 
+/* Second-order against RK4 tracing on one case, whole projection with the
+ * case's tolerances, timed pair by pair. */
+typedef struct pcb_method_pair {
+    double second_ms, rk4_ms;
+    double rk4_over_second;  /* median of per-run ratios */
+    double second_points, rk4_points;
+} pcb_method_pair;
+
+int pcb_compare_methods(const pcb_case *c, const pcb_timing *timing, pcb_method_pair *out,
+                        char *status, size_t status_size);
+
 #endif /* PCB_MEASURE_H */
