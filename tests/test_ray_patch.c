@@ -27,6 +27,8 @@ typedef struct test_patch {
 
 static double binomial(int n, int k)
 {
+    if (k < 0 || k > n || n > PROJCURVE_MAX_DEGREE)
+        return 0.0;
     double r = 1.0;
     for (int i = 1; i <= k; ++i)
         r = r * (n - k + i) / i;

@@ -18,10 +18,18 @@
 #define PC_MIN_DAMPING_FACTOR 8.0
 #define PC_MIN_STEP_TOL 1e-16
 
+/* The evaluation is compiled once per common degree pair (constant trip
+ * counts unroll the short loops) and once generically. */
+#if defined(__GNUC__)
+#define PC_ALWAYS_INLINE __attribute__((always_inline)) inline
+#else
+#define PC_ALWAYS_INLINE inline
+#endif
+
 /* Bernstein basis of degree n at x and its derivative (Piegl & Tiller's
  * triangle for degree n - 1, then one more step; B'_i = n (B_{i-1} - B_i)
  * at degree n - 1). */
-static void bernstein_with_derivative(int n, double x, double *b, double *db)
+static PC_ALWAYS_INLINE void bernstein_with_derivative(int n, double x, double *b, double *db)
 {
     const double y = 1.0 - x;
     b[0] = 1.0;
@@ -52,17 +60,16 @@ static void bernstein_with_derivative(int n, double x, double *b, double *db)
     b[n] = saved;
 }
 
-void pc_frame_net_eval(const pc_frame_net *net, double s, double t, double d[4], double ds[4],
-                       double dt[4])
+static PC_ALWAYS_INLINE void eval_net(const double *q, int m, int n, double s, double t,
+                                     double d[4], double ds[4], double dt[4])
 {
     double bu[PROJCURVE_MAX_DEGREE + 1], dbu[PROJCURVE_MAX_DEGREE + 1];
     double bv[PROJCURVE_MAX_DEGREE + 1], dbv[PROJCURVE_MAX_DEGREE + 1];
-    const int m = net->deg_u, n = net->deg_v;
     bernstein_with_derivative(m, s, bu, dbu);
     bernstein_with_derivative(n, t, bv, dbv);
     double acc[4] = {0, 0, 0, 0}, acc_s[4] = {0, 0, 0, 0}, acc_t[4] = {0, 0, 0, 0};
     for (int j = 0; j <= n; ++j) {
-        const double *row = net->q + 4 * (size_t)j * (size_t)(m + 1);
+        const double *row = q + 4 * (size_t)j * (size_t)(m + 1);
         double r[4] = {0, 0, 0, 0}, rs[4] = {0, 0, 0, 0};
         for (int i = 0; i <= m; ++i) {
             for (int c = 0; c < 4; ++c) {
@@ -83,6 +90,18 @@ void pc_frame_net_eval(const pc_frame_net *net, double s, double t, double d[4],
     }
 }
 
+void pc_frame_net_eval(const pc_frame_net *net, double s, double t, double d[4], double ds[4],
+                       double dt[4])
+{
+    const int m = net->deg_u, n = net->deg_v;
+    if (m == 3 && n == 3)
+        eval_net(net->q, 3, 3, s, t, d, ds, dt);
+    else if (m == 2 && n == 2)
+        eval_net(net->q, 2, 2, s, t, d, ds, dt);
+    else
+        eval_net(net->q, m, n, s, t, d, ds, dt);
+}
+
 void pc_frame_net_point(const pc_frame_net *net, double s, double t, pc_frame_root *out)
 {
     double d[4], ds[4], dt[4];
@@ -96,12 +115,47 @@ void pc_frame_net_point(const pc_frame_net *net, double s, double t, pc_frame_ro
     const double nn = vec3_norm(normal);
     out->s = s;
     out->t = t;
+    out->jac[0] = ds[0];
+    out->jac[1] = dt[0];
+    out->jac[2] = ds[1];
+    out->jac[3] = dt[1];
     out->x = p.x;
     out->y = p.y;
     out->z = p.z;
-    out->residual = hypot(p.x, p.y);
+    out->residual = sqrt(p.x * p.x + p.y * p.y);
     /* The frame's third axis is the line's direction. */
     out->cos_dir = nn > 0.0 ? fabs(normal.z) / nn : 0.0;
+}
+
+/* Largest |a - 2 b + c| (a planar norm) over consecutive triples, or of
+ * |a - b - c + d| over the cells, of the (X, Y) values of the net. */
+static double second_difference(const pc_frame_net *net, int di, int dj, int ei, int ej)
+{
+    const int m = net->deg_u, n = net->deg_v;
+    double best = 0.0;
+    for (int j = 0; j + dj + ej <= n; ++j) {
+        for (int i = 0; i + di + ei <= m; ++i) {
+            const double *a = net->q + 4 * ((size_t)j * (size_t)(m + 1) + (size_t)i);
+            const double *b = a + 4 * (di + dj * (m + 1));
+            const double *c = a + 4 * (ei + ej * (m + 1));
+            const double *d = a + 4 * (di + ei + (dj + ej) * (m + 1));
+            const double x = d[0] - b[0] - c[0] + a[0], y = d[1] - b[1] - c[1] + a[1];
+            const double len = sqrt(x * x + y * y);
+            if (len > best)
+                best = len;
+        }
+    }
+    return best;
+}
+
+double pc_frame_net_jacobian_lipschitz(const pc_frame_net *net)
+{
+    const int m = net->deg_u, n = net->deg_v;
+    /* Q_ss from steps (1,0),(1,0); Q_st from (1,0),(0,1); Q_tt from (0,1),(0,1). */
+    const double ss = m >= 2 ? m * (m - 1) * second_difference(net, 1, 0, 1, 0) : 0.0;
+    const double st = m * n * second_difference(net, 1, 0, 0, 1);
+    const double tt = n >= 2 ? n * (n - 1) * second_difference(net, 0, 1, 0, 1) : 0.0;
+    return sqrt(ss * ss + 2.0 * st * st + tt * tt);
 }
 
 int pc_frame_net_newton(const pc_frame_net *net, double s, double t, pc_frame_root *out)

@@ -21,6 +21,7 @@ typedef struct pc_frame_root {
     double x, y, z;  /* the surface point: z = d.(S - o) */
     double residual; /* sqrt(x^2 + y^2): distance to the line */
     double cos_dir;  /* |d . n| / |n| (0 where the normal vanishes) */
+    double jac[4];   /* X_s, X_t, Y_s, Y_t: the Jacobian Newton uses */
 } pc_frame_root;
 
 /* D = (X, Y, Z, W) at (s, t) and its partial derivatives (any of ds, dt may
@@ -30,6 +31,12 @@ void pc_frame_net_eval(const pc_frame_net *net, double s, double t, double d[4],
 
 /* Fills `out` with the point at (s, t). */
 void pc_frame_net_point(const pc_frame_net *net, double s, double t, pc_frame_root *out);
+
+/* A bound L on the variation of the Jacobian J = [X_s X_t; Y_s Y_t] over
+ * the patch: |J(a) - J(b)|_F <= L |a - b|, from the net's second
+ * differences (a Bezier function's second derivatives lie in the hull of
+ * its second differences times m (m - 1), m n or n (n - 1)). */
+double pc_frame_net_jacobian_lipschitz(const pc_frame_net *net);
 
 /* Newton on (X, Y) = 0 from (s, t). Returns 1 when the step fell below the
  * step tolerance within the iteration bound, 0 when the Jacobian was

@@ -34,6 +34,11 @@
  * rejected: the neighbouring patch then reports it. Accepted roots are
  * clamped into the patch. */
 #define PC_PARAM_SLACK 1e-9
+/* Newton is tried on a box once clipping has brought it below this width
+ * (local parameters), and after a failed try only once the box has shrunk
+ * by the retry factor: a try costs about as much as a clipping round. */
+#define PC_NEWTON_TRY_WIDTH 0.25
+#define PC_NEWTON_RETRY_FACTOR 0.01
 
 void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double scale,
                        int ray_only)
@@ -93,7 +98,8 @@ static int project_net(const pc_ray_frame *f, const pc_bezier_patch *patch, doub
         out[1] = vec3_dot(f->e2, p) - w * o2;
         out[2] = vec3_dot(f->d, p) - w * o3;
         out[3] = w;
-        *w_max = fmax(*w_max, w);
+        if (w > *w_max)
+            *w_max = w;
         const double slack = tol * w;
         neg_x |= out[0] <= slack;
         pos_x |= out[0] >= -slack;
@@ -111,6 +117,7 @@ typedef struct patch_search {
     pc_hit_list *hits;
     projcurve_context *ctx;
     double zero_tol; /* rounding level of the homogeneous control values */
+    double lipschitz; /* of the Jacobian over the patch; < 0 until needed */
 } patch_search;
 
 /* Records a root found in patch-local parameters if it is a hit. */
@@ -148,6 +155,34 @@ static projcurve_status finish_converged(const patch_search *ps, const double bo
     return record_root(ps, &r, 1);
 }
 
+/* Newton from the centre of a box that clipping has narrowed, accepted
+ * when its root lies in the box and is provably the only one there: with
+ * beta = |J(r)^-1| and L the Jacobian's Lipschitz bound, (X, Y)(x) =
+ * (J(r) + E)(x - r) with |E| <= L |x - r| / 2, nonsingular while
+ * |x - r| < 2 / (beta L); the box must lie within half that radius.
+ * Returns 1 when the box is finished (its root recorded). */
+static int try_certified_newton(patch_search *ps, const double box[4], projcurve_status *st)
+{
+    pc_frame_root r;
+    if (!pc_frame_net_newton(&ps->net, 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), &r))
+        return 0;
+    if (!(r.s >= box[0] - PC_PARAM_SLACK && r.s <= box[1] + PC_PARAM_SLACK &&
+          r.t >= box[2] - PC_PARAM_SLACK && r.t <= box[3] + PC_PARAM_SLACK))
+        return 0;
+    const double *j = r.jac;
+    const double det = j[0] * j[3] - j[1] * j[2];
+    const double norm = sqrt(j[0] * j[0] + j[1] * j[1] + j[2] * j[2] + j[3] * j[3]);
+    if (ps->lipschitz < 0.0)
+        ps->lipschitz = pc_frame_net_jacobian_lipschitz(&ps->net);
+    const double ds = fmax(r.s - box[0], box[1] - r.s), dt = fmax(r.t - box[2], box[3] - r.t);
+    const double reach = sqrt(ds * ds + dt * dt);
+    /* beta <= |J|_F / |det J|. */
+    if (!(reach * norm * ps->lipschitz <= fabs(det)))
+        return 0;
+    *st = record_root(ps, &r, 0);
+    return 1;
+}
+
 /* A box where clipping stalls at the resolution limit: the least-squares
  * minimum of the distance to the line, a tangent hit if it touches. */
 static projcurve_status finish_stalled(const patch_search *ps, const double box[4])
@@ -164,12 +199,13 @@ static int split_direction(const double box[4])
 }
 
 /* Depth-first Bezier clipping over a bounded stack of planar nets. */
-static projcurve_status clip_patch(const patch_search *ps, double *slots)
+static projcurve_status clip_patch(patch_search *ps, double *slots)
 {
     const int m = ps->net.deg_u, n = ps->net.deg_v;
     const size_t np = net_points(m, n);
     const size_t slot_size = 2 * np;
     double boxes[PC_CLIP_MAX_DEPTH + 1][4];
+    double next_try[PC_CLIP_MAX_DEPTH + 1]; /* width that allows a Newton try */
     int depth[PC_CLIP_MAX_DEPTH + 1];
     for (size_t k = 0; k < np; ++k) {
         slots[2 * k] = ps->net.q[4 * k];
@@ -178,14 +214,26 @@ static projcurve_status clip_patch(const patch_search *ps, double *slots)
     boxes[0][0] = boxes[0][2] = 0.0;
     boxes[0][1] = boxes[0][3] = 1.0;
     depth[0] = 0;
+    next_try[0] = PC_NEWTON_TRY_WIDTH;
     int top = 0;
     for (int round = 0; top >= 0 && round < PC_CLIP_MAX_ROUNDS; ++round) {
         double *net = slots + (size_t)top * slot_size;
         double *box = boxes[top];
         const pc_clip_outcome outcome = pc_bezier_clip_step(net, m, n, ps->zero_tol, box);
         projcurve_status st = PROJCURVE_OK;
-        if (outcome == PC_CLIP_PROGRESS)
+        if (outcome == PC_CLIP_PROGRESS) {
+            const double width = fmax(box[1] - box[0], box[3] - box[2]);
+            if (width <= next_try[top]) {
+                if (try_certified_newton(ps, box, &st)) {
+                    --top;
+                    if (st != PROJCURVE_OK)
+                        return st;
+                } else {
+                    next_try[top] = width * PC_NEWTON_RETRY_FACTOR;
+                }
+            }
             continue;
+        }
         if (outcome == PC_CLIP_EMPTY) {
             --top;
             continue;
@@ -202,6 +250,7 @@ static projcurve_status clip_patch(const patch_search *ps, double *slots)
             const int dir = split_direction(box);
             pc_bezier_clip_split(net, net + slot_size, m, n, dir, box, boxes[top + 1]);
             depth[top + 1] = ++depth[top];
+            next_try[top + 1] = next_try[top];
             ++top;
         }
         if (st != PROJCURVE_OK)
@@ -226,5 +275,6 @@ projcurve_status pc_ray_patch_hits(projcurve_context *ctx, const pc_ray_frame *f
     if (!project_net(frame, patch, work, &w_max))
         return PROJCURVE_OK;
     ps.zero_tol = frame->tol_zero * w_max;
+    ps.lipschitz = -1.0;
     return clip_patch(&ps, work + 4 * net_points(patch->deg_u, patch->deg_v));
 }
