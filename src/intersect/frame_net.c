@@ -191,7 +191,13 @@ static double squared_residual(const double d[4])
     return (d[0] * d[0] + d[1] * d[1]) / (d[3] * d[3]);
 }
 
-void pc_frame_net_minimize(const pc_frame_net *net, const double box[4], pc_frame_root *out)
+/* x is held at a bound of the search region that is not the patch's edge. */
+static int held_inside(double x, double lo, double hi)
+{
+    return (x <= lo && lo > 0.0) || (x >= hi && hi < 1.0);
+}
+
+int pc_frame_net_minimize(const pc_frame_net *net, const double box[4], pc_frame_root *out)
 {
     const double ws = box[1] - box[0], wt = box[3] - box[2];
     const double lo_s = clamp(box[0] - ws, 0.0, 1.0), hi_s = clamp(box[1] + ws, 0.0, 1.0);
@@ -242,4 +248,5 @@ void pc_frame_net_minimize(const pc_frame_net *net, const double box[4], pc_fram
             break;
     }
     pc_frame_net_point(net, s, t, out);
+    return !held_inside(s, lo_s, hi_s) && !held_inside(t, lo_t, hi_t);
 }

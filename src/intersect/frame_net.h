@@ -46,7 +46,10 @@ int pc_frame_net_newton(const pc_frame_net *net, double s, double t, pc_frame_ro
 
 /* Least-squares descent (Levenberg-Marquardt) on X^2 + Y^2 from the centre
  * of box = {s0, s1, t0, t1}, kept inside the box widened by its own size
- * and clamped to the patch. out holds the best point found. */
-void pc_frame_net_minimize(const pc_frame_net *net, const double box[4], pc_frame_root *out);
+ * and clamped to the patch. out holds the best point found. Returns 1 when
+ * that point is a local minimum of the region's interior (or of the
+ * patch's edge), 0 when the widened box held it back: then the box only
+ * borders a minimum that a neighbouring box owns. */
+int pc_frame_net_minimize(const pc_frame_net *net, const double box[4], pc_frame_root *out);
 
 #endif /* PC_INTERSECT_FRAME_NET_H */

@@ -121,7 +121,12 @@ void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_no
             if (h.lambda - k->lambda > tol.dlambda_tangent)
                 break;
             if (same_hit(k, &h, &tol)) {
-                k->flags |= h.flags;
+                /* Keep the copy nearest the line: for a grazing hit the
+                 * copies differ by up to ~sqrt(tolerance) along it. */
+                const unsigned flags = k->flags | h.flags;
+                if (h.residual < k->residual)
+                    *k = h;
+                k->flags = flags;
                 merged = 1;
                 break;
             }

@@ -13,6 +13,7 @@
 
 typedef struct pc_hit {
     double u, v, lambda;
+    double residual; /* distance of S(u, v) to the line */
     unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY */
 } pc_hit;
 

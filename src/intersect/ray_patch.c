@@ -137,6 +137,7 @@ static projcurve_status record_root(const patch_search *ps, const pc_frame_root 
     const double s = fmin(fmax(r->s, 0.0), 1.0), t = fmin(fmax(r->t, 0.0), 1.0);
     hit.u = s >= 1.0 ? p->u1 : p->u0 + s * (p->u1 - p->u0);
     hit.v = t >= 1.0 ? p->v1 : p->v0 + t * (p->v1 - p->v0);
+    hit.residual = r->residual;
     hit.flags = (forced_tangent || r->cos_dir < PC_HIT_TANGENT_COS) ? PROJCURVE_HIT_TANGENT : 0u;
     return pc_hit_list_push(ps->ctx, ps->hits, hit);
 }
@@ -151,7 +152,8 @@ static projcurve_status finish_converged(const patch_search *ps, const double bo
     if (pc_frame_net_newton(&ps->net, cs, ct, &r) && fabs(r.s - cs) <= ws &&
         fabs(r.t - ct) <= wt)
         return record_root(ps, &r, 0);
-    pc_frame_net_minimize(&ps->net, box, &r);
+    if (!pc_frame_net_minimize(&ps->net, box, &r))
+        return PROJCURVE_OK;
     return record_root(ps, &r, 1);
 }
 
@@ -188,7 +190,8 @@ static int try_certified_newton(patch_search *ps, const double box[4], projcurve
 static projcurve_status finish_stalled(const patch_search *ps, const double box[4])
 {
     pc_frame_root r;
-    pc_frame_net_minimize(&ps->net, box, &r);
+    if (!pc_frame_net_minimize(&ps->net, box, &r))
+        return PROJCURVE_OK;
     return record_root(ps, &r, 1);
 }
 

@@ -1,12 +1,15 @@
 #include "ray_oracle.h"
 
+#include "check.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 /* Triangles are widened by this barycentric margin so that a root near a
- * mesh edge is seeded from both sides. */
-#define ORACLE_BARY_MARGIN 1e-3
+ * mesh edge is seeded from both sides, and one that the mesh's chord error
+ * moves just past the domain's edge is still seeded. */
+#define ORACLE_BARY_MARGIN 0.05
 #define ORACLE_NEWTON_ITER 40
 /* Roots closer than this fraction of the domain are one. */
 #define ORACLE_MERGE_REL 1e-7
@@ -54,8 +57,9 @@ int pc_oracle_mesh_build(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *use
     double all[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
     for (int j = 0; j <= cells_v; ++j) {
         for (int i = 0; i <= cells_u; ++i) {
-            const double u = domain[0] + (domain[1] - domain[0]) * i / cells_u;
-            const double v = domain[2] + (domain[3] - domain[2]) * j / cells_v;
+            /* The last sample is the domain's end exactly. */
+            const double u = i == cells_u ? domain[1] : domain[0] + (domain[1] - domain[0]) * i / cells_u;
+            const double v = j == cells_v ? domain[3] : domain[2] + (domain[3] - domain[2]) * j / cells_v;
             double out[9];
             eval(user, u, v, out);
             double *p = mesh->points + 3 * ((size_t)j * (size_t)(cells_u + 1) + (size_t)i);
@@ -154,6 +158,9 @@ static int polish(const pc_oracle_mesh *m, const double *o, const double *d, dou
                   double lambda, pc_oracle_hit *out)
 {
     double f[9];
+    /* A seed from a widened triangle may lie just outside the domain. */
+    u = clampd(u, m->domain[0], m->domain[1]);
+    v = clampd(v, m->domain[2], m->domain[3]);
     for (int it = 0; it < ORACLE_NEWTON_ITER; ++it) {
         m->eval(m->user, u, v, f);
         double r[3];
@@ -269,4 +276,99 @@ int pc_oracle_check_hit(const pc_oracle_mesh *mesh, const double origin[3], cons
         *polished = h;
     return fabs(h.u - u) <= param_tol * (mesh->domain[1] - mesh->domain[0]) &&
            fabs(h.v - v) <= param_tol * (mesh->domain[3] - mesh->domain[2]);
+}
+
+/* Claimed and oracle hits are the same within this fraction of the domain
+ * (both are Newton-polished; grazing ones are only known to ~sqrt(eps)). */
+#define ORACLE_MATCH_REL 1e-8
+#define ORACLE_MATCH_TANGENT_REL 1e-5
+/* A hit the mesh may miss is one where the line is this close to tangent. */
+#define ORACLE_GRAZING_COS 0.05
+#define ORACLE_MAX_HITS 256
+
+static int matches(const pc_oracle_mesh *m, double u, double v, unsigned flags,
+                   const pc_oracle_hit *e)
+{
+    const double rel = (flags & PROJCURVE_HIT_TANGENT) || e->cos_dir < 1e-4
+                           ? ORACLE_MATCH_TANGENT_REL
+                           : ORACLE_MATCH_REL;
+    return fabs(u - e->u) <= rel * (m->domain[1] - m->domain[0]) &&
+           fabs(v - e->v) <= rel * (m->domain[3] - m->domain[2]);
+}
+
+void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const double dir[3],
+                       int ray_only, size_t n, const double *hits, const unsigned *flags,
+                       pc_oracle_stats *stats)
+{
+    static pc_oracle_hit expected[ORACLE_MAX_HITS];
+    const size_t n_exp = pc_oracle_line_hits(mesh, origin, dir, ray_only, expected, ORACLE_MAX_HITS);
+    ++stats->lines;
+    stats->hits += (long)n;
+    stats->oracle_hits += (long)n_exp;
+    ++pc_test_checks;
+    if (n_exp > ORACLE_MAX_HITS) {
+        pc_test_fail_at(__FILE__, __LINE__, "oracle found %zu hits, more than it keeps", n_exp);
+        return;
+    }
+    const double *o = origin, *d = dir;
+    for (size_t e = 0; e < n_exp; ++e) {
+        int found = 0;
+        for (size_t k = 0; k < n; ++k)
+            found += matches(mesh, hits[3 * k], hits[3 * k + 1], flags[k], &expected[e]);
+        ++pc_test_checks;
+        if (found != 1)
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "oracle hit (%.17g, %.17g, lambda %.17g, cos %.3g) found %d times; "
+                            "line o = (%.17g, %.17g, %.17g) d = (%.17g, %.17g, %.17g)",
+                            expected[e].u, expected[e].v, expected[e].lambda, expected[e].cos_dir,
+                            found, o[0], o[1], o[2], d[0], d[1], d[2]);
+    }
+    for (size_t k = 0; k < n; ++k) {
+        const double u = hits[3 * k], v = hits[3 * k + 1], lambda = hits[3 * k + 2];
+        pc_oracle_hit p;
+        ++pc_test_checks;
+        if (!pc_oracle_check_hit(mesh, o, d, u, v, 1e-6, &p)) {
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "hit (%.17g, %.17g, lambda %.17g) is not on the line o = (%.17g, "
+                            "%.17g, %.17g) d = (%.17g, %.17g, %.17g)",
+                            u, v, lambda, o[0], o[1], o[2], d[0], d[1], d[2]);
+            continue;
+        }
+        const double dn = sqrt(dot3(d, d));
+        /* lambda to the accuracy of the point along the line: 1e-9 of the
+         * model for a transversal hit, ~sqrt(eps) for a grazing one. */
+        const double tol = ((flags[k] & PROJCURVE_HIT_TANGENT) ? 1e-6 : 1e-9) * mesh->scale / dn;
+        ++pc_test_checks;
+        if (!(fabs(lambda - p.lambda) <= tol + 1e-12 * fabs(p.lambda)))
+            pc_test_fail_at(__FILE__, __LINE__, "hit (%.17g, %.17g): lambda %.17g, oracle %.17g",
+                            u, v, lambda, p.lambda);
+        ++pc_test_checks;
+        if (k > 0 && !(lambda >= hits[3 * (k - 1) + 2]))
+            pc_test_fail_at(__FILE__, __LINE__, "hits not sorted by lambda at %zu", k);
+        ++pc_test_checks;
+        if (ray_only && !(lambda > 0.0))
+            pc_test_fail_at(__FILE__, __LINE__, "ray hit with lambda %.17g <= 0", lambda);
+        int in_oracle = 0;
+        for (size_t e = 0; e < n_exp; ++e)
+            in_oracle |= matches(mesh, u, v, flags[k] | PROJCURVE_HIT_TANGENT, &expected[e]);
+        /* The mesh cannot see two crossings inside one of its cells: a hit
+         * with a distinct neighbour that close is a pair it may miss. */
+        int paired = 0;
+        const double cell_u = (mesh->domain[1] - mesh->domain[0]) / mesh->cells_u;
+        const double cell_v = (mesh->domain[3] - mesh->domain[2]) / mesh->cells_v;
+        for (size_t q = 0; q < n; ++q) {
+            const double du = fabs(hits[3 * q] - u), dv = fabs(hits[3 * q + 1] - v);
+            paired |= q != k && du <= 2.0 * cell_u && dv <= 2.0 * cell_v &&
+                      (du > 1e-6 * cell_u * mesh->cells_u || dv > 1e-6 * cell_v * mesh->cells_v);
+        }
+        if (!in_oracle) {
+            ++stats->grazing_extra;
+            ++pc_test_checks;
+            if (!(p.cos_dir < ORACLE_GRAZING_COS) && !paired)
+                pc_test_fail_at(__FILE__, __LINE__,
+                                "hit (%.17g, %.17g, lambda %.17g, cos %.3g) unknown to the oracle; "
+                                "line o = (%.17g, %.17g, %.17g) d = (%.17g, %.17g, %.17g)",
+                                u, v, lambda, p.cos_dir, o[0], o[1], o[2], d[0], d[1], d[2]);
+        }
+    }
 }

@@ -52,4 +52,19 @@ size_t pc_oracle_line_hits(const pc_oracle_mesh *mesh, const double origin[3],
 int pc_oracle_check_hit(const pc_oracle_mesh *mesh, const double origin[3], const double dir[3],
                         double u, double v, double param_tol, pc_oracle_hit *polished);
 
+/* Counts kept by pc_oracle_compare. */
+typedef struct pc_oracle_stats {
+    long lines, hits, oracle_hits, grazing_extra;
+} pc_oracle_stats;
+
+/* Compares the n hits of a line claimed by the library (hits[3k..3k+2] =
+ * u, v, lambda, sorted by lambda; flags[k]) with the oracle's, failing the
+ * test (pc_test_fail_at, with the line) when an oracle hit is not found
+ * exactly once, a claimed hit is not on the line or its lambda is wrong,
+ * the order is wrong, or a claimed hit unknown to the oracle is not grazing
+ * (|cos| >= 0.05, where the mesh cannot miss it). */
+void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const double dir[3],
+                       int ray_only, size_t n, const double *hits, const unsigned *flags,
+                       pc_oracle_stats *stats);
+
 #endif /* PC_TEST_RAY_ORACLE_H */
