@@ -17,13 +17,14 @@ typedef struct real_case {
     const char *name;
     const char *file;  /* under data/real/ */
     int orthogonal;
+    int small;         /* part of the quick subset */
 } real_case;
 
 static const real_case real_cases[] = {
-    {"real_lens_directional", "sunglasses_lens.igs", 0},
-    {"real_lens_orthogonal", "sunglasses_lens.igs", 1},
-    {"real_joinsurf85_directional", "test-joinsurf_04.stp", 0},
-    {"real_joinsurf85_orthogonal", "test-joinsurf_04.stp", 1},
+    {"real_lens_directional", "sunglasses_lens.igs", 0, 1},
+    {"real_lens_orthogonal", "sunglasses_lens.igs", 1, 1},
+    {"real_joinsurf85_directional", "test-joinsurf_04.stp", 0, 0},
+    {"real_joinsurf85_orthogonal", "test-joinsurf_04.stp", 1, 0},
 };
 #define N_REAL_CASES (sizeof real_cases / sizeof real_cases[0])
 
@@ -160,7 +161,7 @@ static void load_real_case(const char *shared_dir, const real_case *rc, pcb_case
         define_real_curve(c, rc->orthogonal);
 }
 
-int pcb_cases_load(const char *shared_dir, int with_real, pcb_case_list *list)
+int pcb_cases_load(const char *shared_dir, pcb_real_cases real, pcb_case_list *list)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/cases/MANIFEST.tsv", shared_dir);
@@ -188,8 +189,9 @@ int pcb_cases_load(const char *shared_dir, int with_real, pcb_case_list *list)
         load_model(c, path, 1);
     }
     fclose(f);
-    for (size_t i = 0; with_real && i < N_REAL_CASES; ++i)
-        load_real_case(shared_dir, &real_cases[i], &list->items[list->n++]);
+    for (size_t i = 0; i < N_REAL_CASES; ++i)
+        if (real == PCB_REAL_ALL || (real == PCB_REAL_SMALL && real_cases[i].small))
+            load_real_case(shared_dir, &real_cases[i], &list->items[list->n++]);
     return 0;
 }
 

@@ -35,10 +35,17 @@ typedef struct pcb_case_list {
     size_t n;
 } pcb_case_list;
 
-/* Loads every manifest case and, with with_real, the real-surface cases.
+/* Which real-surface cases pcb_cases_load adds. */
+typedef enum pcb_real_cases {
+    PCB_REAL_NONE = 0,
+    PCB_REAL_SMALL = 1, /* the small lens file only (quick runs) */
+    PCB_REAL_ALL = 2
+} pcb_real_cases;
+
+/* Loads every manifest case and the chosen real-surface cases.
  * A case that cannot be read is kept with its error set. Returns 0, or -1
  * when the manifest cannot be read (a message is printed). */
-int pcb_cases_load(const char *shared_dir, int with_real, pcb_case_list *list);
+int pcb_cases_load(const char *shared_dir, pcb_real_cases real, pcb_case_list *list);
 void pcb_cases_free(pcb_case_list *list);
 
 /* Options for a case: its tolerances, defaults otherwise. */

@@ -427,7 +427,7 @@ void write_svg(const pcb_args *args, const std::vector<row> &rows)
 extern "C" int pcb_cmd_occt(const pcb_args *args)
 {
     pcb_case_list list;
-    if (pcb_cases_load(args->shared_dir, 1, &list) != 0)
+    if (pcb_cases_load(args->shared_dir, args->quick ? PCB_REAL_NONE : PCB_REAL_ALL, &list) != 0)
         return 2;
     pcb_print_banner("occt: libprojcurve and Open CASCADE " OCC_VERSION_COMPLETE
                      " on the same geometry",
