@@ -42,6 +42,17 @@ static int work_project(void *user, size_t n)
     return 0;
 }
 
+/* Angle in degrees between two vectors (0 when either vanishes). */
+static double angle_between(const double a[3], const double b[3])
+{
+    const double na = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const double nb = sqrt(b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    if (!(na > 0.0 && nb > 0.0))
+        return 0.0;
+    const double c = (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) / (na * nb);
+    return acos(fmax(-1.0, fmin(1.0, c))) * 180.0 / PI;
+}
+
 /* Angle in degrees between a piece's end tangent and the next one's start
  * tangent (for rational pieces the end tangents still point along the
  * first and last legs of the control polygon). */
@@ -52,12 +63,7 @@ static double joint_angle(const double *a, int deg_a, const double *b)
         ta[k] = a[3 * deg_a + k] - a[3 * (deg_a - 1) + k];
         tb[k] = b[3 + k] - b[k];
     }
-    const double na = sqrt(ta[0] * ta[0] + ta[1] * ta[1] + ta[2] * ta[2]);
-    const double nb = sqrt(tb[0] * tb[0] + tb[1] * tb[1] + tb[2] * tb[2]);
-    if (!(na > 0.0 && nb > 0.0))
-        return 0.0;
-    const double c = (ta[0] * tb[0] + ta[1] * tb[1] + ta[2] * tb[2]) / (na * nb);
-    return acos(fmax(-1.0, fmin(1.0, c))) * 180.0 / PI;
+    return angle_between(ta, tb);
 }
 
 projcurve_status pcb_result_shape(projcurve_context *ctx, const projcurve_result *r,
@@ -129,7 +135,7 @@ int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, size_t exact_s
         goto cleanup;
     }
     if (with_uniform)
-        m->uniform_pieces = pcb_uniform_pieces(&ex, r, c->tol_dist);
+        m->uniform_pieces = pcb_uniform_pieces(&ex, r, c->tol_dist, c->tol_angle_deg);
     project_work w = {c, opts};
     double seconds = NAN;
     if (pcb_time_median(timing, work_project, &w, &seconds) != 0) {
@@ -238,44 +244,67 @@ static void exact_uv(const pcb_exact *ex, const branch_guess *g, double t, doubl
     }
 }
 
-/* 1 when n equal-t chords of the branch all stay within eps. */
-static int uniform_ok(const pcb_exact *ex, const branch_guess *g, size_t n, double eps)
+/* Angle in degrees between the surface tangents J a and J b at uv, where J
+ * = [Su Sv]: the joint angle of two chord compositions meeting there. */
+static double chord_joint_angle(const projcurve_surface *s, const double uv[2], const double a[2],
+                                const double b[2])
+{
+    double d[9];
+    if (projcurve_surface_eval(NULL, s, uv[0], uv[1], 1, d) != PROJCURVE_OK)
+        return INFINITY;
+    double ta[3], tb[3];
+    for (int k = 0; k < 3; ++k) {
+        ta[k] = d[3 + k] * a[0] + d[6 + k] * a[1];
+        tb[k] = d[3 + k] * b[0] + d[6 + k] * b[1];
+    }
+    return angle_between(ta, tb);
+}
+
+/* 1 when n equal-t chords of the branch all stay within eps_d of the exact
+ * projection and meet at angles within eps_t_deg. */
+static int uniform_ok(const pcb_exact *ex, const branch_guess *g, size_t n, double eps_d,
+                      double eps_t_deg)
 {
     const double h = (g->t1 - g->t0) / (double)n;
-    double uv_a[2];
+    double uv_a[2], prev[2] = {0.0, 0.0};
     exact_uv(ex, g, g->t0, uv_a);
     for (size_t i = 0; i < n; ++i) {
         const double ta = g->t0 + h * (double)i, tb = i + 1 == n ? g->t1 : ta + h;
         double uv_b[2];
         exact_uv(ex, g, tb, uv_b);
+        const double chord[2] = {uv_b[0] - uv_a[0], uv_b[1] - uv_a[1]};
+        if (i > 0 && chord_joint_angle(ex->surface, uv_a, prev, chord) > eps_t_deg)
+            return 0;
         for (int k = 1; k <= UNIFORM_CHECKS; ++k) {
             const double s = (double)k / (UNIFORM_CHECKS + 1);
+            const double uv_mid[2] = {uv_a[0] + s * chord[0], uv_a[1] + s * chord[1]};
             double x[3];
-            if (projcurve_surface_eval(NULL, ex->surface, uv_a[0] + s * (uv_b[0] - uv_a[0]),
-                                       uv_a[1] + s * (uv_b[1] - uv_a[1]), 0, x) != PROJCURVE_OK)
+            if (projcurve_surface_eval(NULL, ex->surface, uv_mid[0], uv_mid[1], 0, x) !=
+                PROJCURVE_OK)
                 return 0;
-            const double uv_mid[2] = {uv_a[0] + s * (uv_b[0] - uv_a[0]),
-                                      uv_a[1] + s * (uv_b[1] - uv_a[1])};
-            if (pcb_exact_distance_window(ex, x, ta, tb, uv_mid) > eps)
+            if (pcb_exact_distance_window(ex, x, ta, tb, uv_mid) > eps_d)
                 return 0;
         }
         uv_a[0] = uv_b[0];
         uv_a[1] = uv_b[1];
+        prev[0] = chord[0];
+        prev[1] = chord[1];
     }
     return 1;
 }
 
-static size_t uniform_count(const pcb_exact *ex, const branch_guess *g, double eps)
+static size_t uniform_count(const pcb_exact *ex, const branch_guess *g, double eps_d,
+                            double eps_t_deg)
 {
     size_t hi = 1;
-    while (hi < MAX_UNIFORM_PIECES && !uniform_ok(ex, g, hi, eps))
+    while (hi < MAX_UNIFORM_PIECES && !uniform_ok(ex, g, hi, eps_d, eps_t_deg))
         hi *= 2;
     if (hi >= MAX_UNIFORM_PIECES)
         return MAX_UNIFORM_PIECES;
     size_t lo = hi / 2;  /* lo fails (or is 0), hi passes */
     while (hi - lo > 1) {
         const size_t mid = lo + (hi - lo) / 2;
-        if (uniform_ok(ex, g, mid, eps))
+        if (uniform_ok(ex, g, mid, eps_d, eps_t_deg))
             hi = mid;
         else
             lo = mid;
@@ -283,7 +312,8 @@ static size_t uniform_count(const pcb_exact *ex, const branch_guess *g, double e
     return hi;
 }
 
-double pcb_uniform_pieces(const pcb_exact *ex, const projcurve_result *r, double eps)
+double pcb_uniform_pieces(const pcb_exact *ex, const projcurve_result *r, double eps_d,
+                          double eps_t_deg)
 {
     const size_t nb = projcurve_result_branch_count(r);
     double total = 0.0;
@@ -304,7 +334,7 @@ double pcb_uniform_pieces(const pcb_exact *ex, const projcurve_result *r, double
         }
         g.t0 = t_range[0];
         g.t1 = t_range[1];
-        total += (double)uniform_count(ex, &g, eps);
+        total += (double)uniform_count(ex, &g, eps_d, eps_t_deg);
         free(g.tuv);
     }
     return total;

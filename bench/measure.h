@@ -38,9 +38,11 @@ projcurve_status pcb_result_shape(projcurve_context *ctx, const projcurve_result
                                   pcb_measurement *m);
 
 /* Smallest number of equal-t pieces per branch whose (u, v) chords,
- * composed on the surface, stay within eps of the exact projection
- * (doubling, then bisection; capped). */
-double pcb_uniform_pieces(const pcb_exact *ex, const projcurve_result *r, double eps);
+ * composed on the surface, stay within eps_d of the exact projection and
+ * meet at tangent angles within eps_t_deg (doubling, then bisection;
+ * capped). */
+double pcb_uniform_pieces(const pcb_exact *ex, const projcurve_result *r, double eps_d,
+                          double eps_t_deg);
 
 /* Second-order against RK4 tracing on one case, whole projection with the
  * case's tolerances, timed pair by pair. */
