@@ -19,7 +19,10 @@
 /* Hits or foot points kept per curve parameter. */
 #define MAX_HITS_PER_T 16
 
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static double dot3(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 static void sub3(const double *a, const double *b, double *r)
 {

@@ -105,7 +105,10 @@ projcurve_status pcb_make_refined_patch(projcurve_context *ctx, size_t spans,
 {
     /* A saddle-and-dome Bezier net over the field. */
     static const double heights[4][4] = {
-        {0.0, 6.0, 4.0, -2.0}, {5.0, 12.0, -6.0, 3.0}, {-3.0, 8.0, 10.0, 4.0}, {2.0, -4.0, 5.0, 0.0}};
+        {0.0, 6.0, 4.0, -2.0},
+        {5.0, 12.0, -6.0, 3.0},
+        {-3.0, 8.0, 10.0, 4.0},
+        {2.0, -4.0, 5.0, 0.0}};
     const size_t n = spans + BICUBIC;
     double bez[4 * 4 * 3];
     for (size_t j = 0; j < 4; ++j)
