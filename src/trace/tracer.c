@@ -28,6 +28,14 @@ static int outside(const double dom[4], const double uv[2])
     return uv[0] < dom[0] || uv[0] > dom[1] || uv[1] < dom[2] || uv[1] > dom[3];
 }
 
+/* (u, v) within two strides (parameter length of the step) of a side. */
+static int near_boundary(const double dom[4], const double uv[2], double stride)
+{
+    const double gap = fmin(fmin(uv[0] - dom[0], dom[1] - uv[0]),
+                            fmin(uv[1] - dom[2], dom[3] - uv[1]));
+    return gap <= 2.0 * stride;
+}
+
 static double clamp(double x, double lo, double hi)
 {
     return x < lo ? lo : (x > hi ? hi : x);
@@ -91,8 +99,12 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     int iterations = 0;
     const int ok = proj->correct(proj, t, uv, &iterations);
     tr->r->stats.newton_iterations += (double)iterations;
+    const double stride = hypot(pred[0] - cur->u, pred[1] - cur->v);
     if (!ok || (left && pc_domain_margin(tr->dom, uv[0], uv[1]) <= PC_TRACE_BOUNDARY_TOL)) {
-        if (!left)
+        /* Near the boundary a failed correction most likely means the
+         * branch left between the points: locate the exit rather than halve
+         * the step (which would pile vertices up against the boundary). */
+        if (!left && !near_boundary(tr->dom, pred, stride))
             return STEP_REJECT;
         const int found = pc_locate_exit(tr, cur, h, next);
         return found == 1 ? STEP_EXIT : (found == 0 ? STEP_ACCEPT : STEP_REJECT);
@@ -100,7 +112,6 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     /* A corrector that moved far from the prediction has left for another
      * sheet of the projection: cut the step instead. */
     const double moved = hypot(uv[0] - pred[0], uv[1] - pred[1]);
-    const double stride = hypot(pred[0] - cur->u, pred[1] - cur->v);
     const double floor = PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
     if (moved > PC_TRACE_MAX_CORRECTION * stride + floor)
         return STEP_REJECT;
