@@ -86,6 +86,7 @@ static void test_table1(const projcurve_surface *s, const projcurve_curve *c)
     const double d[3] = {-1, 0, 0};
     const double steps[3] = {1e-2, 1e-3, 1e-4};
     const size_t expect[3] = {101, 1001, 10001};
+    double prev_e2 = 0.0;
     for (int k = 0; k < 3; ++k) {
         projcurve_status s2, s4;
         projcurve_result *r2 = project(s, c, d, steps[k], PROJCURVE_METHOD_SECOND_ORDER, &s2);
@@ -109,8 +110,13 @@ static void test_table1(const projcurve_surface *s, const projcurve_curve *c)
         CHECK_OK(projcurve_result_stat(NULL, r4, PROJCURVE_STAT_AVG_ERROR, &e4));
         printf("dt %.0e: %zu points, avg error (3.8) second order %.3g, RK4 %.3g\n", steps[k],
                n2, e2, e4);
-        /* the paper's Table 1 reports ~2e-10 at dt = 1e-2 and less below */
-        CHECK(e2 < 1e-6 && e4 < 1e-6);
+        /* the Taylor predictor's local error is O(dt^3), RK4's O(dt^5):
+         * a decade of dt takes the second-order error down ~1000 times,
+         * and RK4 stays below it */
+        CHECK(e2 > 0.0 && e4 <= e2);
+        if (k > 0)
+            CHECK(e2 <= 2e-3 * prev_e2);
+        prev_e2 = e2;
         free(p2);
         free(p4);
         projcurve_result_destroy(r2);

@@ -58,7 +58,7 @@ static projcurve_status unit_direction(projcurve_context *ctx, const double dir[
     const double m = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
     if (!(m > 0.0))
         return pc_fail(ctx, PROJCURVE_ERR_ZERO_DIRECTION, "direction is the zero vector");
-    *out = vec3_normalize(vec3_scale(d, 1.0 / m));
+    *out = vec3_normalize(vec3(d.x / m, d.y / m, d.z / m));
     return PROJCURVE_OK;
 }
 
@@ -91,7 +91,11 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     projcurve_result *r = NULL;
     st = pc_result_create(ctx, 3, &r);
     if (st == PROJCURVE_OK) {
-        const pc_trace_config config = {pc_directional_length_estimate(&finder), proj.model_size};
+        /* the arc-length step is needed for stepping and for the jump
+         * sweep; constant parameter steps without jumps do without it */
+        const int need_length = o.param_step == 0.0 || o.jump_detection;
+        const pc_trace_config config = {
+            need_length ? pc_directional_length_estimate(&finder) : 0.0, proj.model_size};
         r->stats.tol_distance =
             o.tol_distance > 0.0 ? o.tol_distance : PC_AUTO_TOL_DISTANCE * proj.model_size;
         st = pc_trace_branches(ctx, &proj, &o, &finder.base, &config, r);

@@ -71,7 +71,7 @@ projcurve_status projcurve_result_branch_info(projcurve_context *ctx,
                                               projcurve_branch_end *end, size_t *n_points,
                                               size_t *n_pieces)
 {
-    const pc_branch *b;
+    const pc_branch *b = NULL;
     projcurve_status st = get_branch(ctx, result, branch, &b);
     if (st != PROJCURVE_OK)
         return st;
@@ -95,7 +95,7 @@ projcurve_status projcurve_result_branch_points(projcurve_context *ctx,
                                                 const projcurve_result *result, size_t branch,
                                                 size_t capacity, double *points, size_t *count)
 {
-    const pc_branch *b;
+    const pc_branch *b = NULL;
     projcurve_status st = get_branch(ctx, result, branch, &b);
     if (st != PROJCURVE_OK)
         return st;
@@ -113,7 +113,7 @@ projcurve_status projcurve_result_piece(projcurve_context *ctx, const projcurve_
                                         size_t branch, size_t piece, int *degree, double *ctrl,
                                         double *weights, double range[2], double uv_range[4])
 {
-    const pc_branch *b;
+    const pc_branch *b = NULL;
     projcurve_status st = get_branch(ctx, result, branch, &b);
     if (st != PROJCURVE_OK)
         return st;
@@ -168,7 +168,7 @@ projcurve_status projcurve_result_branch_curve(projcurve_context *ctx,
                                                const projcurve_result *result, size_t branch,
                                                projcurve_curve **out)
 {
-    const pc_branch *b;
+    const pc_branch *b = NULL;
     projcurve_status st = get_branch(ctx, result, branch, &b);
     if (st != PROJCURVE_OK)
         return st;

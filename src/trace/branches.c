@@ -16,6 +16,8 @@
 /* Smallest sweep step, as a fraction of the curve's domain; it bounds the
  * number of checks. */
 #define PC_SWEEP_MIN_FRACTION 1e-7
+/* The sweep checks every this fraction of the arc-length step. */
+#define PC_SWEEP_STEP_FRACTION 0.5
 /* Largest arc-length step in t, as a multiple of the arc-step fraction of
  * the domain: the step where the projection barely moves stays sane. */
 #define PC_MAX_STEP_FACTOR 4.0
@@ -155,8 +157,10 @@ static projcurve_status active_points(pc_tracer *tr, double t, pc_seed_list *out
     return PROJCURVE_OK;
 }
 
-/* The sweep step at t: one arc-length step ds of the fastest branch alive
- * (speed measured on its polyline), or of the curve itself when none is. */
+/* The sweep step at t: half an arc-length step ds of the fastest branch
+ * alive (speed measured on its polyline), or of the curve itself when none
+ * is. Half, so that the normal motion of a ray's hits between two checks
+ * stays below the ds of the jump criteria 2 and 4. */
 static double sweep_step(const pc_tracer *tr, double t)
 {
     const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
@@ -179,9 +183,35 @@ static double sweep_step(const pc_tracer *tr, double t)
             speed = vec3_norm(d[1]);
     }
     const double span = tr->t_end - tr->t_begin;
-    double dt = speed > 0.0 ? tr->ds / speed : tr->max_step;
+    double dt = speed > 0.0 ? PC_SWEEP_STEP_FRACTION * tr->ds / speed : tr->max_step;
     dt = fmin(dt, tr->max_step);
     return fmax(dt, PC_SWEEP_MIN_FRACTION * span);
+}
+
+/* 1 when the found point continues a branch that stopped short of t
+ * without a geometric reason (it reached the curve's end a rounding error
+ * early, failed, or hit the point limit): within ds of its last vertex and
+ * within the sweep step dt in t. Branches that ended on the boundary or a
+ * fold are not continued: a point beyond them is a new branch. */
+static int continues_branch(const pc_tracer *tr, const pc_seed *p, double dt)
+{
+    const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
+    pc_vec3 a;
+    pc_nurbs_surface_eval(s, p->u, p->v, 0, NULL, NULL, &a);
+    for (size_t i = 0; i < tr->r->n_branches; ++i) {
+        const pc_branch *b = &tr->r->branches[i];
+        if (b->n_points == 0 || b->end == PROJCURVE_END_BOUNDARY ||
+            b->end == PROJCURVE_END_SILHOUETTE)
+            continue;
+        const double *last = b->points + 3 * (b->n_points - 1);
+        if (last[0] > p->t || p->t - last[0] > dt)
+            continue;
+        pc_vec3 e;
+        pc_nurbs_surface_eval(s, last[1], last[2], 0, NULL, NULL, &e);
+        if (vec3_dist(a, e) <= tr->ds)
+            return 1;
+    }
+    return 0;
 }
 
 /* Seed 000 s3.4 over the whole curve. */
@@ -197,6 +227,7 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
     double t = tr->t_begin;
     for (size_t check = 0; check < max_checks && t < tr->t_end && !tr->limit_hit; ++check) {
         const double dt = sweep_step(tr, t);
+        const double t_prev = t;
         t = t + dt >= tr->t_end ? tr->t_end : t + dt;
         st = active_points(tr, t, &active);
         if (st != PROJCURVE_OK)
@@ -218,7 +249,7 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
         pc_match_seeds(tr->proj->surface, active.items, active.count, found.items, found.count,
                        tr->ds, matched);
         for (size_t k = 0; k < found.count && st == PROJCURVE_OK && !tr->limit_hit; ++k)
-            if (!matched[k])
+            if (!matched[k] && !continues_branch(tr, &found.items[k], t - t_prev))
                 st = start_branch(tr, &found.items[k], 1);
         if (st != PROJCURVE_OK)
             break;

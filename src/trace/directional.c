@@ -17,25 +17,43 @@ static const pc_directional_data *dir_data(const pc_projector *self)
     return (const pc_directional_data *)self->data;
 }
 
-/* Evaluates S and P with derivatives up to order 2 at (u, v, t) into the
- * cache, unless it already holds them. Returns 0 when the curve callback
- * fails. */
+/* Evaluates S and P with derivatives up to order 2 at (u, v) and t into
+ * the cache, each unless it already holds it. Returns 0 when the curve
+ * callback fails. */
 static int evaluate(const pc_projector *self, double t, double u, double v)
 {
     pc_directional_cache *c = dir_data(self)->cache;
-    if (c->valid && c->t == t && c->u == u && c->v == v)
-        return 1;
-    c->valid = 0;
-    pc_nurbs_surface_eval(&self->surface->nurbs, u, v, 2, &c->hint_u, &c->hint_v, c->surf);
-    if (pc_curve_eval(self->curve, t, 2, &c->hint_t, c->curve) != PROJCURVE_OK) {
-        c->callback_failed = 1;
-        return 0;
+    if (!c->surf_valid || c->u != u || c->v != v) {
+        pc_nurbs_surface_eval(&self->surface->nurbs, u, v, 2, &c->hint_u, &c->hint_v, c->surf);
+        c->u = u;
+        c->v = v;
+        c->surf_valid = 1;
     }
-    c->t = t;
-    c->u = u;
-    c->v = v;
-    c->valid = 1;
+    if (!c->curve_valid || c->t != t) {
+        c->curve_valid = 0;
+        if (pc_curve_eval(self->curve, t, 2, &c->hint_t, c->curve) != PROJCURVE_OK) {
+            c->callback_failed = 1;
+            return 0;
+        }
+        c->t = t;
+        c->curve_valid = 1;
+    }
     return 1;
+}
+
+/* After a last Newton step (du, dv) whose image is below eps1, moves the
+ * cached evaluation to (u + du, v + dv) by its first-order Taylor
+ * expansion: the error is O(|du, dv|^2 S''') (far below rounding here), and
+ * the derivatives at the converged point then cost no new evaluation. */
+static void shift_cache(const pc_projector *self, double du, double dv)
+{
+    pc_directional_cache *c = dir_data(self)->cache;
+    pc_vec3 *s = c->surf;
+    s[0] = vec3_axpy(vec3_axpy(s[0], du, s[1]), dv, s[2]);
+    s[1] = vec3_axpy(vec3_axpy(s[1], du, s[3]), dv, s[4]);
+    s[2] = vec3_axpy(vec3_axpy(s[2], du, s[4]), dv, s[5]);
+    c->u += du;
+    c->v += dv;
 }
 
 static double clamp(double x, double lo, double hi)
@@ -66,7 +84,7 @@ static int dir_correct(const pc_projector *self, double t, double uv[2], int *it
         const pc_vec3 *s = d->cache->surf;
         const pc_vec3 diff = vec3_sub(s[0], d->cache->curve[0]);
         const double g[2] = {vec3_dot(d->e1, diff), vec3_dot(d->e2, diff)};
-        const double res = hypot(g[0], g[1]); /* = |Dir x (S - P)| */
+        const double res = sqrt(g[0] * g[0] + g[1] * g[1]); /* = |Dir x (S - P)| */
         const double dist = vec3_norm(diff);
         if (it == 0)
             d->cache->guess_error = dist > 0.0 ? res / dist : 0.0; /* seed 000 eq. (3.8) */
@@ -89,13 +107,16 @@ static int dir_correct(const pc_projector *self, double t, double uv[2], int *it
         const double nv = clamp(v + step[1], dom[2], dom[3]);
         const int clamped = nu != u + step[0] || nv != v + step[1];
         const double moved = vec3_norm(vec3_axpy(vec3_scale(s[1], nu - u), nv - v, s[2]));
-        u = nu;
-        v = nv;
         if (!clamped && moved <= eps1) { /* seed 000 s3.3 test 1 */
+            shift_cache(self, nu - u, nv - v);
+            u = d->cache->u; /* the same values, as the cache holds them */
+            v = d->cache->v;
             converged = 1;
             ++it;
             break;
         }
+        u = nu;
+        v = nv;
     }
     if (iterations)
         *iterations = it;
@@ -156,7 +177,8 @@ static double dir_residual(const pc_projector *self, double t, double u, double 
     if (!evaluate(self, t, u, v))
         return INFINITY;
     const pc_vec3 diff = vec3_sub(d->cache->surf[0], d->cache->curve[0]);
-    return hypot(vec3_dot(d->e1, diff), vec3_dot(d->e2, diff));
+    const double g1 = vec3_dot(d->e1, diff), g2 = vec3_dot(d->e2, diff);
+    return sqrt(g1 * g1 + g2 * g2);
 }
 
 void pc_directional_init(pc_projector *proj, pc_directional_data *data,

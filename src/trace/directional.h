@@ -18,7 +18,7 @@
  * (not shared between threads). */
 typedef struct pc_directional_cache {
     size_t hint_u, hint_v, hint_t;
-    int valid;                 /* the fields below hold an evaluation */
+    int surf_valid, curve_valid; /* the fields below hold evaluations */
     double t, u, v;
     pc_vec3 surf[6];           /* S, Su, Sv, Suu, Suv, Svv at (u, v) */
     pc_vec3 curve[3];          /* P, P', P'' at t */

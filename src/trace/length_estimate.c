@@ -7,7 +7,7 @@
 #include "trace/line_seeds.h"
 
 /* Samples of the curve's polyline. */
-#define PC_ESTIMATE_SAMPLES 256
+#define PC_ESTIMATE_SAMPLES 64
 
 /* Shortest distance between a hit of one ray and a hit of the next: the
  * step of the polygon-projected polyline along one sheet. */

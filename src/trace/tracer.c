@@ -28,6 +28,11 @@ static int outside(const double dom[4], const double uv[2])
     return uv[0] < dom[0] || uv[0] > dom[1] || uv[1] < dom[2] || uv[1] > dom[3];
 }
 
+static double norm2(double a, double b)
+{
+    return sqrt(a * a + b * b);
+}
+
 /* (u, v) within two strides (parameter length of the step) of a side. */
 static int near_boundary(const double dom[4], const double uv[2], double stride)
 {
@@ -99,7 +104,7 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     int iterations = 0;
     const int ok = proj->correct(proj, t, uv, &iterations);
     tr->r->stats.newton_iterations += (double)iterations;
-    const double stride = hypot(pred[0] - cur->u, pred[1] - cur->v);
+    const double stride = norm2(pred[0] - cur->u, pred[1] - cur->v);
     if (!ok || (left && pc_domain_margin(tr->dom, uv[0], uv[1]) <= PC_TRACE_BOUNDARY_TOL)) {
         /* Near the boundary a failed correction most likely means the
          * branch left between the points: locate the exit rather than halve
@@ -111,7 +116,7 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     }
     /* A corrector that moved far from the prediction has left for another
      * sheet of the projection: cut the step instead. */
-    const double moved = hypot(uv[0] - pred[0], uv[1] - pred[1]);
+    const double moved = norm2(uv[0] - pred[0], uv[1] - pred[1]);
     const double floor = PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
     if (moved > PC_TRACE_MAX_CORRECTION * stride + floor)
         return STEP_REJECT;
@@ -168,8 +173,11 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             *why = stall_reason(&cur);
             return PROJCURVE_OK;
         }
-        /* never step over the end of the curve: land exactly on it */
-        const double t_next = h >= remaining ? t_stop : cur.t + sign * h;
+        /* never step over the end of the curve: land exactly on it (a
+         * step within rounding of the end is stretched to it, so that the
+         * end is never missed by a sliver) */
+        const double t_next =
+            h >= remaining - PC_TRACE_END_SLACK * h ? t_stop : cur.t + sign * h;
         tr->r->stats.steps += 1.0;
         pc_proj_point next;
         const step_outcome out = try_step(tr, &cur, t_next, &next);

@@ -22,6 +22,9 @@
 /* Boundary exits are located until (u, v) is within this fraction of the
  * domain's width from the boundary, then snapped onto it. */
 #define PC_TRACE_BOUNDARY_TOL 1e-12
+/* A step that would stop short of the end of the curve by less than this
+ * fraction of itself is stretched to reach it. */
+#define PC_TRACE_END_SLACK 1e-6
 /* Smallest step, as a fraction of the curve's domain. */
 #define PC_TRACE_MIN_STEP 1e-13
 
