@@ -8,6 +8,7 @@
 #include <math.h>
 
 #include "common/error.h"
+#include "refine/refine.h"
 #include "trace/directional.h"
 #include "trace/line_seeds.h"
 #include "trace/result.h"
@@ -99,6 +100,12 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
         r->stats.tol_distance =
             o.tol_distance > 0.0 ? o.tol_distance : PC_AUTO_TOL_DISTANCE * proj.model_size;
         st = pc_trace_branches(ctx, &proj, &o, &finder.base, &config, r);
+    }
+    /* tolerance control and composition also on a partial result */
+    if (o.compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED)) {
+        const projcurve_status cs = pc_refine_and_compose(ctx, &proj, &o, r);
+        if (cs != PROJCURVE_OK)
+            st = cs;
     }
     if (cache.callback_failed && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
