@@ -71,14 +71,21 @@ static void test_derivatives(void)
     pc_directional_cache cache;
     pc_directional_init(&proj, &data, &cache, s, c, dir, 1e-13, 30);
     double worst1 = 0, worst2 = 0, worst_paper1 = 0, worst_paper2 = 0, best_printed = INFINITY;
+    double worst_cached = 0;
     for (int k = 1; k <= 9; ++k) {
         const double t = 0.1 * k;
         pc_vec3 p;
         pc_curve_eval(c, t, 0, NULL, &p);
         double guess[2] = {p.x / 100.0, p.y / 100.0}, q[2], qm[2], qp[2];
         CHECK(point_at(&proj, t, guess, q));
-        pc_proj_point pt;
+        /* derivatives from the evaluation cached by the corrector (moved by
+         * its last step, see shift_cache) and from a fresh evaluation */
+        pc_proj_point cached, pt;
+        CHECK(proj.derivatives(&proj, t, q[0], q[1], &cached));
+        cache.surf_valid = 0;
         CHECK(proj.derivatives(&proj, t, q[0], q[1], &pt));
+        worst_cached = fmax(worst_cached, fmax(rel(cached.du, pt.du), rel(cached.dv, pt.dv)));
+        worst_cached = fmax(worst_cached, fmax(rel(cached.ddu, pt.ddu), rel(cached.ddv, pt.ddv)));
         const double gm[2] = {q[0] - FD_H * pt.du, q[1] - FD_H * pt.dv};
         const double gp[2] = {q[0] + FD_H * pt.du, q[1] + FD_H * pt.dv};
         CHECK(point_at(&proj, t - FD_H, gm, qm));
@@ -106,6 +113,8 @@ static void test_derivatives(void)
     printf("q' vs FD %.3g, q'' vs FD %.3g; vs (3.2) %.3g, vs d/dt (3.2) %.3g; "
            "(3.3) as printed off by >= %.3g\n",
            worst1, worst2, worst_paper1, worst_paper2, best_printed);
+    printf("cached vs fresh evaluation: %.3g\n", worst_cached);
+    CHECK(worst_cached <= 1e-7);
     CHECK(worst1 <= TOL_D1);
     CHECK(worst2 <= TOL_D2);
     CHECK(worst_paper1 <= 1e-12);

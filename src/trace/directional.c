@@ -9,6 +9,12 @@
 
 #include <math.h>
 
+/* A Newton step is in the quadratic regime (its cubic remainder, and the
+ * change of the second derivatives that shift_cache keeps, negligible)
+ * when its image is below this fraction of the model size; the residual it
+ * leaves behind must then be below this fraction of eps1 to stop. */
+#define PC_NEWTON_QUADRATIC_REGIME 1e-9
+#define PC_NEWTON_PREDICTED_SAFETY 0.25
 /* Newton diverges when its residual fails to decrease this many times. */
 #define PC_NEWTON_MAX_NON_DECREASE 3
 
@@ -41,15 +47,19 @@ static int evaluate(const pc_projector *self, double t, double u, double v)
     return 1;
 }
 
-/* After a last Newton step (du, dv) whose image is below eps1, moves the
- * cached evaluation to (u + du, v + dv) by its first-order Taylor
- * expansion: the error is O(|du, dv|^2 S''') (far below rounding here), and
- * the derivatives at the converged point then cost no new evaluation. */
+/* After a last Newton step (du, dv) that the tests below accept, moves the
+ * cached evaluation to (u + du, v + dv) by its Taylor expansion (second
+ * order for S, first for Su, Sv). The errors, O(|du, dv|^3) in S and
+ * O(|du, dv|^2) in its derivatives, are far below rounding for such steps,
+ * and the derivatives at the converged point then cost no evaluation. */
 static void shift_cache(const pc_projector *self, double du, double dv)
 {
     pc_directional_cache *c = dir_data(self)->cache;
     pc_vec3 *s = c->surf;
-    s[0] = vec3_axpy(vec3_axpy(s[0], du, s[1]), dv, s[2]);
+    const pc_vec3 second = vec3_add(vec3_add(vec3_scale(s[3], 0.5 * du * du),
+                                             vec3_scale(s[4], du * dv)),
+                                    vec3_scale(s[5], 0.5 * dv * dv));
+    s[0] = vec3_add(vec3_axpy(vec3_axpy(s[0], du, s[1]), dv, s[2]), second);
     s[1] = vec3_axpy(vec3_axpy(s[1], du, s[3]), dv, s[4]);
     s[2] = vec3_axpy(vec3_axpy(s[2], du, s[4]), dv, s[5]);
     c->u += du;
@@ -64,7 +74,10 @@ static double clamp(double x, double lo, double hi)
 /* Newton on G = 0 at fixed t (seed 000 s3.3, with the frame form of (3.9)).
  * Stops on any of the paper's three tests: the step's image
  * |du Su + dv Sv| <= eps1, |S - P| <= eps1, or the sine
- * |Dir x (S - P)| / |S - P| <= eps2; plus |Dir x (S - P)| <= eps1. Fails on
+ * |Dir x (S - P)| / |S - P| <= eps2; plus |Dir x (S - P)| <= eps1, and a
+ * sharper form of the first test: a step in the quadratic regime whose
+ * predicted remaining residual is below eps1 / 4 is the last one (the
+ * point after it is then not evaluated again: shift_cache). Fails on
  * the iteration cap, a singular Jacobian, or a residual that stops
  * decreasing (divergence, or a solution outside the domain that the clamp
  * holds on the boundary). */
@@ -106,8 +119,18 @@ static int dir_correct(const pc_projector *self, double t, double uv[2], int *it
         const double nu = clamp(u + step[0], dom[0], dom[1]);
         const double nv = clamp(v + step[1], dom[2], dom[3]);
         const int clamped = nu != u + step[0] || nv != v + step[1];
-        const double moved = vec3_norm(vec3_axpy(vec3_scale(s[1], nu - u), nv - v, s[2]));
-        if (!clamped && moved <= eps1) { /* seed 000 s3.3 test 1 */
+        const double du = nu - u, dv = nv - v;
+        const double moved = vec3_norm(vec3_axpy(vec3_scale(s[1], du), dv, s[2]));
+        /* After a Newton step G(q + d) = d'G''d / 2 + O(|d|^3): the residual
+         * the step leaves behind, bounded by |Suu du^2 + 2 Suv du dv +
+         * Svv dv^2| / 2 (e1, e2 orthonormal). */
+        const double left_behind =
+            0.5 * vec3_norm(vec3_add(vec3_add(vec3_scale(s[3], du * du),
+                                              vec3_scale(s[4], 2.0 * du * dv)),
+                                     vec3_scale(s[5], dv * dv)));
+        const int quadratic = moved <= PC_NEWTON_QUADRATIC_REGIME * self->model_size &&
+                              left_behind <= PC_NEWTON_PREDICTED_SAFETY * eps1;
+        if (!clamped && (moved <= eps1 || quadratic)) { /* seed 000 s3.3 test 1 */
             shift_cache(self, nu - u, nv - v);
             u = d->cache->u; /* the same values, as the cache holds them */
             v = d->cache->v;
