@@ -700,6 +700,67 @@ static void test_piece_limit(shape *sh)
     projcurve_context_destroy(ctx);
 }
 
+static int failing_correct(const pc_projector *self, double t, double uv[2], int *iterations)
+{
+    (void)self, (void)t, (void)uv;
+    if (iterations)
+        *iterations = 0;
+    return 0;
+}
+
+/* A corrector that never converges: the refinement must still end, keep the
+ * traced vertices and compose pieces that lie on S and join. */
+static void test_failing_corrector(shape *sh)
+{
+    pc_projector proj;
+    test_dir d;
+    make_projector(sh->surface, sh->curve, &d, &proj);
+    proj.correct = failing_correct;
+    projcurve_result *r = traced_result(sh, sh->t0, sh->t1, 15);
+    CHECK_OK(pc_refine_and_compose(NULL, &proj, NULL, r));
+    const pc_branch *b = &r->branches[0];
+    CHECK(b->n_pieces >= 14);
+    for (size_t i = 1; i < b->n_pieces; ++i)
+        CHECK_NEAR(b->pieces[i].t0, b->pieces[i - 1].t1, 0.0);
+    const measure m = measure_branch(sh, b);
+    CHECK(m.off_patch == 0);
+    CHECK(m.max_gap <= 1e-12 * sh->surface->size);
+    projcurve_result_destroy(r);
+}
+
+/* Degenerate branches: one point (left alone), repeated parameters (the
+ * repeats are dropped), and a result of 3D points (not refinable). */
+static void test_degenerate_branches(shape *sh)
+{
+    pc_projector proj;
+    test_dir d;
+    make_projector(sh->surface, sh->curve, &d, &proj);
+    projcurve_result *r = traced_result(sh, sh->t0, sh->t1, 12);
+    pc_branch *single = NULL, *repeated = NULL;
+    CHECK_OK(pc_result_add_branch(NULL, r, &single));
+    double p[3] = {0.3, 0, 0};
+    sh->exact_uv(sh, 0.3, p + 1);
+    CHECK_OK(pc_branch_add_point(NULL, single, 3, p));
+    CHECK_OK(pc_result_add_branch(NULL, r, &repeated));
+    for (int k = 0; k < 6; ++k) {
+        double q[3] = {0.4 + 0.02 * (k / 2), 0, 0};
+        sh->exact_uv(sh, q[0], q + 1);
+        CHECK_OK(pc_branch_add_point(NULL, repeated, 3, q));
+    }
+    CHECK_OK(pc_refine_and_compose(NULL, &proj, NULL, r));
+    CHECK(r->branches[0].n_pieces > 0);
+    CHECK(r->branches[1].n_pieces == 0 && r->branches[1].n_points == 1);
+    CHECK(r->branches[2].n_pieces > 0);
+    for (size_t i = 0; i < r->branches[2].n_pieces; ++i)
+        CHECK(r->branches[2].pieces[i].t1 > r->branches[2].pieces[i].t0);
+    projcurve_result_destroy(r);
+
+    projcurve_result *r4 = NULL;
+    CHECK_OK(pc_result_create(NULL, 4, &r4));
+    CHECK_STATUS(pc_refine_and_compose(NULL, &proj, NULL, r4), PROJCURVE_ERR_INVALID_ARGUMENT);
+    projcurve_result_destroy(r4);
+}
+
 int main(void)
 {
     shape shapes[2];
@@ -712,6 +773,9 @@ int main(void)
     }
     test_bad_tolerances(&shapes[0]);
     test_piece_limit(&shapes[0]);
+    test_failing_corrector(&shapes[0]);
+    test_failing_corrector(&shapes[1]);
+    test_degenerate_branches(&shapes[0]);
     for (int k = 0; k < 2; ++k)
         free_shape(&shapes[k]);
     return pc_test_finish("test_refine");

@@ -101,10 +101,13 @@ static size_t mark_joints(pc_refiner *r, const pc_vertex_list *list, unsigned ch
     return marked;
 }
 
-/* Rebuilds list into out with the marked segments halved. */
+/* Rebuilds list into out with the marked segments halved; *n_split counts
+ * the halvings done (the corrector may refuse some). */
 static projcurve_status split_marked(pc_refiner *r, const pc_vertex_list *list,
-                                     const unsigned char *split, pc_vertex_list *out)
+                                     const unsigned char *split, pc_vertex_list *out,
+                                     size_t *n_split)
 {
+    *n_split = 0;
     const pc_rvertex *v = list->items;
     out->count = 0;
     projcurve_status st = pc_refine_output(r, out, &v[0]);
@@ -112,6 +115,7 @@ static projcurve_status split_marked(pc_refiner *r, const pc_vertex_list *list,
         pc_rvertex mid;
         if (split[i] && pc_refine_exact_point(r, &v[i], &v[i + 1], 0.5 * (v[i].t + v[i + 1].t),
                                               &mid)) {
+            ++*n_split;
             st = pc_refine_split(r, &v[i], &mid, 1, out);
             if (st == PROJCURVE_OK)
                 st = pc_refine_split(r, &mid, &v[i + 1], 1, out);
@@ -140,11 +144,12 @@ projcurve_status pc_refine_angles(pc_refiner *r, pc_vertex_list *list, pc_vertex
         }
         if (mark_joints(r, list, split) == 0)
             break;
-        st = split_marked(r, list, split, scratch);
+        size_t n_split = 0;
+        st = split_marked(r, list, split, scratch, &n_split);
         const pc_vertex_list tmp = *list;
         *list = *scratch;
         *scratch = tmp;
-        if (st != PROJCURVE_OK)
+        if (st != PROJCURVE_OK || n_split == 0)
             break;
     }
     free(split);

@@ -89,6 +89,16 @@ static int candidate(pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b, 
     return pc_refine_exact_point(r, cur, b, cur->t + h, cand);
 }
 
+/* The first traced vertex after cur (or b): what is known of the curve when
+ * the corrector cannot reach it. */
+static pc_rvertex next_known(const pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b)
+{
+    size_t k = pc_refine_guide_index(r, cur->t);
+    while (k < r->n_guide && !(r->guide[k].t > cur->t))
+        ++k;
+    return k < r->n_guide && r->guide[k].t < b->t ? r->guide[k] : *b;
+}
+
 projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
                                  pc_vertex_list *out)
 {
@@ -102,7 +112,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
             h *= 0.5; /* the corrector failed: come closer */
             if (++rejections < PC_MARCH_MAX_REJECTIONS && h > r->min_dt)
                 continue;
-            cand = *b; /* nothing better to offer */
+            cand = next_known(r, &cur, b); /* the exact curve is out of reach here */
         }
         if (pc_refine_common_patch(r, &cur, &cand) == NULL)
             pc_refine_knot_crossing(r, &cur, &cand, cand.t - cur.t > r->min_dt, &cand);
