@@ -13,7 +13,7 @@
  * change of the second derivatives that shift_cache keeps, negligible)
  * when its image is below this fraction of the model size; the residual it
  * leaves behind must then be below this fraction of eps1 to stop. */
-#define PC_NEWTON_QUADRATIC_REGIME 1e-9
+#define PC_NEWTON_QUADRATIC_REGIME 1e-7
 #define PC_NEWTON_PREDICTED_SAFETY 0.25
 /* Newton diverges when its residual fails to decrease this many times. */
 #define PC_NEWTON_MAX_NON_DECREASE 3
