@@ -20,126 +20,16 @@
 
 #include "api/handles.h"
 #include "check.h"
+#include "piece_oracle.h"
 #include "refine/refine.h"
 #include "trace/projector.h"
 #include "trace/result.h"
 
 #define PI 3.14159265358979323846
-#define DENSE_PER_PIECE 16
-#define DENSE_EXACT 4000
-#define ORACLE_MAX_ITER 50
 
 /* ------------------------------------------------------------------------ */
 /* A directional projector written for this test (DESIGN.md, "Numerics").   */
 /* ------------------------------------------------------------------------ */
-
-typedef struct test_dir {
-    pc_vec3 dir, e1, e2;
-} test_dir;
-
-static void surface_eval(const projcurve_surface *s, double u, double v, int n, pc_vec3 *out)
-{
-    double buf[18];
-    projcurve_surface_eval(NULL, s, u, v, n, buf);
-    for (int k = 0; k < (n == 0 ? 1 : n == 1 ? 3 : 6); ++k)
-        out[k] = vec3_load(buf + 3 * k);
-}
-
-static void curve_eval(const projcurve_curve *c, double t, pc_vec3 out[3])
-{
-    double buf[9];
-    projcurve_curve_eval(NULL, c, t, 2, buf);
-    for (int k = 0; k < 3; ++k)
-        out[k] = vec3_load(buf + 3 * k);
-}
-
-static void clamp_domain(const projcurve_surface *s, double uv[2])
-{
-    double d[4];
-    projcurve_surface_domain(NULL, s, d);
-    uv[0] = uv[0] < d[0] ? d[0] : (uv[0] > d[1] ? d[1] : uv[0]);
-    uv[1] = uv[1] < d[2] ? d[2] : (uv[1] > d[3] ? d[3] : uv[1]);
-}
-
-static int test_correct(const pc_projector *self, double t, double uv[2], int *iterations)
-{
-    const test_dir *d = self->data;
-    pc_vec3 p[3];
-    curve_eval(self->curve, t, p);
-    for (int it = 0; it < self->newton_max_iter; ++it) {
-        pc_vec3 s[3];
-        surface_eval(self->surface, uv[0], uv[1], 1, s);
-        const pc_vec3 g = vec3_sub(s[0], p[0]);
-        const double r[2] = {-vec3_dot(d->e1, g), -vec3_dot(d->e2, g)};
-        if (iterations)
-            *iterations = it;
-        if (hypot(r[0], r[1]) <= self->newton_tol)
-            return 1;
-        double delta[2];
-        if (!mat2_solve(vec3_dot(d->e1, s[1]), vec3_dot(d->e1, s[2]), vec3_dot(d->e2, s[1]),
-                        vec3_dot(d->e2, s[2]), r, delta))
-            return 0;
-        uv[0] += delta[0];
-        uv[1] += delta[1];
-        clamp_domain(self->surface, uv);
-    }
-    return 0;
-}
-
-static int test_derivatives(const pc_projector *self, double t, double u, double v,
-                            pc_proj_point *out)
-{
-    const test_dir *d = self->data;
-    pc_vec3 p[3], s[6];
-    curve_eval(self->curve, t, p);
-    surface_eval(self->surface, u, v, 2, s);
-    const double a = vec3_dot(d->e1, s[1]), b = vec3_dot(d->e1, s[2]);
-    const double c = vec3_dot(d->e2, s[1]), e = vec3_dot(d->e2, s[2]);
-    const double r1[2] = {vec3_dot(d->e1, p[1]), vec3_dot(d->e2, p[1])};
-    double q1[2], q2[2];
-    if (!mat2_solve(a, b, c, e, r1, q1))
-        return 0;
-    const pc_vec3 curv = vec3_add(vec3_add(vec3_scale(s[3], q1[0] * q1[0]),
-                                           vec3_scale(s[4], 2.0 * q1[0] * q1[1])),
-                                  vec3_scale(s[5], q1[1] * q1[1]));
-    const double r2[2] = {vec3_dot(d->e1, vec3_sub(p[2], curv)),
-                          vec3_dot(d->e2, vec3_sub(p[2], curv))};
-    if (!mat2_solve(a, b, c, e, r2, q2))
-        return 0;
-    memset(out, 0, sizeof *out);
-    out->t = t, out->u = u, out->v = v;
-    out->du = q1[0], out->dv = q1[1], out->ddu = q2[0], out->ddv = q2[1];
-    out->s = s[0];
-    out->p = p[0];
-    return 1;
-}
-
-static double test_residual(const pc_projector *self, double t, double u, double v)
-{
-    const test_dir *d = self->data;
-    pc_vec3 p[3], s;
-    curve_eval(self->curve, t, p);
-    surface_eval(self->surface, u, v, 0, &s);
-    const pc_vec3 g = vec3_sub(s, p[0]);
-    return hypot(vec3_dot(d->e1, g), vec3_dot(d->e2, g));
-}
-
-static void make_projector(const projcurve_surface *s, const projcurve_curve *c, test_dir *d,
-                           pc_projector *proj)
-{
-    d->dir = vec3(0.0, 0.0, -1.0);
-    vec3_orthonormal_pair(d->dir, &d->e1, &d->e2);
-    memset(proj, 0, sizeof *proj);
-    proj->surface = s;
-    proj->curve = c;
-    proj->model_size = s->size;
-    proj->newton_tol = 1e-12 * s->size;
-    proj->newton_max_iter = 30;
-    proj->correct = test_correct;
-    proj->derivatives = test_derivatives;
-    proj->residual = test_residual;
-    proj->data = d;
-}
 
 /* ------------------------------------------------------------------------ */
 /* Test shapes with their exact projections.                               */
@@ -155,6 +45,13 @@ typedef struct shape {
     /* exact (u, v) at t, for the traced polyline given to the refinement */
     void (*exact_uv)(const struct shape *sh, double t, double uv[2]);
 } shape;
+
+/* Projection along -z with the test's own projector. */
+static void make_projector(const shape *sh, pc_oracle_dir *d, pc_projector *proj)
+{
+    const double down[3] = {0.0, 0.0, -1.0};
+    pc_oracle_projector(sh->surface, sh->curve, down, d, proj);
+}
 
 /* Height field: x = 10 u, y = 8 v, z = h(u, v); the curve flies at z = 20. */
 #define HF_X 10.0
@@ -196,8 +93,11 @@ static void hf_exact(const shape *sh, double t, pc_vec3 q[3])
     double xy[2], d1[2], d2[2];
     hf_curve_xy(t, xy, d1, d2);
     const double u1 = d1[0] / HF_X, v1 = d1[1] / HF_Y, u2 = d2[0] / HF_X, v2 = d2[1] / HF_Y;
+    double s6[18];
+    projcurve_surface_eval(NULL, sh->surface, xy[0] / HF_X, xy[1] / HF_Y, 2, s6);
     pc_vec3 s[6];
-    surface_eval(sh->surface, xy[0] / HF_X, xy[1] / HF_Y, 2, s);
+    for (int k = 0; k < 6; ++k)
+        s[k] = vec3_load(s6 + 3 * k);
     q[0] = s[0];
     q[1] = vec3_add(vec3_scale(s[1], u1), vec3_scale(s[2], v1));
     q[2] = vec3_add(vec3_add(vec3_scale(s[3], u1 * u1), vec3_scale(s[4], 2.0 * u1 * v1)),
@@ -223,10 +123,12 @@ static double greville(const double *knots, int p, int i)
     return s / p;
 }
 
-static int make_height_field(shape *sh)
+#define HF_MAX_CTRL 12
+
+/* Degree p in both directions, nu x nv control points (at most HF_MAX_CTRL). */
+static int make_height_field(shape *sh, int P, int NU, int NV, const char *name)
 {
-    enum { P = 3, NU = 9, NV = 7 };
-    double ku[NU + P + 1], kv[NV + P + 1], ctrl[3 * NU * NV];
+    double ku[HF_MAX_CTRL + 4], kv[HF_MAX_CTRL + 4], ctrl[3 * HF_MAX_CTRL * HF_MAX_CTRL];
     uniform_knots(P, NU, ku);
     uniform_knots(P, NV, kv);
     pc_test_rng rng;
@@ -239,7 +141,7 @@ static int make_height_field(shape *sh)
             c[2] = pc_test_rng_uniform(&rng, -1.5, 1.5);
         }
     memset(sh, 0, sizeof *sh);
-    sh->name = "bicubic height field";
+    sh->name = name;
     sh->t0 = 0.0;
     sh->t1 = 1.0;
     sh->exact = hf_exact;
@@ -299,9 +201,9 @@ static void cyl_exact_uv(const shape *sh, double t, double uv[2])
     uv[0] = a <= PI / 2 ? 0.5 * s : 0.5 + 0.5 * s;
     uv[1] = (c[1] + 5.0) / 10.0;
     pc_projector proj;
-    test_dir d;
-    make_projector(sh->surface, sh->curve, &d, &proj);
-    test_correct(&proj, t, uv, NULL);
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
+    proj.correct(&proj, t, uv, NULL);
 }
 
 static int make_cylinder(shape *sh)
@@ -339,6 +241,17 @@ static void free_shape(shape *sh)
     projcurve_curve_destroy(sh->curve);
 }
 
+static void shape_exact(const void *user, double t, pc_vec3 q[3])
+{
+    const shape *sh = user;
+    sh->exact(sh, t, q);
+}
+
+static pc_oracle_measure measure_branch(const shape *sh, const pc_branch *b)
+{
+    return pc_oracle_measure_branch(b, shape_exact, sh, &sh->surface->grid);
+}
+
 /* A result with one branch: the exact projection at n_points even t over
  * [ta, tb] (in that order: tb < ta gives a descending branch). */
 static projcurve_result *traced_result(const shape *sh, double ta, double tb, int n_points)
@@ -366,167 +279,6 @@ static projcurve_result *traced_result(const shape *sh, double ta, double tb, in
 /* Independent measurements on the output.                                  */
 /* ------------------------------------------------------------------------ */
 
-/* Piece point and derivative at s by Bernstein sums (rational): the power
- * form B_i = C(n,i) s^i (1-s)^(n-i), B_i' = n (B_{i-1}^{n-1} - B_i^{n-1}). */
-static void piece_eval(const pc_piece *pc, double s, pc_vec3 *x, pc_vec3 *dx)
-{
-    const int n = pc->degree;
-    double sp[2 * PROJCURVE_MAX_DEGREE + 2], rp[2 * PROJCURVE_MAX_DEGREE + 2];
-    sp[0] = rp[0] = 1.0;
-    for (int i = 1; i <= n; ++i) {
-        sp[i] = sp[i - 1] * s;
-        rp[i] = rp[i - 1] * (1.0 - s);
-    }
-    double h[4] = {0, 0, 0, 0}, dh[4] = {0, 0, 0, 0};
-    double binom = 1.0, binom1 = 1.0; /* C(n, i) and C(n-1, i) */
-    for (int i = 0; i <= n; ++i) {
-        if (i > 0) {
-            binom = binom * (n - i + 1) / i;
-            binom1 = i <= n - 1 ? binom1 * (n - i) / i : 0.0;
-        }
-        const double b = binom * sp[i] * rp[n - i];
-        const double lower_prev = i > 0 ? (binom * i / n) * sp[i - 1] * rp[n - i] : 0.0;
-        const double lower_here = i < n ? binom1 * sp[i] * rp[n - 1 - i] : 0.0;
-        const double db = n * (lower_prev - lower_here);
-        const double w = pc->weights[i];
-        for (int c = 0; c < 3; ++c) {
-            h[c] += b * w * pc->ctrl[3 * i + c];
-            dh[c] += db * w * pc->ctrl[3 * i + c];
-        }
-        h[3] += b * w;
-        dh[3] += db * w;
-    }
-    *x = vec3(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
-    if (dx)
-        *dx = vec3_scale(vec3_axpy(vec3(dh[0], dh[1], dh[2]), -dh[3], *x), 1.0 / h[3]);
-}
-
-/* Distance from x to the exact projection near t (Newton on t, clamped). */
-static double distance_to_exact(const shape *sh, double ta, double tb, pc_vec3 x, double t)
-{
-    const double lo = ta < tb ? ta : tb, hi = ta < tb ? tb : ta;
-    double best = INFINITY;
-    for (int it = 0; it < ORACLE_MAX_ITER; ++it) {
-        pc_vec3 q[3];
-        sh->exact(sh, t, q);
-        const pc_vec3 d = vec3_sub(q[0], x);
-        const double dist = vec3_norm(d);
-        if (dist < best)
-            best = dist;
-        const double f = vec3_dot(d, q[1]);
-        double fp = vec3_dot(q[1], q[1]) + vec3_dot(d, q[2]);
-        if (!(fp > 0.0))
-            fp = vec3_dot(q[1], q[1]);
-        double next = t - f / fp;
-        next = next < lo ? lo : (next > hi ? hi : next);
-        if (fabs(next - t) < 1e-15)
-            break;
-        t = next;
-    }
-    return best;
-}
-
-/* Distance from x to the piece (Newton on s from s0; derivative by the
- * analytic Bernstein derivative, second order by a difference quotient). */
-static double distance_to_piece(const pc_piece *pc, pc_vec3 x, double s)
-{
-    double best = INFINITY;
-    for (int it = 0; it < ORACLE_MAX_ITER; ++it) {
-        pc_vec3 c, dc, c2, dc2;
-        piece_eval(pc, s, &c, &dc);
-        const pc_vec3 d = vec3_sub(c, x);
-        const double dist = vec3_norm(d);
-        if (dist < best)
-            best = dist;
-        const double hs = 1e-6;
-        piece_eval(pc, s + hs <= 1.0 ? s + hs : s - hs, &c2, &dc2);
-        const pc_vec3 ddc = vec3_scale(vec3_sub(dc2, dc), s + hs <= 1.0 ? 1.0 / hs : -1.0 / hs);
-        double fp = vec3_dot(dc, dc) + vec3_dot(d, ddc);
-        if (!(fp > 0.0))
-            fp = vec3_dot(dc, dc);
-        double next = s - vec3_dot(d, dc) / fp;
-        next = next < 0.0 ? 0.0 : (next > 1.0 ? 1.0 : next);
-        if (fabs(next - s) < 1e-14)
-            break;
-        s = next;
-    }
-    return best;
-}
-
-typedef struct measure {
-    double hausdorff;   /* max of both one-sided distances */
-    double max_angle;   /* largest joint angle, degrees */
-    double max_gap;     /* largest distance between joined piece ends */
-    double max_end_err; /* piece ends vs the exact projection */
-    int off_patch;      /* pieces whose (u, v) range spans two patches */
-} measure;
-
-static double angle_deg(pc_vec3 a, pc_vec3 b)
-{
-    const double c = vec3_dot(a, b) / (vec3_norm(a) * vec3_norm(b));
-    return acos(c > 1.0 ? 1.0 : (c < -1.0 ? -1.0 : c)) * 180.0 / PI;
-}
-
-static int same_cell(const double *breaks, size_t n, double a, double b)
-{
-    for (size_t k = 1; k < n; ++k) /* an inner break strictly between a and b */
-        if ((breaks[k] - a) * (breaks[k] - b) < 0.0)
-            return 0;
-    return 1;
-}
-
-static measure measure_branch(const shape *sh, const pc_branch *b)
-{
-    measure m = {0, 0, 0, 0, 0};
-    const double ta = b->pieces[0].t0, tb = b->pieces[b->n_pieces - 1].t1;
-    const pc_patch_grid *g = &sh->surface->grid;
-    for (size_t i = 0; i < b->n_pieces; ++i) {
-        const pc_piece *pc = &b->pieces[i];
-        for (int k = 0; k <= DENSE_PER_PIECE; ++k) {
-            const double s = (double)k / DENSE_PER_PIECE;
-            pc_vec3 x;
-            piece_eval(pc, s, &x, NULL);
-            const double d = distance_to_exact(sh, ta, tb, x, pc->t0 + s * (pc->t1 - pc->t0));
-            if (d > m.hausdorff)
-                m.hausdorff = d;
-        }
-        pc_vec3 q[3], x0, x1;
-        piece_eval(pc, 0.0, &x0, NULL);
-        piece_eval(pc, 1.0, &x1, NULL);
-        sh->exact(sh, pc->t0, q);
-        m.max_end_err = fmax(m.max_end_err, vec3_dist(q[0], x0));
-        sh->exact(sh, pc->t1, q);
-        m.max_end_err = fmax(m.max_end_err, vec3_dist(q[0], x1));
-        if (!same_cell(g->breaks_u, g->spans_u, pc->uv[0], pc->uv[2]) ||
-            !same_cell(g->breaks_v, g->spans_v, pc->uv[1], pc->uv[3]))
-            ++m.off_patch;
-        if (i > 0) {
-            const pc_piece *pv = &b->pieces[i - 1];
-            const int n = pv->degree;
-            const pc_vec3 t_end = vec3_sub(vec3_load(pv->ctrl + 3 * n), vec3_load(pv->ctrl + 3 * (n - 1)));
-            const pc_vec3 t_start = vec3_sub(vec3_load(pc->ctrl + 3), vec3_load(pc->ctrl));
-            m.max_angle = fmax(m.max_angle, angle_deg(t_end, t_start));
-            pc_vec3 prev_end;
-            piece_eval(pv, 1.0, &prev_end, NULL);
-            m.max_gap = fmax(m.max_gap, vec3_dist(prev_end, x0));
-        }
-    }
-    /* exact -> output: dense samples of the exact curve onto their piece */
-    size_t i = 0; /* pieces follow t (either way): walk them along */
-    for (int k = 0; k <= DENSE_EXACT; ++k) {
-        const double t = ta + (tb - ta) * k / DENSE_EXACT;
-        pc_vec3 q[3];
-        sh->exact(sh, t, q);
-        while (i + 1 < b->n_pieces && (b->pieces[i].t1 - t) * (tb - ta) < 0.0)
-            ++i;
-        const pc_piece *pc = &b->pieces[i];
-        const double d = distance_to_piece(pc, q[0], (t - pc->t0) / (pc->t1 - pc->t0));
-        if (d > m.hausdorff)
-            m.hausdorff = d;
-    }
-    return m;
-}
-
 /* ------------------------------------------------------------------------ */
 /* Tests                                                                    */
 /* ------------------------------------------------------------------------ */
@@ -536,8 +288,8 @@ static void test_tolerances(shape *sh)
     static const double rel_eps[] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
     static const double angles[] = {10.0, 1.0};
     pc_projector proj;
-    test_dir d;
-    make_projector(sh->surface, sh->curve, &d, &proj);
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
     const double size = sh->surface->size;
     for (size_t a = 0; a < sizeof angles / sizeof angles[0]; ++a) {
         for (size_t e = 0; e < sizeof rel_eps / sizeof rel_eps[0]; ++e) {
@@ -553,7 +305,7 @@ static void test_tolerances(shape *sh)
             const pc_branch *b = &r->branches[0];
             CHECK(b->n_pieces > 0);
             if (b->n_pieces > 0) {
-                const measure m = measure_branch(sh, b);
+                const pc_oracle_measure m = measure_branch(sh, b);
                 printf("%s: eps_D %.0e, eps_T %4.1f deg: %4zu pieces, Hausdorff %.3e (%.2f eps), "
                        "max joint %.3f deg\n",
                        sh->name, rel_eps[e], angles[a], b->n_pieces, m.hausdorff / size,
@@ -579,8 +331,8 @@ static void test_tolerances(shape *sh)
 static void test_descending(shape *sh)
 {
     pc_projector proj;
-    test_dir d;
-    make_projector(sh->surface, sh->curve, &d, &proj);
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
     struct projcurve_options o;
     pc_options_defaults(&o);
     o.tol_distance = 1e-4 * sh->surface->size;
@@ -592,7 +344,7 @@ static void test_descending(shape *sh)
         CHECK_NEAR(b->pieces[0].t0, sh->t1, 0.0);
         CHECK_NEAR(b->pieces[b->n_pieces - 1].t1, sh->t0, 0.0);
         CHECK(b->pieces[0].t1 < b->pieces[0].t0);
-        const measure m = measure_branch(sh, b);
+        const pc_oracle_measure m = measure_branch(sh, b);
         CHECK(m.hausdorff <= o.tol_distance);
         CHECK(m.max_angle <= o.tol_angle_deg * (1.0 + 1e-9));
     }
@@ -603,13 +355,13 @@ static void test_descending(shape *sh)
 static void test_automatic_tolerance(shape *sh)
 {
     pc_projector proj;
-    test_dir d;
-    make_projector(sh->surface, sh->curve, &d, &proj);
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
     projcurve_result *r = traced_result(sh, sh->t0, sh->t1, 20);
     CHECK_OK(pc_refine_and_compose(NULL, &proj, NULL, r));
     CHECK_NEAR(r->stats.tol_distance, 1e-4 * sh->surface->size, 1e-18);
     if (r->branches[0].n_pieces > 0) {
-        const measure m = measure_branch(sh, &r->branches[0]);
+        const pc_oracle_measure m = measure_branch(sh, &r->branches[0]);
         CHECK(m.hausdorff <= r->stats.tol_distance);
     }
     projcurve_result_destroy(r);
@@ -618,8 +370,8 @@ static void test_automatic_tolerance(shape *sh)
 static void test_bad_tolerances(shape *sh)
 {
     pc_projector proj;
-    test_dir d;
-    make_projector(sh->surface, sh->curve, &d, &proj);
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     static const struct {
@@ -667,8 +419,8 @@ static void test_bad_tolerances(shape *sh)
 static void test_piece_limit(shape *sh)
 {
     pc_projector proj;
-    test_dir d;
-    make_projector(sh->surface, sh->curve, &d, &proj);
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     struct projcurve_options o;
@@ -713,8 +465,8 @@ static int failing_correct(const pc_projector *self, double t, double uv[2], int
 static void test_failing_corrector(shape *sh)
 {
     pc_projector proj;
-    test_dir d;
-    make_projector(sh->surface, sh->curve, &d, &proj);
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
     proj.correct = failing_correct;
     projcurve_result *r = traced_result(sh, sh->t0, sh->t1, 15);
     CHECK_OK(pc_refine_and_compose(NULL, &proj, NULL, r));
@@ -722,7 +474,7 @@ static void test_failing_corrector(shape *sh)
     CHECK(b->n_pieces >= 14);
     for (size_t i = 1; i < b->n_pieces; ++i)
         CHECK_NEAR(b->pieces[i].t0, b->pieces[i - 1].t1, 0.0);
-    const measure m = measure_branch(sh, b);
+    const pc_oracle_measure m = measure_branch(sh, b);
     CHECK(m.off_patch == 0);
     CHECK(m.max_gap <= 1e-12 * sh->surface->size);
     projcurve_result_destroy(r);
@@ -733,8 +485,8 @@ static void test_failing_corrector(shape *sh)
 static void test_degenerate_branches(shape *sh)
 {
     pc_projector proj;
-    test_dir d;
-    make_projector(sh->surface, sh->curve, &d, &proj);
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
     projcurve_result *r = traced_result(sh, sh->t0, sh->t1, 12);
     pc_branch *single = NULL, *repeated = NULL;
     CHECK_OK(pc_result_add_branch(NULL, r, &single));
@@ -761,10 +513,77 @@ static void test_degenerate_branches(shape *sh)
     projcurve_result_destroy(r4);
 }
 
+/* One-sided exact tangent of the height-field projection at t on the patch
+ * holding the piece: the patch's own derivatives (a degree-1 surface has a
+ * crease on every knot line). */
+static pc_vec3 hf_side_tangent(const shape *sh, const pc_piece *pc, double t)
+{
+    double xy[2], d1[2], d2[2];
+    hf_curve_xy(t, xy, d1, d2);
+    const pc_patch_grid *g = &sh->surface->grid;
+    const size_t k = pc_patch_grid_locate(g, 0.5 * (pc->uv[0] + pc->uv[2]),
+                                          0.5 * (pc->uv[1] + pc->uv[3]));
+    pc_vec3 d[3];
+    pc_bezier_patch_eval(&g->patches[k], xy[0] / HF_X, xy[1] / HF_Y, 1, d);
+    return vec3_add(vec3_scale(d[1], d1[0] / HF_X), vec3_scale(d[2], d1[1] / HF_Y));
+}
+
+static double angle_deg_between(pc_vec3 a, pc_vec3 b)
+{
+    return atan2(vec3_norm(vec3_cross(a, b)), vec3_dot(a, b)) * 180.0 / PI;
+}
+
+/* A degree-1 height field: S is only C0 on its knot lines, so the exact
+ * projection has a corner wherever it crosses one. The refinement must keep
+ * those corners (no endless splitting), meet eps_D, and hold every joint to
+ * eps_T beyond the exact curve's own corner there. */
+static void test_creased_surface(void)
+{
+    shape sh;
+    CHECK(make_height_field(&sh, 1, 7, 6, "degree-1 height field"));
+    pc_oracle_dir d;
+    pc_projector proj;
+    make_projector(&sh, &d, &proj);
+    static const double angles[] = {10.0, 1.0};
+    for (size_t a = 0; a < 2; ++a) {
+        struct projcurve_options o;
+        pc_options_defaults(&o);
+        o.tol_distance = 1e-4 * sh.surface->size;
+        o.tol_angle_deg = angles[a];
+        projcurve_result *r = traced_result(&sh, sh.t0, sh.t1, 41);
+        CHECK_OK(pc_refine_and_compose(NULL, &proj, &o, r));
+        const pc_branch *b = &r->branches[0];
+        CHECK(b->n_pieces > 0 && b->n_pieces < 1000);
+        if (b->n_pieces > 0) {
+            const pc_oracle_measure m = measure_branch(&sh, b);
+            CHECK(m.hausdorff <= o.tol_distance);
+            CHECK(m.off_patch == 0);
+            double worst_excess = 0.0;
+            for (size_t i = 1; i < b->n_pieces; ++i) {
+                const pc_piece *pv = &b->pieces[i - 1], *pc = &b->pieces[i];
+                const int n = pv->degree;
+                const pc_vec3 t_end = vec3_sub(vec3_load(pv->ctrl + 3 * n),
+                                               vec3_load(pv->ctrl + 3 * (n - 1)));
+                const pc_vec3 t_start = vec3_sub(vec3_load(pc->ctrl + 3), vec3_load(pc->ctrl));
+                const double corner = angle_deg_between(hf_side_tangent(&sh, pv, pc->t0),
+                                                        hf_side_tangent(&sh, pc, pc->t0));
+                worst_excess = fmax(worst_excess, angle_deg_between(t_end, t_start) - corner);
+            }
+            printf("%s: eps_T %4.1f deg: %zu pieces, joints exceed the exact corners by <= %.3f "
+                   "deg\n",
+                   sh.name, angles[a], b->n_pieces, worst_excess);
+            CHECK(worst_excess <= angles[a] * (1.0 + 1e-9));
+        }
+        projcurve_result_destroy(r);
+    }
+    free_shape(&sh);
+}
+
 int main(void)
 {
     shape shapes[2];
-    if (!make_height_field(&shapes[0]) || !make_cylinder(&shapes[1]))
+    if (!make_height_field(&shapes[0], 3, 9, 7, "bicubic height field") ||
+        !make_cylinder(&shapes[1]))
         pc_test_skip("surface or curve creation is not available");
     for (int k = 0; k < 2; ++k) {
         test_tolerances(&shapes[k]);
@@ -776,6 +595,7 @@ int main(void)
     test_failing_corrector(&shapes[0]);
     test_failing_corrector(&shapes[1]);
     test_degenerate_branches(&shapes[0]);
+    test_creased_surface();
     for (int k = 0; k < 2; ++k)
         free_shape(&shapes[k]);
     return pc_test_finish("test_refine");

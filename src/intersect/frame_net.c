@@ -148,14 +148,34 @@ static double second_difference(const pc_frame_net *net, int di, int dj, int ei,
     return best;
 }
 
-double pc_frame_net_jacobian_lipschitz(const pc_frame_net *net)
+/* Largest |b - a| over neighbours (i, j), (i + di, j + dj) of the net. */
+static double first_difference(const pc_frame_net *net, int di, int dj)
+{
+    const int m = net->deg_u, n = net->deg_v;
+    double best = 0.0;
+    for (int j = 0; j + dj <= n; ++j) {
+        for (int i = 0; i + di <= m; ++i) {
+            const double *a = net->q + 4 * ((size_t)j * (size_t)(m + 1) + (size_t)i);
+            const double *b = a + 4 * (di + dj * (m + 1));
+            const double x = b[0] - a[0], y = b[1] - a[1];
+            const double len = sqrt(x * x + y * y);
+            if (len > best)
+                best = len;
+        }
+    }
+    return best;
+}
+
+void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, double *jac_max)
 {
     const int m = net->deg_u, n = net->deg_v;
     /* Q_ss from steps (1,0),(1,0); Q_st from (1,0),(0,1); Q_tt from (0,1),(0,1). */
     const double ss = m >= 2 ? m * (m - 1) * second_difference(net, 1, 0, 1, 0) : 0.0;
     const double st = m * n * second_difference(net, 1, 0, 0, 1);
     const double tt = n >= 2 ? n * (n - 1) * second_difference(net, 0, 1, 0, 1) : 0.0;
-    return sqrt(ss * ss + 2.0 * st * st + tt * tt);
+    *lipschitz = sqrt(ss * ss + 2.0 * st * st + tt * tt);
+    const double qs = m * first_difference(net, 1, 0), qt = n * first_difference(net, 0, 1);
+    *jac_max = sqrt(qs * qs + qt * qt);
 }
 
 int pc_frame_net_newton(const pc_frame_net *net, double s, double t, pc_frame_root *out)

@@ -32,11 +32,11 @@ void pc_frame_net_eval(const pc_frame_net *net, double s, double t, double d[4],
 /* Fills `out` with the point at (s, t). */
 void pc_frame_net_point(const pc_frame_net *net, double s, double t, pc_frame_root *out);
 
-/* A bound L on the variation of the Jacobian J = [X_s X_t; Y_s Y_t] over
- * the patch: |J(a) - J(b)|_F <= L |a - b|, from the net's second
- * differences (a Bezier function's second derivatives lie in the hull of
- * its second differences times m (m - 1), m n or n (n - 1)). */
-double pc_frame_net_jacobian_lipschitz(const pc_frame_net *net);
+/* Bounds on the Jacobian J = [X_s X_t; Y_s Y_t] over the patch, from the
+ * net's differences (a Bezier function's derivatives lie in the hull of its
+ * differences times the degree factors): *lipschitz = L with
+ * |J(a) - J(b)|_F <= L |a - b|, and *jac_max >= |J|_F everywhere. */
+void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, double *jac_max);
 
 /* Newton on (X, Y) = 0 from (s, t). Returns 1 when the step fell below the
  * step tolerance within the iteration bound, 0 when the Jacobian was

@@ -34,10 +34,8 @@
  * rejected: the neighbouring patch then reports it. Accepted roots are
  * clamped into the patch. */
 #define PC_PARAM_SLACK 1e-9
-/* Newton is tried on a box once clipping has brought it below this width
- * (local parameters), and after a failed try only once the box has shrunk
- * by the retry factor: a try costs about as much as a clipping round. */
-#define PC_NEWTON_TRY_WIDTH 0.25
+/* After a failed Newton try on a box, the next waits until the box has
+ * shrunk by this factor: a try costs about as much as a clipping round. */
 #define PC_NEWTON_RETRY_FACTOR 0.01
 
 void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double scale,
@@ -50,6 +48,9 @@ void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double 
     frame->d = vec3_normalize(vec3_scale(dir, 1.0 / big));
     vec3_orthonormal_pair(frame->d, &frame->e1, &frame->e2);
     frame->inv_dir_norm = 1.0 / norm;
+    frame->origin_e1 = vec3_dot(frame->e1, origin);
+    frame->origin_e2 = vec3_dot(frame->e2, origin);
+    frame->origin_d = vec3_dot(frame->d, origin);
     frame->tol_residual = PC_HIT_RESIDUAL_REL * scale;
     frame->tol_zero = PC_CLIP_ZERO_REL * scale;
     frame->ray_only = ray_only;
@@ -80,34 +81,40 @@ size_t pc_ray_patch_work_size(int deg_u, int deg_v)
 /* Writes the patch's net in the ray frame into q. Returns 0 when the
  * control net lies entirely on one side of one of the two planes through
  * the line (or, for a ray, behind its origin): the convex hull then misses
- * the line. */
+ * the line. The third coordinate is computed only for nets that pass. */
 static int project_net(const pc_ray_frame *f, const pc_bezier_patch *patch, double *q,
                        double *w_max)
 {
     const size_t np = net_points(patch->deg_u, patch->deg_v);
-    const double o1 = vec3_dot(f->e1, f->origin), o2 = vec3_dot(f->e2, f->origin);
-    const double o3 = vec3_dot(f->d, f->origin);
     const double tol = f->tol_residual;
-    int neg_x = 0, pos_x = 0, neg_y = 0, pos_y = 0, ahead = 0;
+    int neg_x = 0, pos_x = 0, neg_y = 0, pos_y = 0;
+    double w_top = 0.0;
     for (size_t k = 0; k < np; ++k) {
         const double *cw = patch->cw + 4 * k;
         const pc_vec3 p = vec3(cw[0], cw[1], cw[2]);
         const double w = cw[3];
         double *out = q + 4 * k;
-        out[0] = vec3_dot(f->e1, p) - w * o1;
-        out[1] = vec3_dot(f->e2, p) - w * o2;
-        out[2] = vec3_dot(f->d, p) - w * o3;
+        out[0] = vec3_dot(f->e1, p) - w * f->origin_e1;
+        out[1] = vec3_dot(f->e2, p) - w * f->origin_e2;
         out[3] = w;
-        if (w > *w_max)
-            *w_max = w;
+        w_top = w > w_top ? w : w_top;
         const double slack = tol * w;
         neg_x |= out[0] <= slack;
         pos_x |= out[0] >= -slack;
         neg_y |= out[1] <= slack;
         pos_y |= out[1] >= -slack;
-        ahead |= out[2] >= -slack;
     }
-    return neg_x && pos_x && neg_y && pos_y && (ahead || !f->ray_only);
+    if (!(neg_x && pos_x && neg_y && pos_y))
+        return 0;
+    int ahead = 0;
+    for (size_t k = 0; k < np; ++k) {
+        const double *cw = patch->cw + 4 * k;
+        double *out = q + 4 * k;
+        out[2] = vec3_dot(f->d, vec3(cw[0], cw[1], cw[2])) - cw[3] * f->origin_d;
+        ahead |= out[2] >= -tol * cw[3];
+    }
+    *w_max = w_top;
+    return ahead || !f->ray_only;
 }
 
 typedef struct patch_search {
@@ -117,7 +124,8 @@ typedef struct patch_search {
     pc_hit_list *hits;
     projcurve_context *ctx;
     double zero_tol; /* rounding level of the homogeneous control values */
-    double lipschitz; /* of the Jacobian over the patch; < 0 until needed */
+    double lipschitz; /* of the Jacobian over the patch */
+    double jac_max;   /* bound on |J|_F over the patch */
 } patch_search;
 
 /* Records a root found in patch-local parameters if it is a hit. */
@@ -157,13 +165,13 @@ static projcurve_status finish_converged(const patch_search *ps, const double bo
     return record_root(ps, &r, 1);
 }
 
-/* Newton from the centre of a box that clipping has narrowed, accepted
- * when its root lies in the box and is provably the only one there: with
- * beta = |J(r)^-1| and L the Jacobian's Lipschitz bound, (X, Y)(x) =
- * (J(r) + E)(x - r) with |E| <= L |x - r| / 2, nonsingular while
- * |x - r| < 2 / (beta L); the box must lie within half that radius.
+/* Newton from the centre of a box, accepted when its root lies in the box
+ * and is provably the only one there: with beta = |J(r)^-1| and L the
+ * Jacobian's Lipschitz bound, (X, Y)(x) = (J(r) + E)(x - r) with
+ * |E| <= L |x - r| / 2, nonsingular while |x - r| < 2 / (beta L); the box
+ * must lie within half that radius (Kantorovich-style uniqueness).
  * Returns 1 when the box is finished (its root recorded). */
-static int try_certified_newton(patch_search *ps, const double box[4], projcurve_status *st)
+static int try_certified_newton(const patch_search *ps, const double box[4], projcurve_status *st)
 {
     pc_frame_root r;
     if (!pc_frame_net_newton(&ps->net, 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), &r))
@@ -174,8 +182,6 @@ static int try_certified_newton(patch_search *ps, const double box[4], projcurve
     const double *j = r.jac;
     const double det = j[0] * j[3] - j[1] * j[2];
     const double norm = sqrt(j[0] * j[0] + j[1] * j[1] + j[2] * j[2] + j[3] * j[3]);
-    if (ps->lipschitz < 0.0)
-        ps->lipschitz = pc_frame_net_jacobian_lipschitz(&ps->net);
     const double ds = fmax(r.s - box[0], box[1] - r.s), dt = fmax(r.t - box[2], box[3] - r.t);
     const double reach = sqrt(ds * ds + dt * dt);
     /* beta <= |J|_F / |det J|. */
@@ -183,6 +189,14 @@ static int try_certified_newton(patch_search *ps, const double box[4], projcurve
         return 0;
     *st = record_root(ps, &r, 0);
     return 1;
+}
+
+/* Whether a certified Newton try on a box of this width can succeed at
+ * all: it needs reach L <= |det J| / |J|_F <= |J|_F / 2 <= jac_max / 2,
+ * with reach up to the box's diagonal. */
+static int newton_may_certify(const patch_search *ps, double width)
+{
+    return 2.0 * 1.4142135623730951 * width * ps->lipschitz <= ps->jac_max;
 }
 
 /* A box where clipping stalls at the resolution limit: the least-squares
@@ -202,7 +216,7 @@ static int split_direction(const double box[4])
 }
 
 /* Depth-first Bezier clipping over a bounded stack of planar nets. */
-static projcurve_status clip_patch(patch_search *ps, double *slots)
+static projcurve_status clip_patch(const patch_search *ps, double *slots)
 {
     const int m = ps->net.deg_u, n = ps->net.deg_v;
     const size_t np = net_points(m, n);
@@ -217,8 +231,16 @@ static projcurve_status clip_patch(patch_search *ps, double *slots)
     boxes[0][0] = boxes[0][2] = 0.0;
     boxes[0][1] = boxes[0][3] = 1.0;
     depth[0] = 0;
-    next_try[0] = PC_NEWTON_TRY_WIDTH;
+    next_try[0] = 1.0;
     int top = 0;
+    /* A patch flat enough for Newton to be certified on the whole of it
+     * (small patches of a fine surface) needs no clipping at all. */
+    if (newton_may_certify(ps, 1.0)) {
+        projcurve_status st = PROJCURVE_OK;
+        if (try_certified_newton(ps, boxes[0], &st))
+            return st;
+        next_try[0] = PC_NEWTON_RETRY_FACTOR;
+    }
     for (int round = 0; top >= 0 && round < PC_CLIP_MAX_ROUNDS; ++round) {
         double *net = slots + (size_t)top * slot_size;
         double *box = boxes[top];
@@ -226,7 +248,7 @@ static projcurve_status clip_patch(patch_search *ps, double *slots)
         projcurve_status st = PROJCURVE_OK;
         if (outcome == PC_CLIP_PROGRESS) {
             const double width = fmax(box[1] - box[0], box[3] - box[2]);
-            if (width <= next_try[top]) {
+            if (width <= next_try[top] && newton_may_certify(ps, width)) {
                 if (try_certified_newton(ps, box, &st)) {
                     --top;
                     if (st != PROJCURVE_OK)
@@ -278,6 +300,6 @@ projcurve_status pc_ray_patch_hits(projcurve_context *ctx, const pc_ray_frame *f
     if (!project_net(frame, patch, work, &w_max))
         return PROJCURVE_OK;
     ps.zero_tol = frame->tol_zero * w_max;
-    ps.lipschitz = -1.0;
+    pc_frame_net_jacobian_bounds(&ps.net, &ps.lipschitz, &ps.jac_max);
     return clip_patch(&ps, work + 4 * net_points(patch->deg_u, patch->deg_v));
 }

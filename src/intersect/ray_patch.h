@@ -21,6 +21,7 @@
 typedef struct pc_ray_frame {
     pc_vec3 origin;
     pc_vec3 e1, e2, d;     /* orthonormal, d along dir */
+    double origin_e1, origin_e2, origin_d; /* e1.o, e2.o, d.o */
     double inv_dir_norm;   /* 1 / |dir|: lambda = d.(S - o) / |dir| */
     double tol_residual;   /* a hit's distance to the line, model units */
     double tol_zero;       /* rounding level of distances, model units */

@@ -16,6 +16,7 @@
 /* A polished root lies on the line to this fraction of the model. */
 #define ORACLE_RESIDUAL_REL 1e-11
 #define ORACLE_BLOCK 8
+#define ORACLE_GROUP 4 /* blocks per side of a group */
 
 static void sub3(const double *a, const double *b, double *r)
 {
@@ -34,6 +35,21 @@ static void cross3(const double *a, const double *b, double *r)
 static const double *mesh_point(const pc_oracle_mesh *m, int i, int j)
 {
     return m->points + 3 * ((size_t)j * (size_t)(m->cells_u + 1) + (size_t)i);
+}
+
+/* The box of the blocks [bi0, bi1) x [bj0, bj1). */
+static void group_box(const pc_oracle_mesh *m, int bi0, int bi1, int bj0, int bj1, double box[6])
+{
+    box[0] = box[1] = box[2] = INFINITY;
+    box[3] = box[4] = box[5] = -INFINITY;
+    for (int bj = bj0; bj < bj1; ++bj)
+        for (int bi = bi0; bi < bi1; ++bi) {
+            const double *b = m->block_boxes + 6 * ((size_t)bj * (size_t)m->blocks_u + (size_t)bi);
+            for (int k = 0; k < 3; ++k) {
+                box[k] = fmin(box[k], b[k]);
+                box[k + 3] = fmax(box[k + 3], b[k + 3]);
+            }
+        }
 }
 
 int pc_oracle_mesh_build(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *user,
@@ -94,6 +110,20 @@ int pc_oracle_mesh_build(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *use
             }
         }
     }
+    mesh->groups_u = (mesh->blocks_u + ORACLE_GROUP - 1) / ORACLE_GROUP;
+    mesh->groups_v = (mesh->blocks_v + ORACLE_GROUP - 1) / ORACLE_GROUP;
+    mesh->group_boxes = malloc(sizeof(double) * 6 * (size_t)mesh->groups_u * (size_t)mesh->groups_v);
+    if (!mesh->group_boxes) {
+        pc_oracle_mesh_free(mesh);
+        return 0;
+    }
+    for (int gj = 0; gj < mesh->groups_v; ++gj)
+        for (int gi = 0; gi < mesh->groups_u; ++gi) {
+            const int bi = gi * ORACLE_GROUP, bj = gj * ORACLE_GROUP;
+            group_box(mesh, bi, bi + ORACLE_GROUP < mesh->blocks_u ? bi + ORACLE_GROUP : mesh->blocks_u,
+                      bj, bj + ORACLE_GROUP < mesh->blocks_v ? bj + ORACLE_GROUP : mesh->blocks_v,
+                      mesh->group_boxes + 6 * ((size_t)gj * (size_t)mesh->groups_u + (size_t)gi));
+        }
     return 1;
 }
 
@@ -101,8 +131,10 @@ void pc_oracle_mesh_free(pc_oracle_mesh *mesh)
 {
     free(mesh->points);
     free(mesh->block_boxes);
+    free(mesh->group_boxes);
     mesh->points = NULL;
     mesh->block_boxes = NULL;
+    mesh->group_boxes = NULL;
 }
 
 static int line_meets_box(const double *box, const double *o, const double *d, int ray_only)
@@ -244,12 +276,34 @@ static void seed_cell(const pc_oracle_mesh *m, const double *o, const double *d,
     }
 }
 
+static size_t block_hits(const pc_oracle_mesh *m, const double origin[3], const double dir[3],
+                         int ray_only, int bi0, int bi1, int bj0, int bj1, pc_oracle_hit *hits,
+                         size_t capacity, size_t count);
+
 size_t pc_oracle_line_hits(const pc_oracle_mesh *m, const double origin[3], const double dir[3],
                            int ray_only, pc_oracle_hit *hits, size_t capacity)
 {
     size_t count = 0;
-    for (int bj = 0; bj < m->blocks_v; ++bj) {
-        for (int bi = 0; bi < m->blocks_u; ++bi) {
+    /* Groups of ORACLE_GROUP x ORACLE_GROUP blocks first, then blocks. */
+    for (int gj = 0; gj < m->blocks_v; gj += ORACLE_GROUP) {
+        for (int gi = 0; gi < m->blocks_u; gi += ORACLE_GROUP) {
+            const int gi1 = gi + ORACLE_GROUP < m->blocks_u ? gi + ORACLE_GROUP : m->blocks_u;
+            const int gj1 = gj + ORACLE_GROUP < m->blocks_v ? gj + ORACLE_GROUP : m->blocks_v;
+            const double *gbox = m->group_boxes + 6 * ((size_t)(gj / ORACLE_GROUP) * (size_t)m->groups_u +
+                                                      (size_t)(gi / ORACLE_GROUP));
+            if (line_meets_box(gbox, origin, dir, ray_only))
+                count = block_hits(m, origin, dir, ray_only, gi, gi1, gj, gj1, hits, capacity, count);
+        }
+    }
+    return count;
+}
+
+static size_t block_hits(const pc_oracle_mesh *m, const double origin[3], const double dir[3],
+                         int ray_only, int bi0, int bi1, int bj0, int bj1, pc_oracle_hit *hits,
+                         size_t capacity, size_t count)
+{
+    for (int bj = bj0; bj < bj1; ++bj) {
+        for (int bi = bi0; bi < bi1; ++bi) {
             const double *box = m->block_boxes + 6 * ((size_t)bj * (size_t)m->blocks_u + (size_t)bi);
             if (!line_meets_box(box, origin, dir, ray_only))
                 continue;

@@ -30,6 +30,8 @@ typedef struct pc_oracle_mesh {
     double *points;              /* (cells_u + 1) * (cells_v + 1) * 3 */
     double *block_boxes;         /* 6 per block */
     int blocks_u, blocks_v;
+    double *group_boxes;         /* 6 per group of blocks */
+    int groups_u, groups_v;
     double scale;                /* diagonal of the points' box */
 } pc_oracle_mesh;
 
