@@ -31,7 +31,8 @@ typedef struct pcb_timing {
  * measurement stops and reports the failure). */
 typedef int (*pcb_work_fn)(void *user, size_t n);
 
-/* Seconds on a monotonic clock. */
+/* Seconds of CPU time used by the process (monotonic; wall time where the
+ * CPU clock is missing). */
 double pcb_now_s(void);
 
 /* Median seconds per call of fn. Returns 0, or the workload's failure code. */
