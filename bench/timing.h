@@ -6,7 +6,9 @@
  * it once with an n chosen (by doubling) so that the run lasts at least
  * `min_run_s`, which keeps the clock's resolution and the call overhead out
  * of the figure. The reported time is the median over `reps` runs of
- * (run time / n): medians shrug off the other processes on a shared machine.
+ * (run time / n). Times are CPU time of the process, so that waiting for a
+ * core on a shared machine does not count, and medians shrug off the rest
+ * of the interference (caches, frequency).
  */
 #ifndef PCB_TIMING_H
 #define PCB_TIMING_H
