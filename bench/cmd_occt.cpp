@@ -52,10 +52,6 @@ namespace {
 
 const int OCCT_REPS = 5;
 const double OCCT_MIN_RUN_S = 0.02;
-const size_t EXACT_SAMPLES = 2001;
-const size_t EXACT_SAMPLES_QUICK = 201;
-const size_t RESULT_SAMPLES = 1024;
-const size_t RESULT_SAMPLES_QUICK = 128;
 /* Matched-accuracy runs ask for no less than this fraction of the model
  * size (Open CASCADE can be exact to rounding on simple shapes). */
 const double MATCH_TOL_FLOOR = 1e-10;
@@ -289,7 +285,7 @@ bool build_occt_side(occt_case &oc)
 
 /* Our side once at the options' tolerance: branches and deviation. */
 bool measure_ours(const pcb_case *c, const projcurve_options *opts, const pcb_exact &ex,
-                  size_t samples, ours_run &run, std::string &status)
+                  const pcb_sampling &sampling, ours_run &run, std::string &status)
 {
     projcurve_context *ctx = nullptr;
     projcurve_result *res = nullptr;
@@ -304,9 +300,13 @@ bool measure_ours(const pcb_case *c, const projcurve_options *opts, const pcb_ex
                  projcurve_context_message(ctx);
     } else {
         run.branches = static_cast<double>(projcurve_result_branch_count(res));
+        double pieces = 0.0;
+        projcurve_result_stat(nullptr, res, PROJCURVE_STAT_PIECES, &pieces);
+        const size_t per_curve = std::max(
+            sampling.min_per_curve, static_cast<size_t>(pieces * double(sampling.per_piece)));
         const pcb_curve_set set = pcb_result_curve_set(&rc);
         pcb_deviation dev;
-        ok = pcb_measure_deviation(&ex, &set, samples, &dev) == 0;
+        ok = pcb_measure_deviation(&ex, &set, per_curve, &dev) == 0;
         run.dev = dev.hausdorff;
         if (!ok)
             status = "deviation of our result";
@@ -317,7 +317,7 @@ bool measure_ours(const pcb_case *c, const projcurve_options *opts, const pcb_ex
     return ok;
 }
 
-bool measure_occt(occt_case &oc, const pcb_exact &ex, size_t samples, row &r)
+bool measure_occt(occt_case &oc, const pcb_exact &ex, const pcb_sampling &sampling, row &r)
 {
     if (!occt_project(oc, true))
         return false;
@@ -327,7 +327,9 @@ bool measure_occt(occt_case &oc, const pcb_exact &ex, size_t samples, row &r)
         oc.adaptors.emplace_back(e);
     pcb_curve_set set = {oc.adaptors.size(), occt_domain, occt_eval, &oc};
     pcb_deviation dev;
-    if (pcb_measure_deviation(&ex, &set, samples, &dev) != 0) {
+    /* Open CASCADE's edges are B-splines of a few dozen spans: the minimum
+     * per curve samples them as densely as our pieces. */
+    if (pcb_measure_deviation(&ex, &set, sampling.min_per_curve, &dev) != 0) {
         oc.error = "deviation of the Open CASCADE result";
         return false;
     }
@@ -348,14 +350,14 @@ bool is_quick_case(const char *name)
 bool run_ours(const pcb_args *args, const pcb_case *c, double tol, const pcb_exact &ex,
               occt_case *oc, ours_run &run, std::string &status)
 {
-    const size_t samples = args->quick ? RESULT_SAMPLES_QUICK : RESULT_SAMPLES;
+    const pcb_sampling sampling = pcb_sampling_for(args->quick);
     projcurve_options *opts = nullptr;
     run.tol = tol;
     bool ok = pcb_ok(nullptr, pcb_case_options(nullptr, c, &opts), "occt: options") &&
               pcb_ok(nullptr,
                      projcurve_options_set_double(nullptr, opts, PROJCURVE_OPT_TOL_DISTANCE, tol),
                      "occt: tolerance") &&
-              measure_ours(c, opts, ex, samples, run, status);
+              measure_ours(c, opts, ex, sampling, run, status);
     if (ok) {
         const pcb_timing timing = pcb_timing_for(args, OCCT_REPS, OCCT_MIN_RUN_S);
         ours_work_data w = {c, opts};
@@ -388,12 +390,12 @@ bool run_case(const pcb_args *args, const pcb_case *c, row &r)
     }
     pcb_exact ex;
     std::memset(&ex, 0, sizeof ex);
-    const size_t exact_n = args->quick ? EXACT_SAMPLES_QUICK : EXACT_SAMPLES;
-    const size_t samples = args->quick ? RESULT_SAMPLES_QUICK : RESULT_SAMPLES;
+    const pcb_sampling sampling = pcb_sampling_for(args->quick);
     projcurve_context *ctx = nullptr;
     projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx);
     const projcurve_status st =
-        pcb_exact_sample(ctx, &ex, c->surface, c->curve, c->orthogonal, c->dir, exact_n);
+        pcb_exact_sample(ctx, &ex, c->surface, c->curve, c->orthogonal, c->dir,
+                         sampling.exact_samples);
     if (st != PROJCURVE_OK) {
         r.status = std::string("exact samples: ") + projcurve_status_string(st) + ": " +
                    projcurve_context_message(ctx);
@@ -403,7 +405,7 @@ bool run_case(const pcb_args *args, const pcb_case *c, row &r)
     projcurve_context_destroy(ctx);
     occt_case oc;
     oc.c = c;
-    const bool occt_ok = build_occt_side(oc) && measure_occt(oc, ex, samples, r);
+    const bool occt_ok = build_occt_side(oc) && measure_occt(oc, ex, sampling, r);
     r.status = occt_ok ? oc.note : oc.error;
     std::string ours_status;
     bool ok = run_ours(args, c, c->tol_dist, ex, occt_ok ? &oc : nullptr, r.at_case_tol,

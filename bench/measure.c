@@ -8,14 +8,17 @@
 #include <stdlib.h>
 
 #define PI 3.14159265358979323846
-/* Result curves are sampled at least this densely (per curve), and at
- * least this many times per composed piece. */
-#define MIN_SAMPLES_PER_CURVE 512
-#define SAMPLES_PER_PIECE 16
+/* Oracle samples and result samples: 2001 curve parameters resolve every
+ * case's features; 16 samples per composed piece catch a piece that bulges
+ * between its ends. Quick runs only prove the code path. */
+static const pcb_sampling dense_sampling = {2001, 512, 16};
+static const pcb_sampling quick_sampling = {101, 64, 2};
 /* The uniform split search stops here. */
 #define MAX_UNIFORM_PIECES 65536
 /* Chord points checked per uniform piece. */
 #define UNIFORM_CHECKS 3
+
+pcb_sampling pcb_sampling_for(int quick) { return quick ? quick_sampling : dense_sampling; }
 
 void pcb_measurement_clear(pcb_measurement *m)
 {
@@ -98,7 +101,7 @@ projcurve_status pcb_result_shape(projcurve_context *ctx, const projcurve_result
     return st;
 }
 
-int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, size_t exact_samples,
+int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, const pcb_sampling *sampling,
                      int with_uniform, pcb_measurement *m, char *status, size_t status_size)
 {
     pcb_measurement_clear(m);
@@ -120,15 +123,15 @@ int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, size_t exact_s
         st = pcb_result_curves_init(ctx, r, &rc);
     if (st == PROJCURVE_OK)
         st = pcb_exact_sample(ctx, &ex, c->surface, c->curve, c->orthogonal, c->dir,
-                              exact_samples);
+                              sampling->exact_samples);
     if (st != PROJCURVE_OK) {
         snprintf(status, status_size, "%s: %s", projcurve_status_string(st),
                  projcurve_context_message(ctx));
         goto cleanup;
     }
-    size_t per_curve = MIN_SAMPLES_PER_CURVE;
-    if (m->pieces * SAMPLES_PER_PIECE > (double)per_curve)
-        per_curve = (size_t)(m->pieces * SAMPLES_PER_PIECE);
+    size_t per_curve = sampling->min_per_curve;
+    if (m->pieces * (double)sampling->per_piece > (double)per_curve)
+        per_curve = (size_t)(m->pieces * (double)sampling->per_piece);
     const pcb_curve_set set = pcb_result_curve_set(&rc);
     if (pcb_measure_deviation(&ex, &set, per_curve, &m->deviation) != 0) {
         snprintf(status, status_size, "deviation: evaluation failed");

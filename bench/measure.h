@@ -26,10 +26,19 @@ typedef struct pcb_measurement {
 /* Every field NaN. */
 void pcb_measurement_clear(pcb_measurement *m);
 
-/* Measures case c: exact_samples curve parameters for the oracle; with
- * with_uniform, also the uniform split count. Returns 0, or -1 with a
- * message in status. */
-int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, size_t exact_samples,
+/* How densely accuracy is measured. */
+typedef struct pcb_sampling {
+    size_t exact_samples;      /* curve parameters sampled for the oracle */
+    size_t min_per_curve;      /* result samples per branch curve, at least */
+    size_t per_piece;          /* and at least this many per composed piece */
+} pcb_sampling;
+
+/* Dense for real figures, sparse for quick runs. */
+pcb_sampling pcb_sampling_for(int quick);
+
+/* Measures case c; with with_uniform, also the uniform split count.
+ * Returns 0, or -1 with a message in status. */
+int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, const pcb_sampling *sampling,
                      int with_uniform, pcb_measurement *m, char *status, size_t status_size);
 
 /* Shape figures of a result (branches, pieces, control points, joint angle,
