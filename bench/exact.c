@@ -14,8 +14,9 @@
 /* A guess may land this far (fraction of the domain) outside and be
  * clamped back; a converged point farther outside is not on the surface. */
 #define DOMAIN_SLACK 1e-12
-/* Golden-section iterations: 0.618^80 ~ 2e-17 of the bracket. */
-#define GOLDEN_ITER 80
+/* Golden-section iterations: 0.618^64 ~ 4e-14 of the bracket (two sample
+ * spacings), below 1e-16 of the curve domain. */
+#define GOLDEN_ITER 64
 /* Hits or foot points kept per curve parameter. */
 #define MAX_HITS_PER_T 16
 
