@@ -309,6 +309,44 @@ static void test_sphere(void)
                    "(u, v) = (%.17g, %.17g)\n", p[0], p[1], p[2], t[0], t[1], t[2],
                    hits.items[0].u, hits.items[0].v);
     }
+    /* Lines through the poles, where a whole patch edge collapses to one
+     * point: the pole is one hit, and the line's other hit is found. */
+    for (int k = 0; k < 400; ++k) {
+        const double side = k % 2 ? 1.0 : -1.0;
+        const double pole[3] = {c[0], c[1], c[2] + side * r};
+        double d[3];
+        random_direction(&rng, d);
+        if (k % 50 == 0) { /* tangent at the pole */
+            d[2] = 0.0;
+        } else if (fabs(d[2]) < 0.05) {
+            d[2] = 0.05;
+        }
+        const double o[3] = {pole[0] - 0.8 * d[0], pole[1] - 0.8 * d[1], pole[2] - 0.8 * d[2]};
+        /* The other root of a l^2 + 2 b l + e = 0, e = 0 at the pole: l = 0.8 and
+         * l = 0.8 - 2 b' / a with b' = (pole - c) . d. */
+        const double a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const double other = 0.8 - 2.0 * side * r * d[2] / a;
+        const size_t n = hits_of(s, o, d, 0, &hits);
+        const size_t n_exp = d[2] == 0.0 ? 1 : 2;
+        CHECK(n == n_exp);
+        if (n != n_exp) {
+            printf("  sphere pole %+g along (%.17g, %.17g, %.17g): %zu hits\n", side, d[0], d[1],
+                   d[2], n);
+            continue;
+        }
+        int at_pole = 0, at_other = 0;
+        for (size_t h = 0; h < n; ++h) {
+            at_pole += fabs(hits.items[h].lambda - 0.8) < 1e-9;
+            at_other += fabs(hits.items[h].lambda - other) < 1e-9;
+            if (fabs(hits.items[h].lambda - 0.8) < 1e-9) {
+                CHECK_NEAR(hits.items[h].v, side > 0 ? 1.0 : 0.0, 1e-12);
+                CHECK(hits.items[h].flags & PROJCURVE_HIT_BOUNDARY);
+                CHECK(((hits.items[h].flags & PROJCURVE_HIT_TANGENT) != 0) == (d[2] == 0.0));
+            }
+        }
+        CHECK(at_pole == 1);
+        CHECK(at_other == 1);
+    }
     pc_hit_list_free(&hits);
     projcurve_surface_destroy(s);
 }
@@ -474,7 +512,9 @@ static void test_patch_subset(void)
 
 /* ---- real surfaces ---------------------------------------------------------------- */
 
-static void test_real(const char *file, size_t max_surfaces, int lines_per_surface)
+/* Random lines on the given surfaces of a real model (index list ends with
+ * -1); skipped when the model cannot be read (../shared absent). */
+static void test_real(const char *file, const int *indices, int lines_per_surface)
 {
     char rel[256];
     snprintf(rel, sizeof rel, "data/real/%s", file);
@@ -483,12 +523,19 @@ static void test_real(const char *file, size_t max_surfaces, int lines_per_surfa
         printf("%s: not readable, skipped\n", file);
         return;
     }
-    const size_t n = projcurve_model_surface_count(model);
-    for (size_t k = 0; k < n && k < max_surfaces; ++k) {
+    for (const int *k = indices; *k >= 0; ++k) {
+        const projcurve_surface *s = projcurve_model_surface(model, (size_t)*k);
+        CHECK(s != NULL);
+        if (s == NULL)
+            continue;
         char name[300];
-        snprintf(name, sizeof name, "%s surface %zu", file, k);
-        compare_random_lines(projcurve_model_surface(model, k), name, lines_per_surface, 160,
-                             71 + k);
+        int deg_u, deg_v, rational;
+        size_t spans_u, spans_v;
+        CHECK_OK(projcurve_surface_info(NULL, s, &deg_u, &deg_v, NULL, NULL, &spans_u, &spans_v,
+                                        &rational));
+        snprintf(name, sizeof name, "%s surface %d (degrees %d, %d; %zu x %zu spans%s)", file, *k,
+                 deg_u, deg_v, spans_u, spans_v, rational ? ", rational" : "");
+        compare_random_lines(s, name, lines_per_surface, 128, 71 + (unsigned long long)*k);
     }
     projcurve_model_destroy(model);
 }
@@ -502,7 +549,15 @@ int main(void)
     test_bumpy();
     test_folded();
     test_patch_subset();
-    test_real("sunglasses_lens.igs", 2, 3000);
-    test_real("test-joinsurf_01.stp", 2, 3000);
+    /* Bicubic scans and freeform patches; rational high degrees; mixed
+     * single-span degrees up to (8, 3); rational quadrics of a CAD part. */
+    static const int lens[] = {0, 1, -1}, joinsurf[] = {0, 1, -1};
+    static const int linkrods[] = {0, 1, 2, 5, -1}, bearing[] = {1, 51, 65, -1};
+    static const int hammer[] = {30, 39, 42, -1};
+    test_real("sunglasses_lens.igs", lens, 2500);
+    test_real("test-joinsurf_01.stp", joinsurf, 2500);
+    test_real("linkrods.step", linkrods, 600);
+    test_real("bearing.iges", bearing, 600);
+    test_real("hammer.iges", hammer, 600);
     return pc_test_finish("test_intersect");
 }

@@ -91,6 +91,9 @@ typedef struct dedup_tolerances {
 
 static int same_hit(const pc_hit *a, const pc_hit *b, const dedup_tolerances *tol)
 {
+    /* Poles: one point whatever the parameter along the collapsed edge. */
+    if ((a->flags & b->flags & PC_HIT_POLE) && fabs(a->lambda - b->lambda) <= tol->dlambda)
+        return 1;
     const int tangent = ((a->flags | b->flags) & PROJCURVE_HIT_TANGENT) != 0;
     const double du = tangent ? tol->du_tangent : tol->du;
     const double dv = tangent ? tol->dv_tangent : tol->dv;
