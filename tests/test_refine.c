@@ -123,10 +123,12 @@ static double greville(const double *knots, int p, int i)
     return s / p;
 }
 
-static int make_height_field(shape *sh)
+#define HF_MAX_CTRL 12
+
+/* Degree p in both directions, nu x nv control points (at most HF_MAX_CTRL). */
+static int make_height_field(shape *sh, int P, int NU, int NV, const char *name)
 {
-    enum { P = 3, NU = 9, NV = 7 };
-    double ku[NU + P + 1], kv[NV + P + 1], ctrl[3 * NU * NV];
+    double ku[HF_MAX_CTRL + 4], kv[HF_MAX_CTRL + 4], ctrl[3 * HF_MAX_CTRL * HF_MAX_CTRL];
     uniform_knots(P, NU, ku);
     uniform_knots(P, NV, kv);
     pc_test_rng rng;
@@ -139,7 +141,7 @@ static int make_height_field(shape *sh)
             c[2] = pc_test_rng_uniform(&rng, -1.5, 1.5);
         }
     memset(sh, 0, sizeof *sh);
-    sh->name = "bicubic height field";
+    sh->name = name;
     sh->t0 = 0.0;
     sh->t1 = 1.0;
     sh->exact = hf_exact;
@@ -511,10 +513,77 @@ static void test_degenerate_branches(shape *sh)
     projcurve_result_destroy(r4);
 }
 
+/* One-sided exact tangent of the height-field projection at t on the patch
+ * holding the piece: the patch's own derivatives (a degree-1 surface has a
+ * crease on every knot line). */
+static pc_vec3 hf_side_tangent(const shape *sh, const pc_piece *pc, double t)
+{
+    double xy[2], d1[2], d2[2];
+    hf_curve_xy(t, xy, d1, d2);
+    const pc_patch_grid *g = &sh->surface->grid;
+    const size_t k = pc_patch_grid_locate(g, 0.5 * (pc->uv[0] + pc->uv[2]),
+                                          0.5 * (pc->uv[1] + pc->uv[3]));
+    pc_vec3 d[3];
+    pc_bezier_patch_eval(&g->patches[k], xy[0] / HF_X, xy[1] / HF_Y, 1, d);
+    return vec3_add(vec3_scale(d[1], d1[0] / HF_X), vec3_scale(d[2], d1[1] / HF_Y));
+}
+
+static double angle_deg_between(pc_vec3 a, pc_vec3 b)
+{
+    return atan2(vec3_norm(vec3_cross(a, b)), vec3_dot(a, b)) * 180.0 / PI;
+}
+
+/* A degree-1 height field: S is only C0 on its knot lines, so the exact
+ * projection has a corner wherever it crosses one. The refinement must keep
+ * those corners (no endless splitting), meet eps_D, and hold every joint to
+ * eps_T beyond the exact curve's own corner there. */
+static void test_creased_surface(void)
+{
+    shape sh;
+    CHECK(make_height_field(&sh, 1, 7, 6, "degree-1 height field"));
+    pc_oracle_dir d;
+    pc_projector proj;
+    make_projector(&sh, &d, &proj);
+    static const double angles[] = {10.0, 1.0};
+    for (size_t a = 0; a < 2; ++a) {
+        struct projcurve_options o;
+        pc_options_defaults(&o);
+        o.tol_distance = 1e-4 * sh.surface->size;
+        o.tol_angle_deg = angles[a];
+        projcurve_result *r = traced_result(&sh, sh.t0, sh.t1, 41);
+        CHECK_OK(pc_refine_and_compose(NULL, &proj, &o, r));
+        const pc_branch *b = &r->branches[0];
+        CHECK(b->n_pieces > 0 && b->n_pieces < 1000);
+        if (b->n_pieces > 0) {
+            const pc_oracle_measure m = measure_branch(&sh, b);
+            CHECK(m.hausdorff <= o.tol_distance);
+            CHECK(m.off_patch == 0);
+            double worst_excess = 0.0;
+            for (size_t i = 1; i < b->n_pieces; ++i) {
+                const pc_piece *pv = &b->pieces[i - 1], *pc = &b->pieces[i];
+                const int n = pv->degree;
+                const pc_vec3 t_end = vec3_sub(vec3_load(pv->ctrl + 3 * n),
+                                               vec3_load(pv->ctrl + 3 * (n - 1)));
+                const pc_vec3 t_start = vec3_sub(vec3_load(pc->ctrl + 3), vec3_load(pc->ctrl));
+                const double corner = angle_deg_between(hf_side_tangent(&sh, pv, pc->t0),
+                                                        hf_side_tangent(&sh, pc, pc->t0));
+                worst_excess = fmax(worst_excess, angle_deg_between(t_end, t_start) - corner);
+            }
+            printf("%s: eps_T %4.1f deg: %zu pieces, joints exceed the exact corners by <= %.3f "
+                   "deg\n",
+                   sh.name, angles[a], b->n_pieces, worst_excess);
+            CHECK(worst_excess <= angles[a] * (1.0 + 1e-9));
+        }
+        projcurve_result_destroy(r);
+    }
+    free_shape(&sh);
+}
+
 int main(void)
 {
     shape shapes[2];
-    if (!make_height_field(&shapes[0]) || !make_cylinder(&shapes[1]))
+    if (!make_height_field(&shapes[0], 3, 9, 7, "bicubic height field") ||
+        !make_cylinder(&shapes[1]))
         pc_test_skip("surface or curve creation is not available");
     for (int k = 0; k < 2; ++k) {
         test_tolerances(&shapes[k]);
@@ -526,6 +595,7 @@ int main(void)
     test_failing_corrector(&shapes[0]);
     test_failing_corrector(&shapes[1]);
     test_degenerate_branches(&shapes[0]);
+    test_creased_surface();
     for (int k = 0; k < 2; ++k)
         free_shape(&shapes[k]);
     return pc_test_finish("test_refine");

@@ -8,6 +8,7 @@
 
 #include "check.h"
 #include "trace_oracle.h"
+#include "shapes.h"
 #include "trace_shapes.h"
 
 /* Samples of the brute-force oracle (the issue asks for 10,000). */
@@ -174,10 +175,32 @@ static void test_sphere(void)
     projcurve_surface_destroy(s);
 }
 
+/* A rational bumpy bicubic (weights in [0.5, 2]) seen along a slanted
+ * direction: brute force is the only oracle. */
+static void test_rational_bumpy(void)
+{
+    pc_shape_surface arrays = pc_shape_bumpy(2024, 5, 5, 0.15, 1);
+    projcurve_surface *s = pc_shape_surface_create(&arrays);
+    pc_shape_surface_free(&arrays);
+    const double pts[15] = {0.1, 0.2, 1, 0.3, 0.8, 1.2, 0.5, 0.3, 0.9, 0.7, 0.9, 1.1, 0.85, 0.6, 1};
+    projcurve_curve *c = shape_bspline_curve(3, 5, pts);
+    const double d[3] = {0.05, 0.02, -1};
+    CHECK(s != NULL && c != NULL);
+    projcurve_status st;
+    projcurve_result *r = project(s, c, d, &st);
+    CHECK_OK(st);
+    CHECK(projcurve_result_branch_count(r) == 1);
+    check_oracle("rational bumpy", s, c, d, r);
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+}
+
 int main(void)
 {
     test_plane();
     test_cylinder();
     test_sphere();
+    test_rational_bumpy();
     return pc_test_finish("test_trace_shapes");
 }

@@ -137,8 +137,8 @@ projcurve_status pc_iges_params_of(const pc_iges_file *f, size_t de, pc_iges_par
     const pc_iges_entry *e = pc_iges_entry_at(f, (long)de, de);
     if (e == NULL)
         return PROJCURVE_ERR_PARSE;
-    char *s;
-    size_t len;
+    char *s = NULL;
+    size_t len = 0;
     projcurve_status st = gather(f, de, e, &s, &len);
     if (st != PROJCURVE_OK)
         return st;

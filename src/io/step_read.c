@@ -79,7 +79,7 @@ static projcurve_status numbers(const reader *r, const pc_step_instance *at,
 static projcurve_status point(const reader *r, const pc_step_instance *from,
                               const pc_step_node *ref, double p[3], size_t *dim)
 {
-    located loc;
+    located loc = {NULL, NULL};
     projcurve_status st = resolve(r, from, ref, &loc);
     if (st != PROJCURVE_OK)
         return st;
@@ -95,7 +95,7 @@ static projcurve_status point(const reader *r, const pc_step_instance *from,
 static projcurve_status direction(const reader *r, const pc_step_instance *from,
                                   const pc_step_node *ref, const char *type, double d[3])
 {
-    located loc;
+    located loc = {NULL, NULL};
     projcurve_status st = resolve(r, from, ref, &loc);
     if (st != PROJCURVE_OK)
         return st;
@@ -119,7 +119,7 @@ static projcurve_status placement(const reader *r, const pc_step_instance *from,
                                   const pc_step_node *ref, double o[3], double x[3], double y[3],
                                   const char **skip)
 {
-    located loc;
+    located loc = {NULL, NULL};
     projcurve_status st = resolve(r, from, ref, &loc);
     if (st != PROJCURVE_OK)
         return st;
@@ -127,7 +127,7 @@ static projcurve_status placement(const reader *r, const pc_step_instance *from,
         *skip = "placed in 2D (a parameter-space curve)";
         return PROJCURVE_OK;
     }
-    size_t dim;
+    size_t dim = 0;
     if ((st = point(r, loc.inst, pc_step_child(loc.node, 1), o, &dim)) != PROJCURVE_OK)
         return st;
     double z[3] = {0.0, 0.0, 1.0}, xr[3] = {1.0, 0.0, 0.0};
@@ -328,7 +328,7 @@ static projcurve_status control_net(const reader *r, const pc_step_instance *at,
         size_t j = 0;
         for (const pc_step_node *c = first; c != NULL && j < n[1]; c = (b->dim == 2) ? c->next : NULL, ++j) {
             const size_t idx = j * n[0] + i;
-            size_t dim;
+            size_t dim = 0;
             projcurve_status st = point(r, at, c, *ctrl + 3 * idx, &dim);
             if (st != PROJCURVE_OK)
                 return st;
@@ -349,7 +349,7 @@ static projcurve_status control_net(const reader *r, const pc_step_instance *at,
 static projcurve_status bspline_curve(const reader *r, const pc_step_instance *at,
                                       const bspline_nodes *b, pc_io_curve *out, const char **skip)
 {
-    size_t n[2];
+    size_t n[2] = {0, 0};
     int planar = 0;
     projcurve_status st = degree_of(r, at, b->degree[0], &out->degree);
     if (st == PROJCURVE_OK)
@@ -366,7 +366,7 @@ static projcurve_status bspline_surface(const reader *r, const pc_step_instance 
                                         const bspline_nodes *b, pc_io_surface *out,
                                         const char **skip)
 {
-    size_t n[2];
+    size_t n[2] = {0, 0};
     int planar = 0;
     projcurve_status st;
     if ((st = degree_of(r, at, b->degree[0], &out->deg_u)) != PROJCURVE_OK ||
@@ -410,11 +410,11 @@ static projcurve_status full_circle(const reader *r, const located *c, pc_io_cur
 /* LINE('', pnt, VECTOR('', DIRECTION, magnitude)): P(t) = pnt + t m d. */
 static projcurve_status line_frame(const reader *r, const located *l, double o[3], double v[3])
 {
-    size_t dim;
+    size_t dim = 0;
     projcurve_status st = point(r, l->inst, pc_step_child(l->node, 1), o, &dim);
     if (st != PROJCURVE_OK)
         return st;
-    located vec;
+    located vec = {NULL, NULL};
     if ((st = resolve(r, l->inst, pc_step_child(l->node, 2), &vec)) != PROJCURVE_OK)
         return st;
     const pc_step_node *mag = pc_step_child(vec.node, 2);
@@ -440,7 +440,7 @@ static projcurve_status trim_of(const reader *r, const pc_step_instance *at,
             *has_param = 1;
             *t = c->first->number;
         } else if (c->kind == PC_STEP_REF) {
-            size_t dim;
+            size_t dim = 0;
             projcurve_status st = point(r, at, c, p, &dim);
             if (st != PROJCURVE_OK)
                 return st;
@@ -481,7 +481,7 @@ static void reverse_curve(pc_io_curve *c)
 static projcurve_status trimmed_curve(const reader *r, const located *tc, pc_io_curve *out,
                                       const char **skip)
 {
-    located basis;
+    located basis = {NULL, NULL};
     projcurve_status st = resolve(r, tc->inst, pc_step_child(tc->node, 1), &basis);
     if (st != PROJCURVE_OK)
         return st;

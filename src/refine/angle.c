@@ -6,7 +6,8 @@
  * piece is halved; so at a joint that fails, the side that deviates more from
  * the exact tangent is split at its middle (the halves go through the knot
  * line and Hausdorff control again), and the passes repeat until every joint
- * is within eps_T.
+ * is within eps_T. A joint on a crease of S (the one-sided exact tangents
+ * differ by more than eps_T) is a corner of the exact projection: left alone.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -57,18 +58,6 @@ static double cos_angle(pc_vec3 a, pc_vec3 b)
     return vec3_dot(a, b) / (na * nb);
 }
 
-/* Exact tangent of the projection at vertex v, oriented along the list
- * (sign = direction of t along it); zero if unavailable. */
-static pc_vec3 exact_tangent(pc_refiner *r, const pc_rvertex *v, double sign)
-{
-    pc_proj_point pt;
-    if (!r->proj->derivatives(r->proj, v->t, v->u, v->v, &pt))
-        return vec3(0.0, 0.0, 0.0);
-    pc_vec3 d[3];
-    pc_nurbs_surface_eval(r->nurbs, v->u, v->v, 1, &r->hint_u, &r->hint_v, d);
-    return vec3_scale(vec3_add(vec3_scale(d[1], pt.du), vec3_scale(d[2], pt.dv)), sign);
-}
-
 /* Marks (split[i] = 1) the segments to halve in this pass; returns how many. */
 static size_t mark_joints(pc_refiner *r, const pc_vertex_list *list, unsigned char *split)
 {
@@ -82,12 +71,17 @@ static size_t mark_joints(pc_refiner *r, const pc_vertex_list *list, unsigned ch
         end_tangents(r, &v[j], &v[j + 1], &t0, &t1);
         split[j] = 0;
         if (cos_angle(prev_t1, t0) < r->cos_eps_t) {
-            const double sign = v[j + 1].t >= v[j - 1].t ? 1.0 : -1.0;
-            const pc_vec3 exact = exact_tangent(r, &v[j], sign);
+            const pc_vec3 exact_in = pc_refine_exact_tangent(r, &v[j], &v[j - 1]);
+            const pc_vec3 exact = pc_refine_exact_tangent(r, &v[j], &v[j + 1]);
+            /* a crease of S: the exact curve turns here itself */
+            if (cos_angle(exact_in, exact) < r->cos_eps_t) {
+                prev_t1 = t1;
+                continue;
+            }
             const int left_ok = fabs(v[j].t - v[j - 1].t) > r->min_dt;
             const int right_ok = fabs(v[j + 1].t - v[j].t) > r->min_dt;
             /* the side that turns away more from the exact tangent */
-            const int left = cos_angle(prev_t1, exact) <= cos_angle(t0, exact);
+            const int left = cos_angle(prev_t1, exact_in) <= cos_angle(t0, exact);
             if (left && left_ok)
                 split[j - 1] = 1;
             else if (right_ok)

@@ -70,6 +70,17 @@ const pc_bezier_patch *pc_refine_common_patch(const pc_refiner *r, const pc_rver
     return pc_patch_grid_at(g, iu, iv);
 }
 
+int pc_refine_on_knot_line(const pc_refiner *r, const pc_rvertex *v)
+{
+    const pc_patch_grid *g = r->grid;
+    size_t lo, hi;
+    cell_range(g->breaks_u, g->spans_u, v->u, &lo, &hi);
+    if (lo != hi)
+        return 1;
+    cell_range(g->breaks_v, g->spans_v, v->v, &lo, &hi);
+    return lo != hi;
+}
+
 /* Root of coord(t) = line on the projection between a and b (coordinate 0 =
  * u, 1 = v), which bracket it; regula falsi, Illinois variant. */
 static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int coord,

@@ -15,7 +15,10 @@
  *
  * Runs go from one fixed vertex (branch end or knot-line crossing of the
  * traced polyline) to the next; a candidate whose chord leaves the patch is
- * cut at the exact knot-line crossing.
+ * cut at the exact knot-line crossing. At a knot line S may have a crease
+ * (C0 knots, e.g. every knot of a degree-1 surface): the exact projection
+ * then has a corner there, so each piece is held to the exact tangent on its
+ * own side, and that joint keeps the corner of the exact curve.
  */
 #include <math.h>
 
@@ -29,9 +32,15 @@
  * the corrector can follow; the bound only guarantees termination. */
 #define PC_MARCH_MAX_REJECTIONS 60
 
+/* One-sided tangents by differences: the step, as a fraction of the
+ * branch's t range (and at most a quarter of the segment). The angle error
+ * is about curvature x step, the rounding error newton_tol / step: both far
+ * below any eps_T at this size. */
+#define PC_SIDE_STEP_REL 1e-6
+
 /* Tangent of the exact projection at v, along increasing t (zero if the
  * projector cannot give it, e.g. at a fold: then no angle bound there). */
-static pc_vec3 exact_tangent(pc_refiner *r, const pc_rvertex *v)
+static pc_vec3 derivative_tangent(pc_refiner *r, const pc_rvertex *v)
 {
     pc_proj_point pt;
     if (!r->proj->derivatives(r->proj, v->t, v->u, v->v, &pt))
@@ -39,6 +48,22 @@ static pc_vec3 exact_tangent(pc_refiner *r, const pc_rvertex *v)
     pc_vec3 d[3];
     pc_nurbs_surface_eval(r->nurbs, v->u, v->v, 1, &r->hint_u, &r->hint_v, d);
     return vec3_add(vec3_scale(d[1], pt.du), vec3_scale(d[2], pt.dv));
+}
+
+pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other)
+{
+    if (!pc_refine_on_knot_line(r, v) || other->t == v->t)
+        return derivative_tangent(r, v);
+    double step = PC_SIDE_STEP_REL * r->t_range;
+    if (step > 0.25 * fabs(other->t - v->t))
+        step = 0.25 * fabs(other->t - v->t);
+    const double sign = other->t > v->t ? 1.0 : -1.0;
+    pc_rvertex w;
+    if (!(step > 0.0) || !pc_refine_exact_point(r, v, other, v->t + sign * step, &w))
+        return derivative_tangent(r, v);
+    const pc_vec3 d = vec3_sub(pc_refine_surface_point(r, w.u, w.v),
+                               pc_refine_surface_point(r, v->u, v->v));
+    return vec3_scale(d, sign);
 }
 
 /* Angle between a and b in radians; 0 when either has no direction. */
@@ -50,14 +75,24 @@ static double angle_between(pc_vec3 a, pc_vec3 b)
     return atan2(vec3_norm(vec3_cross(a, b)), vec3_dot(a, b));
 }
 
+/* End tangent directions of a rational Bezier curve: the derivative of
+ * A / w at an end is (A' - w' C) / w with A' = n (cw_1 - cw_0); only its
+ * direction is needed, so the positive factors are dropped. */
+static pc_vec3 end_direction(const double *end, const double *next)
+{
+    const double w = end[3];
+    const pc_vec3 c = vec3(end[0] / w, end[1] / w, end[2] / w);
+    const pc_vec3 d = vec3(next[0] - end[0], next[1] - end[1], next[2] - end[2]);
+    return vec3_axpy(d, -(next[3] - end[3]), c);
+}
+
 /* The larger angle between the composed curve's end tangents and the exact
  * tangents t0 (start) and t1 (end). */
 static double end_angle(int n, const double *cw, pc_vec3 t0, pc_vec3 t1)
 {
-    pc_vec3 c0[3], c1[3];
-    pc_piece_eval(n, cw, 0.0, c0);
-    pc_piece_eval(n, cw, 1.0, c1);
-    const double a0 = angle_between(c0[1], t0), a1 = angle_between(c1[1], t1);
+    const pc_vec3 c0 = end_direction(cw, cw + 4);
+    const pc_vec3 c1 = vec3_scale(end_direction(cw + 4 * n, cw + 4 * (n - 1)), -1.0);
+    const double a0 = angle_between(c0, t0), a1 = angle_between(c1, t1);
     return a0 > a1 ? a0 : a1;
 }
 
@@ -103,7 +138,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
                                  pc_vertex_list *out)
 {
     pc_rvertex cur = *a;
-    pc_vec3 t_cur = exact_tangent(r, &cur);
+    pc_vec3 t_cur = pc_refine_exact_tangent(r, &cur, b);
     double h = r->step > 0.0 ? r->step : b->t - a->t;
     int rejections = 0;
     while (cur.t < b->t) {
@@ -119,7 +154,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
         const pc_bezier_patch *patch = pc_refine_common_patch(r, &cur, &cand);
         const double hh = cand.t - cur.t;
         double ratio_d = 0.0, ratio_a = 0.0, t_far;
-        pc_vec3 t_cand = exact_tangent(r, &cand);
+        const pc_vec3 t_cand = pc_refine_exact_tangent(r, &cand, &cur);
         if (patch != NULL) { /* the cheap angle test first */
             double cw[PC_PIECE_MAX_CW];
             const int n = pc_refine_compose(patch, &cur, &cand, cw);
@@ -143,8 +178,11 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
         if (st != PROJCURVE_OK)
             return st;
         h = hh * f > h || hh >= h ? hh * f : h;
+        /* the start tangent of the next piece: the other side at a knot line */
+        t_cur = cand.t < b->t && pc_refine_on_knot_line(r, &cand)
+                    ? pc_refine_exact_tangent(r, &cand, b)
+                    : t_cand;
         cur = cand;
-        t_cur = t_cand;
         rejections = 0;
     }
     r->step = h;

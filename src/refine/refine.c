@@ -101,7 +101,8 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
         return st;
     const pc_rvertex *tv = l->traced.items;
     const size_t nt = l->traced.count;
-    r->min_dt = PC_REFINE_MIN_DT_REL * (tv[nt - 1].t - tv[0].t);
+    r->t_range = tv[nt - 1].t - tv[0].t;
+    r->min_dt = PC_REFINE_MIN_DT_REL * r->t_range;
     /* 1. knot-line crossings: an intermediate list, outside the piece budget */
     const size_t budget = r->max_vertices;
     r->max_vertices = SIZE_MAX;

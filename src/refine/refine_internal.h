@@ -49,6 +49,7 @@ typedef struct pc_refiner {
     double step;         /* the march's current parameter step (0 = none yet) */
     size_t forced;       /* segments the march accepted without meeting the bounds */
     double min_dt;       /* parameter intervals below this are not split */
+    double t_range;      /* the branch's parameter range */
     double min_move;     /* uv step below which a knot crossing is converged */
     double snap;         /* a crossing this close (u, v) to a patch corner is put on it */
     /* The traced polyline (ascending t, knot crossings included): bracketing
@@ -83,6 +84,8 @@ pc_vec3 pc_refine_surface_point(pc_refiner *r, double u, double v);
  * whole segment lies in it), or NULL. */
 const pc_bezier_patch *pc_refine_common_patch(const pc_refiner *r, const pc_rvertex *a,
                                               const pc_rvertex *b);
+/* 1 when v lies on an inner knot line (then S may have a crease there). */
+int pc_refine_on_knot_line(const pc_refiner *r, const pc_rvertex *v);
 /* For a segment with no common patch: the vertex where the projection meets
  * the first knot line crossed by the chord a-b, lying exactly on that line.
  * When the corrector cannot give it (or `exact` is 0), the chord's own
@@ -108,6 +111,12 @@ double pc_refine_deviation(pc_refiner *r, int n, const double *cw, const pc_rver
  * `hausdorff` is set, is within eps_D. Statuses: OK, LIMIT_REACHED, NO_MEMORY. */
 projcurve_status pc_refine_split(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
                                  int hausdorff, pc_vertex_list *out);
+
+/* march.c: tangent of the exact projection at v along increasing t, on the
+ * side of v towards `other` (an exact point on the same run): at a knot line
+ * of S, where the surface may have a crease, the one-sided tangent by a
+ * short difference; elsewhere q' from the projector. Zero if unavailable. */
+pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other);
 
 /* march.c: appends the vertices after a up to and including b (ascending t,
  * out's last vertex is a): every segment in one patch, within eps_D, and with

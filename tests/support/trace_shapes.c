@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "shapes.h"
 
 /* Largest control net built here. */
 #define SHAPE_MAX_CTRL 64
@@ -60,28 +61,10 @@ projcurve_surface *shape_half_cylinder(double r, double len)
 
 projcurve_surface *shape_sphere(double r)
 {
-    const double h = sqrt(0.5);
-    /* circle around z (u): 9 points, 4 quarters */
-    const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1};
-    const double cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
-    const double cw[9] = {1, h, 1, h, 1, h, 1, h, 1};
-    /* meridian (v): radius and height from the south pole to the north pole */
-    const double mr[5] = {0, 1, 1, 1, 0};
-    const double mz[5] = {-1, -1, 0, 1, 1};
-    const double mw[5] = {1, h, 1, h, 1};
-    double ctrl[3 * 45], w[45];
-    for (int j = 0; j < 5; ++j)
-        for (int i = 0; i < 9; ++i) {
-            const int at = j * 9 + i;
-            ctrl[3 * at + 0] = r * cx[i] * mr[j];
-            ctrl[3 * at + 1] = r * cy[i] * mr[j];
-            ctrl[3 * at + 2] = r * mz[j];
-            w[at] = cw[i] * mw[j];
-        }
-    const double ku[12] = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
-    const double kv[8] = {0, 0, 0, 0.5, 0.5, 1, 1, 1};
-    projcurve_surface *s = NULL;
-    projcurve_surface_create_nurbs(NULL, 2, 2, 9, 5, ctrl, w, ku, kv, &s);
+    const double centre[3] = {0, 0, 0};
+    pc_shape_surface arrays = pc_shape_sphere(centre, r);
+    projcurve_surface *s = pc_shape_surface_create(&arrays);
+    pc_shape_surface_free(&arrays);
     return s;
 }
 

@@ -21,9 +21,9 @@ projcurve_surface *shape_plane(const double o[3], const double a[3], const doubl
  * quadratic in u (two quarter circles, from x = r to x = -r), linear in v. */
 projcurve_surface *shape_half_cylinder(double r, double len);
 
-/* Sphere of radius r about the origin: rational biquadratic, u around the
- * z axis (full circle from +x, four quarters), v the meridian from the
- * south pole to the north pole (collapsed edges at v = 0 and v = 1). */
+/* Sphere of radius r about the origin (pc_shape_sphere of shapes.h): u
+ * around the z axis, v the meridian from the south pole to the north pole
+ * (collapsed edges at v = 0 and v = 1). */
 projcurve_surface *shape_sphere(double r);
 
 /* Seed 000 s5 Example 1: the degree 5 x 1 Bezier sheet and its cubic
