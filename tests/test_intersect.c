@@ -351,6 +351,74 @@ static void test_sphere(void)
     projcurve_surface_destroy(s);
 }
 
+/* A sphere far from the coordinates' origin: the tolerances follow the
+ * coordinates' rounding (ulps of 6e4), not only the model's size. */
+static void test_far_sphere(void)
+{
+    const double c[3] = {3e4, -5e4, 2e4}, r = 2.0;
+    const double magnitude = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    projcurve_surface *s = make_surface(pc_shape_sphere(c, r));
+    pc_hit_list hits = {0};
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 4);
+    for (int k = 0; k < 2000; ++k) {
+        double o[3], d[3];
+        for (int i = 0; i < 3; ++i)
+            o[i] = c[i] + pc_test_rng_uniform(&rng, -3, 3);
+        random_direction(&rng, d);
+        const double oc[3] = {o[0] - c[0], o[1] - c[1], o[2] - c[2]};
+        const double a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const double b = oc[0] * d[0] + oc[1] * d[1] + oc[2] * d[2];
+        const double e = oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2] - r * r;
+        const double disc = b * b - a * e;
+        if (fabs(disc) < 1e-3)
+            continue;
+        const size_t n = hits_of(s, o, d, 0, &hits);
+        CHECK(n == (disc > 0 ? 2u : 0u));
+        if (n == 2) {
+            /* o is known to ~1 ulp of 6e4, so lambda to ~1e-11 / |d|. */
+            const double q = -(b + copysign(sqrt(disc), b));
+            const double l1 = fmin(q / a, e / q), l2 = fmax(q / a, e / q);
+            CHECK_NEAR(hits.items[0].lambda, l1, 1e-14 * magnitude / sqrt(a));
+            CHECK_NEAR(hits.items[1].lambda, l2, 1e-14 * magnitude / sqrt(a));
+        }
+    }
+    /* Tangent lines: one hit, flagged. */
+    for (int k = 0; k < 200; ++k) {
+        double n[3], t[3];
+        random_direction(&rng, n);
+        random_direction(&rng, t);
+        const double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (int i = 0; i < 3; ++i)
+            n[i] /= nn;
+        const double tn = t[0] * n[0] + t[1] * n[1] + t[2] * n[2];
+        for (int i = 0; i < 3; ++i)
+            t[i] -= tn * n[i];
+        const double tt = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        if (tt < 1e-3)
+            continue;
+        for (int i = 0; i < 3; ++i)
+            t[i] /= tt;
+        const double o[3] = {c[0] + r * n[0] - t[0], c[1] + r * n[1] - t[1], c[2] + r * n[2] - t[2]};
+        const size_t count = hits_of(s, o, t, 0, &hits);
+        CHECK(count == 1);
+        if (count == 1) {
+            CHECK(hits.items[0].flags & PROJCURVE_HIT_TANGENT);
+            /* ~sqrt(rounding of 6e4 x the radius) along the line */
+            CHECK_NEAR(hits.items[0].lambda, 1.0, 1e-4);
+        } else {
+            printf("  far sphere tangent along (%.17g, %.17g, %.17g): %zu hits\n", t[0], t[1], t[2],
+                   count);
+            for (size_t h = 0; h < count; ++h)
+                printf("    u %.17g v %.17g lambda %.17g flags %u residual %.3g\n", hits.items[h].u,
+                       hits.items[h].v, hits.items[h].lambda, hits.items[h].flags,
+                       hits.items[h].residual);
+        }
+    }
+    pc_hit_list_free(&hits);
+    projcurve_surface_destroy(s);
+}
+
 /* ---- torus ------------------------------------------------------------------------ */
 
 static double torus_residual(const double p[3], double big_r, double small_r)
@@ -545,6 +613,7 @@ int main(void)
     test_bad_input();
     test_plane();
     test_sphere();
+    test_far_sphere();
     test_torus();
     test_bumpy();
     test_folded();

@@ -9,13 +9,15 @@
 #include "intersect/bezier_clip.h"
 #include "intersect/frame_net.h"
 
-/* A hit's distance to the line may be at most this fraction of the scale
- * given to pc_ray_frame_init (the size and position of the model): Newton
- * reaches ~1e-16 of it, and an exactly tangent line gives a least-squares
- * minimum at rounding level; a line that misses by less counts as tangent. */
+/* A hit's distance to the line may be at most this fraction of the model
+ * size, plus PC_HIT_ROUNDING_ULPS ulps of the coordinates' magnitude (where
+ * the model is and how far the origin is from it): Newton reaches ~1e-16
+ * of them, and an exactly tangent line gives a least-squares minimum at
+ * rounding level; a line that misses by less counts as tangent. */
 #define PC_HIT_RESIDUAL_REL 1e-12
+#define PC_HIT_ROUNDING_ULPS 64.0
 /* Control values in the ray frame carry rounding errors of a few ulps of
- * the coordinates' scale; clipping treats values this small as zero. */
+ * the coordinates' magnitude; clipping treats values this small as zero. */
 #define PC_CLIP_ZERO_REL (16.0 * DBL_EPSILON)
 /* |d . n| below this (n the unit normal) makes a hit a grazing one: there
  * the Jacobian of (d1, d2) is ~this small relative to |Su x Sv| and the
@@ -47,8 +49,8 @@
  * shrunk by this factor: a try costs about as much as a clipping round. */
 #define PC_NEWTON_RETRY_FACTOR 0.01
 
-void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double scale,
-                       int ray_only)
+void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double size,
+                       double magnitude, int ray_only)
 {
     const double norm = pc_vec3_length_robust(dir);
     frame->origin = origin;
@@ -60,8 +62,8 @@ void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double 
     frame->origin_e1 = vec3_dot(frame->e1, origin);
     frame->origin_e2 = vec3_dot(frame->e2, origin);
     frame->origin_d = vec3_dot(frame->d, origin);
-    frame->tol_residual = PC_HIT_RESIDUAL_REL * scale;
-    frame->tol_zero = PC_CLIP_ZERO_REL * scale;
+    frame->tol_residual = PC_HIT_RESIDUAL_REL * size + PC_HIT_ROUNDING_ULPS * DBL_EPSILON * magnitude;
+    frame->tol_zero = PC_CLIP_ZERO_REL * (size + magnitude);
     frame->ray_only = ray_only;
 }
 
