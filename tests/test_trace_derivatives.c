@@ -114,7 +114,10 @@ static void test_derivatives(void)
            "(3.3) as printed off by >= %.3g\n",
            worst1, worst2, worst_paper1, worst_paper2, best_printed);
     printf("cached vs fresh evaluation: %.3g\n", worst_cached);
-    CHECK(worst_cached <= 1e-7);
+    /* the corrector's last step moves the point by at most 1e-7 model sizes
+     * and keeps S's second derivatives from before it: q'' moves ~1e-7
+     * relative per unit of |S'''| / |S''| */
+    CHECK(worst_cached <= 1e-6);
     CHECK(worst1 <= TOL_D1);
     CHECK(worst2 <= TOL_D2);
     CHECK(worst_paper1 <= 1e-12);

@@ -75,14 +75,24 @@ static double angle_between(pc_vec3 a, pc_vec3 b)
     return atan2(vec3_norm(vec3_cross(a, b)), vec3_dot(a, b));
 }
 
+/* End tangent directions of a rational Bezier curve: the derivative of
+ * A / w at an end is (A' - w' C) / w with A' = n (cw_1 - cw_0); only its
+ * direction is needed, so the positive factors are dropped. */
+static pc_vec3 end_direction(const double *end, const double *next)
+{
+    const double w = end[3];
+    const pc_vec3 c = vec3(end[0] / w, end[1] / w, end[2] / w);
+    const pc_vec3 d = vec3(next[0] - end[0], next[1] - end[1], next[2] - end[2]);
+    return vec3_axpy(d, -(next[3] - end[3]), c);
+}
+
 /* The larger angle between the composed curve's end tangents and the exact
  * tangents t0 (start) and t1 (end). */
 static double end_angle(int n, const double *cw, pc_vec3 t0, pc_vec3 t1)
 {
-    pc_vec3 c0[3], c1[3];
-    pc_piece_eval(n, cw, 0.0, c0);
-    pc_piece_eval(n, cw, 1.0, c1);
-    const double a0 = angle_between(c0[1], t0), a1 = angle_between(c1[1], t1);
+    const pc_vec3 c0 = end_direction(cw, cw + 4);
+    const pc_vec3 c1 = vec3_scale(end_direction(cw + 4 * n, cw + 4 * (n - 1)), -1.0);
+    const double a0 = angle_between(c0, t0), a1 = angle_between(c1, t1);
     return a0 > a1 ? a0 : a1;
 }
 

@@ -16,6 +16,8 @@
 /* Smallest sweep step, as a fraction of the curve's domain; it bounds the
  * number of checks. */
 #define PC_SWEEP_MIN_FRACTION 1e-7
+/* Seeds closer than this fraction of the model size on S are one point. */
+#define PC_SEED_SAME 1e-9
 /* The sweep checks every this fraction of the arc-length step. */
 #define PC_SWEEP_STEP_FRACTION 0.5
 /* Largest arc-length step in t, as a multiple of the arc-step fraction of
@@ -214,6 +216,29 @@ static int continues_branch(const pc_tracer *tr, const pc_seed *p, double dt)
     return 0;
 }
 
+/* Removes the seeds that coincide on S with an earlier one: the same point
+ * of a closed surface's seam or of a collapsed edge found under two
+ * parameters is one point of the projection. */
+static void drop_coincident(const pc_tracer *tr, pc_seed_list *list)
+{
+    const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
+    const double same = PC_SEED_SAME * tr->proj->model_size;
+    size_t kept = 0;
+    for (size_t k = 0; k < list->count; ++k) {
+        pc_vec3 a;
+        pc_nurbs_surface_eval(s, list->items[k].u, list->items[k].v, 0, NULL, NULL, &a);
+        int duplicate = 0;
+        for (size_t i = 0; i < kept && !duplicate; ++i) {
+            pc_vec3 b;
+            pc_nurbs_surface_eval(s, list->items[i].u, list->items[i].v, 0, NULL, NULL, &b);
+            duplicate = vec3_dist(a, b) <= same;
+        }
+        if (!duplicate)
+            list->items[kept++] = list->items[k];
+    }
+    list->count = kept;
+}
+
 /* Seed 000 s3.4 over the whole curve. */
 static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
 {
@@ -237,6 +262,7 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
         st = finder->find(finder, tr->ctx, t, &found);
         if (st != PROJCURVE_OK)
             break;
+        drop_coincident(tr, &found);
         if (found.count > cap_matched) {
             unsigned char *m = realloc(matched, found.count);
             if (m == NULL) {
@@ -280,6 +306,7 @@ projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *p
     tracer_setup(&tr, ctx, proj, opts, config, r);
     pc_seed_list seeds = {0};
     projcurve_status st = finder->find(finder, ctx, tr.t_begin, &seeds);
+    drop_coincident(&tr, &seeds);
     for (size_t k = 0; k < seeds.count && st == PROJCURVE_OK && !tr.limit_hit; ++k)
         st = start_branch(&tr, &seeds.items[k], 0);
     pc_seed_list_free(&seeds);

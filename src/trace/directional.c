@@ -13,7 +13,7 @@
  * change of the second derivatives that shift_cache keeps, negligible)
  * when its image is below this fraction of the model size; the residual it
  * leaves behind must then be below this fraction of eps1 to stop. */
-#define PC_NEWTON_QUADRATIC_REGIME 1e-9
+#define PC_NEWTON_QUADRATIC_REGIME 1e-7
 #define PC_NEWTON_PREDICTED_SAFETY 0.25
 /* Newton diverges when its residual fails to decrease this many times. */
 #define PC_NEWTON_MAX_NON_DECREASE 3
@@ -21,6 +21,23 @@
 static const pc_directional_data *dir_data(const pc_projector *self)
 {
     return (const pc_directional_data *)self->data;
+}
+
+/* P, P', P'' at t into the cache unless it holds them. Returns 0 when the
+ * curve callback fails. */
+static int evaluate_curve(const pc_projector *self, double t)
+{
+    pc_directional_cache *c = dir_data(self)->cache;
+    if (c->curve_valid && c->t == t)
+        return 1;
+    c->curve_valid = 0;
+    if (pc_curve_eval(self->curve, t, 2, &c->hint_t, c->curve) != PROJCURVE_OK) {
+        c->callback_failed = 1;
+        return 0;
+    }
+    c->t = t;
+    c->curve_valid = 1;
+    return 1;
 }
 
 /* Evaluates S and P with derivatives up to order 2 at (u, v) and t into
@@ -35,16 +52,7 @@ static int evaluate(const pc_projector *self, double t, double u, double v)
         c->v = v;
         c->surf_valid = 1;
     }
-    if (!c->curve_valid || c->t != t) {
-        c->curve_valid = 0;
-        if (pc_curve_eval(self->curve, t, 2, &c->hint_t, c->curve) != PROJCURVE_OK) {
-            c->callback_failed = 1;
-            return 0;
-        }
-        c->t = t;
-        c->curve_valid = 1;
-    }
-    return 1;
+    return evaluate_curve(self, t);
 }
 
 /* After a last Newton step (du, dv) that the tests below accept, moves the
