@@ -41,7 +41,7 @@ static double brute_surface(const projcurve_surface *s, const double *p, double 
 {
     double dom[4];
     projcurve_surface_domain(NULL, s, dom);
-    const int n = 160;
+    const int n = 80;
     double best = INFINITY;
     for (int i = 0; i <= n; ++i)
         for (int j = 0; j <= n; ++j) {
@@ -107,7 +107,7 @@ static void test_sphere_and_torus(void)
     const double c[3] = {0.5, -1.0, 2.0}, R = 1.5;
     pc_shape_surface sh = pc_shape_sphere(c, R);
     projcurve_surface *s = pc_shape_surface_create(&sh);
-    for (int k = 0; k < 200; ++k) {
+    for (int k = 0; k < 60; ++k) {
         double p[3], uv[2], q[3], dist;
         for (int m = 0; m < 3; ++m)
             p[m] = c[m] + pc_test_rng_uniform(&rng, -3.0, 3.0);
@@ -154,7 +154,7 @@ static void test_sphere_and_torus(void)
     const double TR = 2.0, tr = 0.6;
     pc_shape_surface th = pc_shape_torus(TR, tr);
     projcurve_surface *t = pc_shape_surface_create(&th);
-    for (int k = 0; k < 200; ++k) {
+    for (int k = 0; k < 60; ++k) {
         double p[3], uv[2], q[3], dist;
         p[0] = pc_test_rng_uniform(&rng, -3.5, 3.5);
         p[1] = pc_test_rng_uniform(&rng, -3.5, 3.5);
@@ -251,7 +251,7 @@ static void test_random_surfaces(void)
     for (int rational = 0; rational <= 1; ++rational) {
         pc_shape_surface sh = pc_shape_bumpy(40 + (unsigned long long)rational, 5, 4, 0.3, rational);
         projcurve_surface *s = pc_shape_surface_create(&sh);
-        for (int k = 0; k < 40; ++k) {
+        for (int k = 0; k < 20; ++k) {
             double p[3] = {pc_test_rng_uniform(&rng, -0.3, 1.3), pc_test_rng_uniform(&rng, -0.3, 1.3),
                            pc_test_rng_uniform(&rng, -0.6, 0.6)};
             check_against_brute(s, p, rational ? "rational bumpy" : "bumpy");
@@ -289,7 +289,7 @@ static void test_feet_contain_local_minima(void)
     projcurve_surface *s = pc_shape_surface_create(&sh);
     pc_test_rng rng;
     pc_test_rng_seed(&rng, 8);
-    for (int k = 0; k < 10; ++k) {
+    for (int k = 0; k < 5; ++k) {
         const double p[3] = {pc_test_rng_uniform(&rng, 0.2, 0.8), pc_test_rng_uniform(&rng, 0.2, 0.8),
                              pc_test_rng_uniform(&rng, 0.05, 0.3)};
         double feet[200];
@@ -345,7 +345,7 @@ static double brute_curve(const projcurve_curve *c, const double *p, double *t_o
 {
     double t0, t1;
     projcurve_curve_domain(NULL, c, &t0, &t1);
-    const int n = 4000;
+    const int n = 2000;
     double best = INFINITY, bt = t0;
     for (int i = 0; i <= n; ++i) {
         double q[3];

@@ -59,6 +59,11 @@ int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_si
 double pc_surface_minimize(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
                            double uv[2]);
 
+/* The same along the iso-line through uv: only u (dir 0) or v (dir 1)
+ * moves. For minima on creases, where S is only C^0 across the line. */
+double pc_surface_minimize_along(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
+                                 double uv[2], int dir);
+
 /* Closest point of p on the curve (ends included): *t, *q, *dist.
  * Statuses: OK, CALLBACK (a callback failed), NO_MEMORY. */
 projcurve_status pc_curve_closest(projcurve_context *ctx, const projcurve_curve *c, pc_vec3 p,

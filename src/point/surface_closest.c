@@ -25,6 +25,9 @@
 #define CLOSEST_FLATNESS 0.05
 /* Newton starts stay this fraction of a sub-patch away from its edges. */
 #define START_MARGIN 0.02
+/* A minimiser result this close (relative to the domain) to a crease is
+ * finished on it. */
+#define CREASE_SNAP 1e-6
 
 typedef struct closest_search {
     const projcurve_surface *s;
@@ -62,10 +65,47 @@ static void nearest_control_param(const pc_subpatch *sp, int p_deg, int q_deg, p
     uv[1] = sp->v0 + (sp->v1 - sp->v0) * t;
 }
 
+/* Index of the crease break nearest to x within tol, or -1. */
+static long crease_near(const double *breaks, const unsigned char *crease, size_t spans, double x,
+                        double tol)
+{
+    for (size_t k = 0; k <= spans; ++k)
+        if (crease[k] && fabs(breaks[k] - x) <= tol)
+            return (long)k;
+    return -1;
+}
+
+/* The minimiser stalls on a crease (the kink stops Newton): finish the
+ * minimum along the crease line, with the crossing parameter held on it. */
+static double finish_on_crease(closest_search *cs, double uv[2], double d2)
+{
+    const pc_patch_grid *g = &cs->s->grid;
+    const double *dom = cs->s->nurbs.domain;
+    for (int dir = 0; dir < 2; ++dir) {
+        const double *breaks = dir == 0 ? g->breaks_u : g->breaks_v;
+        const unsigned char *crease = dir == 0 ? cs->crease_u : cs->crease_v;
+        const size_t spans = dir == 0 ? g->spans_u : g->spans_v;
+        const double tol = CREASE_SNAP * (dom[2 * dir + 1] - dom[2 * dir]);
+        const long k = crease_near(breaks, crease, spans, uv[dir], tol);
+        if (k < 0)
+            continue;
+        double on[2] = {uv[0], uv[1]};
+        on[dir] = breaks[k];
+        const double e2 = pc_surface_minimize_along(&cs->s->nurbs, cs->p, cs->s->size, on, 1 - dir);
+        if (e2 <= d2) {
+            uv[0] = on[0];
+            uv[1] = on[1];
+            d2 = e2;
+        }
+    }
+    return d2;
+}
+
 static void try_start(closest_search *cs, const double start[2])
 {
     double uv[2] = {start[0], start[1]};
-    const double d2 = pc_surface_minimize(&cs->s->nurbs, cs->p, cs->s->size, uv);
+    double d2 = pc_surface_minimize(&cs->s->nurbs, cs->p, cs->s->size, uv);
+    d2 = finish_on_crease(cs, uv, d2);
     if (d2 < cs->best_d2) {
         cs->best_d2 = d2;
         cs->best.u = uv[0];

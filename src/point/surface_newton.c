@@ -123,8 +123,8 @@ static void descent_direction(const local_frame *f, const int free_dir[2], doubl
         delta[k] = -f->g[k] / curv;
 }
 
-double pc_surface_minimize(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
-                           double uv[2])
+static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
+                              double uv[2], const int movable[2])
 {
     const double *dom = s->domain;
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
@@ -134,8 +134,8 @@ double pc_surface_minimize(const pc_nurbs_surface *s, pc_vec3 p, double model_si
     for (int it = 0; it < MIN_MAX_ITER; ++it) {
         /* Active set: a coordinate on its bound whose gradient pushes out. */
         const int free_dir[2] = {
-            !((x[0] <= dom[0] && f.g[0] > 0.0) || (x[0] >= dom[1] && f.g[0] < 0.0)),
-            !((x[1] <= dom[2] && f.g[1] > 0.0) || (x[1] >= dom[3] && f.g[1] < 0.0))};
+            movable[0] && !((x[0] <= dom[0] && f.g[0] > 0.0) || (x[0] >= dom[1] && f.g[0] < 0.0)),
+            movable[1] && !((x[1] <= dom[2] && f.g[1] > 0.0) || (x[1] >= dom[3] && f.g[1] < 0.0))};
         if (!free_dir[0] && !free_dir[1])
             break;
         double delta[2];
@@ -176,4 +176,18 @@ double pc_surface_minimize(const pc_nurbs_surface *s, pc_vec3 p, double model_si
     uv[0] = x[0];
     uv[1] = x[1];
     return d2;
+}
+
+double pc_surface_minimize(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
+                           double uv[2])
+{
+    static const int both[2] = {1, 1};
+    return minimize_masked(s, p, model_size, uv, both);
+}
+
+double pc_surface_minimize_along(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
+                                 double uv[2], int dir)
+{
+    const int movable[2] = {dir == 0, dir == 1};
+    return minimize_masked(s, p, model_size, uv, movable);
 }
