@@ -151,9 +151,9 @@ static inline double diff2(const double *a, const double *b)
     return x * x + y * y;
 }
 
-void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, double *jac_max)
+static PC_ALWAYS_INLINE void jacobian_bounds(const pc_frame_net *net, int m, int n,
+                                            double *lipschitz, double *jac_max)
 {
-    const int m = net->deg_u, n = net->deg_v;
     const size_t row = (size_t)(m + 1);
     /* Largest squared first differences (s, t) and second differences (ss,
      * st, tt) of the (X, Y) net, in one pass. */
@@ -187,6 +187,17 @@ void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, do
     *lipschitz = sqrt(qss * qss + 2.0 * qst * qst + qtt * qtt);
     const double qs = m * sqrt(s1), qt = n * sqrt(t1);
     *jac_max = sqrt(qs * qs + qt * qt);
+}
+
+void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, double *jac_max)
+{
+    const int m = net->deg_u, n = net->deg_v;
+    if (m == 3 && n == 3)
+        jacobian_bounds(net, 3, 3, lipschitz, jac_max);
+    else if (m == 2 && n == 2)
+        jacobian_bounds(net, 2, 2, lipschitz, jac_max);
+    else
+        jacobian_bounds(net, m, n, lipschitz, jac_max);
 }
 
 /* Whether the n + 1 control points from q with the given stride (in
