@@ -216,6 +216,21 @@ static int edge_is_pole_on_line(const double *q, size_t stride, int n, double to
     return 1;
 }
 
+/* Whether the np control points coincide within tol. */
+int pc_frame_net_is_point(const pc_frame_net *net, double tol)
+{
+    const size_t np = (size_t)(net->deg_u + 1) * (size_t)(net->deg_v + 1);
+    const double *q = net->q;
+    const double x0 = q[0] / q[3], y0 = q[1] / q[3], z0 = q[2] / q[3];
+    for (size_t k = 1; k < np; ++k) {
+        const double *p = q + 4 * k;
+        const double dx = p[0] / p[3] - x0, dy = p[1] / p[3] - y0, dz = p[2] / p[3] - z0;
+        if (!(sqrt(dx * dx + dy * dy + dz * dz) <= tol))
+            return 0;
+    }
+    return 1;
+}
+
 unsigned pc_frame_net_poles_on_line(const pc_frame_net *net, double tol)
 {
     const int m = net->deg_u, n = net->deg_v;
