@@ -178,6 +178,38 @@ void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, do
     *jac_max = sqrt(qs * qs + qt * qt);
 }
 
+/* Whether the n + 1 control points from q with the given stride (in
+ * points) coincide within tol at a point within tol of the line. */
+static int edge_is_pole_on_line(const double *q, size_t stride, int n, double tol)
+{
+    const double x0 = q[0] / q[3], y0 = q[1] / q[3], z0 = q[2] / q[3];
+    if (!(sqrt(x0 * x0 + y0 * y0) <= tol))
+        return 0;
+    for (int k = 1; k <= n; ++k) {
+        const double *p = q + 4 * (size_t)k * stride;
+        const double dx = p[0] / p[3] - x0, dy = p[1] / p[3] - y0, dz = p[2] / p[3] - z0;
+        if (!(sqrt(dx * dx + dy * dy + dz * dz) <= tol))
+            return 0;
+    }
+    return 1;
+}
+
+unsigned pc_frame_net_poles_on_line(const pc_frame_net *net, double tol)
+{
+    const int m = net->deg_u, n = net->deg_v;
+    const size_t row = (size_t)(m + 1);
+    unsigned sides = 0;
+    if (edge_is_pole_on_line(net->q, 1, m, tol))
+        sides |= 1u;
+    if (edge_is_pole_on_line(net->q + 4 * (size_t)n * row, 1, m, tol))
+        sides |= 2u;
+    if (edge_is_pole_on_line(net->q, row, n, tol))
+        sides |= 4u;
+    if (edge_is_pole_on_line(net->q + 4 * (size_t)m, row, n, tol))
+        sides |= 8u;
+    return sides;
+}
+
 int pc_frame_net_newton(const pc_frame_net *net, double s, double t, pc_frame_root *out)
 {
     int converged = 0;

@@ -2,7 +2,8 @@
  * Test oracles for projection results, independent of the library's
  * refinement code:
  *  - a directional projector written from DESIGN.md's equations (Newton on
- *    [e1.(S - P); e2.(S - P)] = 0 through the public evaluation API);
+ *    [e1.(S - P); e2.(S - P)] = 0 through the public evaluation API), and an
+ *    orthogonal one (Newton on [(S - P).Su; (S - P).Sv] = 0);
  *  - measurements of a branch's composed pieces against an exact projection
  *    curve given point by point: the Hausdorff distance both ways on dense
  *    samples (each output sample projected onto the exact curve by Newton on
@@ -24,6 +25,10 @@ typedef struct pc_oracle_dir {
  * d must outlive proj. */
 void pc_oracle_projector(const projcurve_surface *s, const projcurve_curve *c, const double dir[3],
                          pc_oracle_dir *d, pc_projector *proj);
+
+/* An orthogonal projector (foot points of P(t) on S; only q' is given). */
+void pc_oracle_projector_orthogonal(const projcurve_surface *s, const projcurve_curve *c,
+                                    pc_projector *proj);
 
 /* The exact projection curve at t: q[0] = Q(t), q[1] = Q'(t), q[2] = Q''(t)
  * (q[2] may be left zero: Newton then runs as Gauss-Newton). */
