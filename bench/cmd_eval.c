@@ -13,6 +13,7 @@
 #include "json.h"
 #include "naive_eval.h"
 #include "shapes.h"
+#include "svg.h"
 
 #define EVAL_SPANS 16
 #define EVAL_POINTS 4096        /* (u, v) samples cycled through */
@@ -28,7 +29,10 @@ typedef struct eval_bench {
     double *uv;      /* 2 * EVAL_POINTS */
     double *query;   /* 3 * CLOSEST_POINTS */
     size_t next;     /* position in the cycle */
+    int n_deriv;     /* derivative order asked of the library (work_*) */
 } eval_bench;
+
+#define MAX_ORDER 2
 
 static int work_internal(void *user, size_t n)
 {
@@ -39,8 +43,8 @@ static int work_internal(void *user, size_t n)
     for (size_t i = 0; i < n; ++i) {
         const double *uv = &b->uv[2 * (b->next++ % EVAL_POINTS)];
         pc_vec3 out[6];
-        pc_nurbs_surface_eval(s, uv[0], uv[1], 2, &hint_u, &hint_v, out);
-        acc += out[5].z;
+        pc_nurbs_surface_eval(s, uv[0], uv[1], b->n_deriv, &hint_u, &hint_v, out);
+        acc += out[0].z;
     }
     pcb_consume(acc);
     return 0;
@@ -53,9 +57,10 @@ static int work_public(void *user, size_t n)
     for (size_t i = 0; i < n; ++i) {
         const double *uv = &b->uv[2 * (b->next++ % EVAL_POINTS)];
         double out[18];
-        if (projcurve_surface_eval(NULL, b->surface, uv[0], uv[1], 2, out) != PROJCURVE_OK)
+        if (projcurve_surface_eval(NULL, b->surface, uv[0], uv[1], b->n_deriv, out) !=
+            PROJCURVE_OK)
             return 1;
-        acc += out[17];
+        acc += out[2];
     }
     pcb_consume(acc);
     return 0;
@@ -120,8 +125,25 @@ static void make_queries(eval_bench *b, unsigned long long *rng)
     }
 }
 
+/* ns per evaluation by derivative order (0, 1, 2), internal and public. */
+typedef struct by_order {
+    double order[MAX_ORDER + 1], internal_ns[MAX_ORDER + 1], public_ns[MAX_ORDER + 1];
+} by_order;
+
+static void write_svg(const pcb_args *args, const by_order *o)
+{
+    if (!args->svg_path)
+        return;
+    const pcb_series series[2] = {{"pc_nurbs_surface_eval", o->order, o->internal_ns, 3},
+                                  {"projcurve_surface_eval", o->order, o->public_ns, 3}};
+    const pcb_plot plot = {"bicubic evaluation, 16x16 spans", "derivative order",
+                           "ns per evaluation", 0, 0, series, 2};
+    if (pcb_svg_write(args->svg_path, &plot, 1) != 0)
+        fprintf(stderr, "eval: cannot write %s\n", args->svg_path);
+}
+
 static void write_json(const pcb_args *args, const pcb_pair *internal, const pcb_pair *public_,
-                       double closest_s, double diff)
+                       double closest_s, double diff, const by_order *o)
 {
     pcb_json j;
     if (pcb_json_open(&j, args->json_path) != 0)
@@ -137,6 +159,15 @@ static void write_json(const pcb_args *args, const pcb_pair *internal, const pcb
     pcb_json_number(&j, "public_eval_over_naive", public_->ratio);
     pcb_json_number(&j, "max_relative_difference", diff);
     pcb_json_int(&j, "spans", EVAL_SPANS);
+    pcb_json_array_begin(&j, "by_order");
+    for (int k = 0; k <= MAX_ORDER; ++k) {
+        pcb_json_object_begin(&j, NULL);
+        pcb_json_int(&j, "n_deriv", k);
+        pcb_json_number(&j, "internal_ns", o->internal_ns[k]);
+        pcb_json_number(&j, "public_ns", o->public_ns[k]);
+        pcb_json_object_end(&j);
+    }
+    pcb_json_array_end(&j);
     pcb_json_string(&j, "machine", machine);
     pcb_json_int(&j, "quick", args->quick);
     pcb_json_object_end(&j);
@@ -168,6 +199,19 @@ int pcb_cmd_eval(const pcb_args *args)
     const pcb_timing timing = pcb_timing_for(args, EVAL_REPS, EVAL_MIN_RUN_S);
     pcb_pair internal, public_;
     double closest_s = NAN;
+    by_order o;
+    for (int k = 0; k <= MAX_ORDER; ++k) {
+        b.n_deriv = k;
+        o.order[k] = k;
+        if (pcb_time_median(&timing, work_internal, &b, &o.internal_ns[k]) ||
+            pcb_time_median(&timing, work_public, &b, &o.public_ns[k])) {
+            fprintf(stderr, "eval: a timed call failed\n");
+            goto cleanup;
+        }
+        o.internal_ns[k] *= 1e9;
+        o.public_ns[k] *= 1e9;
+    }
+    b.n_deriv = MAX_ORDER;  /* the headline figures: with second derivatives */
     if (pcb_time_pair(&timing, work_internal, &b, work_naive, &b, &internal) ||
         pcb_time_pair(&timing, work_public, &b, work_naive, &b, &public_) ||
         pcb_time_median(&timing, work_closest, &b, &closest_s)) {
@@ -181,8 +225,12 @@ int pcb_cmd_eval(const pcb_args *args)
            public_.ratio);
     printf("%-36s %10.1f %14s\n", "textbook A2.1+A2.3 loop (naive)", 1e9 * internal.b_s, "1");
     printf("%-36s %10.1f\n", "projcurve_surface_closest_point", 1e9 * closest_s);
-    printf("max relative difference library vs textbook: %.2e\n", diff);
-    write_json(args, &internal, &public_, closest_s, diff);
+    printf("by derivative order (internal / public ns):");
+    for (int k = 0; k <= MAX_ORDER; ++k)
+        printf("  %d: %.1f / %.1f", k, o.internal_ns[k], o.public_ns[k]);
+    printf("\nmax relative difference library vs textbook: %.2e\n", diff);
+    write_json(args, &internal, &public_, closest_s, diff, &o);
+    write_svg(args, &o);
     rc = diff <= 1e-9 ? 0 : 1;
     if (rc)
         fprintf(stderr, "eval: library and textbook evaluations disagree (%.3g)\n", diff);
