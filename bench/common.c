@@ -62,6 +62,20 @@ void pcb_machine_name(char *buf, size_t size)
     fclose(f);
 }
 
+/* The 1-minute load average, or -1: figures taken on a busy machine say
+ * so in their banner. */
+static double load_average(void)
+{
+    double load = -1.0;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf", &load) != 1)
+            load = -1.0;
+        fclose(f);
+    }
+    return load;
+}
+
 void pcb_print_banner(const char *title, const pcb_args *args)
 {
     char machine[128];
@@ -71,8 +85,9 @@ void pcb_print_banner(const char *title, const pcb_args *args)
     struct tm tm_utc;
     if (gmtime_r(&now, &tm_utc))
         strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", &tm_utc);
-    printf("== %s  [%s; %s build; libprojcurve %s; %s%s]\n", title, machine, PCB_BUILD_TYPE,
-           projcurve_version_string(), date, args->quick ? "; QUICK: times mean nothing" : "");
+    printf("== %s  [%s; %s build; libprojcurve %s; %s; load %.1f%s]\n", title, machine,
+           PCB_BUILD_TYPE, projcurve_version_string(), date, load_average(),
+           args->quick ? "; QUICK: times mean nothing" : "");
 }
 
 void pcb_join_path(char *path, size_t size, const char *dir, const char *name)
