@@ -104,7 +104,9 @@ typedef struct projcurve_context projcurve_context;
 
 /* Creates a context. Pass PROJCURVE_VERSION_MAJOR as abi_major: a caller built
  * against another major version gets PROJCURVE_ERR_VERSION.
- * Statuses: OK, NULL_ARGUMENT (out), VERSION, NO_MEMORY. Thread-safe. */
+ * Statuses: OK, NULL_ARGUMENT (out), VERSION, NO_MEMORY; on failure *out is
+ * untouched and, as no context exists yet, projcurve_status_string() is the
+ * message. Thread-safe. */
 PROJCURVE_API projcurve_status projcurve_context_create(unsigned abi_major,
                                                         projcurve_context **out);
 
@@ -115,7 +117,8 @@ PROJCURVE_API void projcurve_context_destroy(projcurve_context *ctx);
  * "no context"). Valid until the next call with ctx. */
 PROJCURVE_API const char *projcurve_context_message(const projcurve_context *ctx);
 
-/* Status of the last failed call made with ctx (OK if none). */
+/* Status of the last failed call made with ctx (OK if none; NULL ctx gives
+ * NULL_ARGUMENT). */
 PROJCURVE_API projcurve_status projcurve_context_status(const projcurve_context *ctx);
 
 /* Forgets the last failure. */
@@ -177,7 +180,8 @@ PROJCURVE_API projcurve_status projcurve_options_create(projcurve_context *ctx,
 PROJCURVE_API void projcurve_options_destroy(projcurve_options *opts);
 
 /* Type, bounds and default of an option (any output pointer may be NULL).
- * Statuses: OK, UNKNOWN_OPTION. Thread-safe. */
+ * Bounds are inclusive, except the lower bound 0 of TOL_ANGLE_DEG, which is
+ * excluded. Statuses: OK, UNKNOWN_OPTION. Thread-safe. */
 PROJCURVE_API projcurve_status projcurve_option_info(projcurve_context *ctx,
                                                      projcurve_option key,
                                                      projcurve_option_type *type,

@@ -26,6 +26,9 @@ typedef struct pc_proj_point {
                           a centre of curvature */
     pc_vec3 s;         /* S(u, v) */
     pc_vec3 p;         /* P(t) */
+    double speed;      /* |Q'(t)| = |Su u' + Sv v'| in model units (seed 000
+                          eq. (3.6)), for the arc-length step (3.7); 0 when
+                          unknown (the engine then measures it itself) */
 } pc_proj_point;
 
 struct pc_projector {
