@@ -37,9 +37,19 @@ static double tangential_distance(pc_vec3 su, pc_vec3 sv, const double f[2])
     return sqrt(sq > 0.0 ? sq : 0.0);
 }
 
+/* The cache is the mutable object behind the projector's const data. */
+static pc_ortho_cache *cache_of(const pc_projector *self)
+{
+    return (pc_ortho_cache *)self->data;
+}
+
 static int eval_curve(const pc_projector *self, double t, int n_deriv, pc_vec3 *p)
 {
-    return pc_curve_eval(self->curve, t, n_deriv, NULL, p) == PROJCURVE_OK;
+    pc_ortho_cache *cache = cache_of(self);
+    if (pc_curve_eval(self->curve, t, n_deriv, &cache->hint_t, p) == PROJCURVE_OK)
+        return 1;
+    cache->callback_failed = 1;
+    return 0;
 }
 
 /* Newton on F(., ., t) = 0 with the full Jacobian K (seed 003 eq. (14)):
@@ -60,7 +70,8 @@ static int ortho_correct(const pc_projector *self, double t, double uv[2], int *
     for (; it < self->newton_max_iter; ++it) {
         pc_vec3 sd[6];
         double k[4], f[2], delta[2];
-        pc_nurbs_surface_eval(s, uv[0], uv[1], 2, NULL, NULL, sd);
+        pc_nurbs_surface_eval(s, uv[0], uv[1], 2, &cache_of(self)->hint_u,
+                              &cache_of(self)->hint_v, sd);
         tensor_and_residual(sd, p, k, f);
         const double residual = tangential_distance(sd[PC_D3_U], sd[PC_D3_V], f);
         if (!isfinite(residual))
@@ -126,7 +137,9 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
     out->v = v;
     out->du = out->dv = out->ddu = out->ddv = 0.0;
     out->det = 0.0;
-    pc_surface_eval_d3(&self->surface->nurbs, u, v, NULL, NULL, sd);
+    out->speed = 0.0;
+    pc_surface_eval_d3(&self->surface->nurbs, u, v, &cache_of(self)->hint_u,
+                       &cache_of(self)->hint_v, sd);
     out->s = sd[PC_D3_S];
     if (!eval_curve(self, t, 2, p)) {
         out->p = vec3(NAN, NAN, NAN);
@@ -148,6 +161,7 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
     out->dv = qd[1];
     out->ddu = qdd[0];
     out->ddv = qdd[1];
+    out->speed = vec3_norm(vec3_axpy(vec3_scale(sd[PC_D3_U], qd[0]), qd[1], sd[PC_D3_V]));
     return 1;
 }
 
@@ -157,15 +171,18 @@ static double ortho_residual(const pc_projector *self, double t, double u, doubl
     double k[4], f[2];
     if (!eval_curve(self, t, 0, &p))
         return INFINITY;
-    pc_nurbs_surface_eval(&self->surface->nurbs, u, v, 2, NULL, NULL, sd);
+    pc_nurbs_surface_eval(&self->surface->nurbs, u, v, 2, &cache_of(self)->hint_u,
+                          &cache_of(self)->hint_v, sd);
     tensor_and_residual(sd, p, k, f);
     return tangential_distance(sd[PC_D3_U], sd[PC_D3_V], f);
 }
 
-void pc_ortho_projector_init(pc_projector *proj, const projcurve_surface *surface,
-                             const projcurve_curve *curve, double newton_tol_rel,
-                             int newton_max_iter)
+void pc_ortho_projector_init(pc_projector *proj, pc_ortho_cache *cache,
+                             const projcurve_surface *surface, const projcurve_curve *curve,
+                             double newton_tol_rel, int newton_max_iter)
 {
+    cache->hint_u = cache->hint_v = cache->hint_t = 0;
+    cache->callback_failed = 0;
     proj->surface = surface;
     proj->curve = curve;
     proj->model_size = surface->size;
@@ -174,5 +191,5 @@ void pc_ortho_projector_init(pc_projector *proj, const projcurve_surface *surfac
     proj->correct = ortho_correct;
     proj->derivatives = ortho_derivatives;
     proj->residual = ortho_residual;
-    proj->data = NULL;
+    proj->data = cache;
 }

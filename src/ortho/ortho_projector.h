@@ -21,12 +21,21 @@
 
 #include "trace/projector.h"
 
+/* Mutable evaluation state of one projection call (never shared between
+ * threads): knot-span hints, and whether a curve callback failed, which the
+ * caller turns into PROJCURVE_ERR_CALLBACK after tracing (the projector's
+ * functions can only answer "no convergence"). */
+typedef struct pc_ortho_cache {
+    size_t hint_u, hint_v, hint_t;
+    int callback_failed;
+} pc_ortho_cache;
+
 /* Fills proj with the orthogonal equations for surface and curve. The
- * Newton tolerance is newton_tol_rel times the surface's model size. Both
- * handles must outlive proj. */
-void pc_ortho_projector_init(pc_projector *proj, const projcurve_surface *surface,
-                             const projcurve_curve *curve, double newton_tol_rel,
-                             int newton_max_iter);
+ * Newton tolerance is newton_tol_rel times the surface's model size. The
+ * handles and cache must outlive proj; cache is reset here. */
+void pc_ortho_projector_init(pc_projector *proj, pc_ortho_cache *cache,
+                             const projcurve_surface *surface, const projcurve_curve *curve,
+                             double newton_tol_rel, int newton_max_iter);
 
 /* q'' from the local data (exposed for tests): s = S and partials up to
  * order 3 (surface_d3.h layout), p = P, P', P'', qd = q', k = K row-major.
