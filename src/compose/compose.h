@@ -14,4 +14,9 @@
 void pc_compose_segment(const pc_bezier_patch *patch, const double uv0[2], const double uv1[2],
                         double *cw_out);
 
+/* Cartesian control points (3 doubles each) and weights of a rational Bezier
+ * curve given by degree + 1 homogeneous points (4 doubles each); weights must
+ * be non-zero (they are positive for a NURBS patch). */
+void pc_compose_to_cartesian(int degree, const double *cw, double *ctrl, double *weights);
+
 #endif /* PC_COMPOSE_H */

@@ -49,6 +49,11 @@ struct pc_projector {
      * projection condition), for tests and error estimates. */
     double (*residual)(const pc_projector *self, double t, double u, double v);
     const void *data;      /* kind-specific (direction frame, ...) */
+    /* Optional (may be NULL): correct() stores here the estimation error of
+     * its initial guess, seed 000 eq. (3.8) for the directional kind (the
+     * sine of the angle between Dir and S(guess) - P). The engine averages
+     * it into the statistics; when NULL it uses residual() / model_size. */
+    double *guess_error;
 };
 
 #endif /* PC_TRACE_PROJECTOR_H */
