@@ -40,11 +40,13 @@ typedef struct pc_implicit_eval {
     double hess[9];       /* row-major */
 } pc_implicit_eval;
 
-/* A traced foot point: t, x, x' (ODE (32)), det K (tangential, unitless). */
+/* A traced foot point: t, x, x' (ODE (32)), det K (tangential, unitless)
+ * and the Morse index (morse_index.h) from det and trace of K. */
 typedef struct pc_implicit_point {
     double t;
     pc_vec3 x, xd;
     double det;
+    int index;
 } pc_implicit_point;
 
 /* Calls f at x. Statuses: OK; CALLBACK (nonzero return, or a non-finite
@@ -53,11 +55,13 @@ typedef struct pc_implicit_point {
 projcurve_status pc_implicit_call(projcurve_context *ctx, const pc_implicit *imp, pc_vec3 x,
                                   pc_implicit_eval *out);
 
-/* x' and det K at (t, x) (x need not lie on f = 0: the field is smooth
- * nearby, which RK4 stages and the x'' difference use). *solved is 0 when K
- * is singular (then *xd is zero). Statuses as pc_implicit_call. */
+/* x' at (t, x) (x need not lie on f = 0: the field is smooth nearby,
+ * which RK4 stages and the x'' difference use); det_trace (may be NULL)
+ * gets det and trace of K restricted to the tangent plane. *solved is 0
+ * when K is singular (then *xd is zero). Statuses as pc_implicit_call. */
 projcurve_status pc_implicit_velocity(projcurve_context *ctx, const pc_implicit *imp, double t,
-                                      pc_vec3 x, pc_vec3 *xd, double *det, int *solved);
+                                      pc_vec3 x, pc_vec3 *xd, double det_trace[2],
+                                      int *solved);
 
 /* x'' at a foot point pt (with pt->xd filled): central difference of the
  * ODE field along (x', 1). *solved as above. */
@@ -75,7 +79,7 @@ projcurve_status pc_implicit_acceleration(projcurve_context *ctx, const pc_impli
 projcurve_status pc_implicit_correct(projcurve_context *ctx, const pc_implicit *imp, double t,
                                      pc_vec3 *x, int *converged, int *iterations);
 
-/* Fills pt (x', det) for the foot point x of P(t). *solved as above. */
+/* Fills pt (x', det, index) for the foot point x of P(t). *solved as above. */
 projcurve_status pc_implicit_point_at(projcurve_context *ctx, const pc_implicit *imp, double t,
                                       pc_vec3 x, pc_implicit_point *pt, int *solved);
 

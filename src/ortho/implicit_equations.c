@@ -3,6 +3,7 @@
 
 #include "common/error.h"
 #include "ortho/implicit.h"
+#include "ortho/morse_index.h"
 
 /* |det K| at or below this: K is singular, P(t) is a centre of curvature.
  * det K is unitless ((1 + rho k1)(1 + rho k2)), so the bound is absolute. */
@@ -104,12 +105,12 @@ static projcurve_status eval_curve(projcurve_context *ctx, const pc_implicit *im
 }
 
 projcurve_status pc_implicit_velocity(projcurve_context *ctx, const pc_implicit *imp, double t,
-                                      pc_vec3 x, pc_vec3 *xd, double *det, int *solved)
+                                      pc_vec3 x, pc_vec3 *xd, double det_trace[2],
+                                      int *solved)
 {
     pc_implicit_eval e;
     pc_vec3 p[2];
     *xd = vec3(0, 0, 0);
-    *det = 0.0;
     *solved = 0;
     projcurve_status status = pc_implicit_call(ctx, imp, x, &e);
     if (status == PROJCURVE_OK)
@@ -131,12 +132,23 @@ projcurve_status pc_implicit_velocity(projcurve_context *ctx, const pc_implicit 
             const double b_ij = (nnh - e.hess[i * 3 + j]) / gn;
             k[i * 3 + j] = (i == j ? 1.0 : 0.0) - rho * b_ij;
         }
+    /* Trace of K on the tangent plane: 2 + rho (tr H - n.H n) / |g|. */
+    double tr_h = 0.0, nhn = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        tr_h += e.hess[i * 3 + i];
+        for (int j = 0; j < 3; ++j)
+            nhn += nv[i] * e.hess[i * 3 + j] * nv[j];
+    }
+    const double trace = 2.0 + rho * (tr_h - nhn) / gn;
     /* Right-hand side of eq. (31): the tangential part of P'. */
     const pc_vec3 rhs = vec3_axpy(p[1], -vec3_dot(p[1], n), n);
     double b[3] = {rhs.x, rhs.y, rhs.z};
     double d = 0.0;
     const int ok = solve_linear(3, k, b, &d);
-    *det = d;
+    if (det_trace) {
+        det_trace[0] = d;   /* det K = det of its tangential block (implicit.h) */
+        det_trace[1] = trace;
+    }
     if (!ok || !(fabs(d) > IMPLICIT_DET_SINGULAR))
         return PROJCURVE_OK;
     *xd = vec3_load(b);   /* eq. (32) */
@@ -147,9 +159,14 @@ projcurve_status pc_implicit_velocity(projcurve_context *ctx, const pc_implicit 
 projcurve_status pc_implicit_point_at(projcurve_context *ctx, const pc_implicit *imp, double t,
                                       pc_vec3 x, pc_implicit_point *pt, int *solved)
 {
+    double det_trace[2] = {0.0, 0.0};
     pt->t = t;
     pt->x = x;
-    return pc_implicit_velocity(ctx, imp, t, x, &pt->xd, &pt->det, solved);
+    const projcurve_status status =
+        pc_implicit_velocity(ctx, imp, t, x, &pt->xd, det_trace, solved);
+    pt->det = det_trace[0];
+    pt->index = pc_morse_index(det_trace[0], det_trace[1]);
+    return status;
 }
 
 /* x' at (x + s h x', t + s h). */
@@ -157,9 +174,8 @@ static projcurve_status field_along(projcurve_context *ctx, const pc_implicit *i
                                     const pc_implicit_point *pt, double s, double h,
                                     pc_vec3 *out, int *solved)
 {
-    double det;
     return pc_implicit_velocity(ctx, imp, pt->t + s * h, vec3_axpy(pt->x, s * h, pt->xd), out,
-                                &det, solved);
+                                NULL, solved);
 }
 
 projcurve_status pc_implicit_acceleration(projcurve_context *ctx, const pc_implicit *imp,

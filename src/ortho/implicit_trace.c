@@ -50,16 +50,15 @@ static projcurve_status predict(projcurve_context *ctx, const pc_implicit *imp, 
     projcurve_status status;
     if (method == PROJCURVE_METHOD_RK4) {
         pc_vec3 k2, k3, k4;
-        double det;
         int ok2 = 0, ok3 = 0, ok4 = 0;
         status = pc_implicit_velocity(ctx, imp, pt->t + 0.5 * dt,
-                                      vec3_axpy(pt->x, 0.5 * dt, pt->xd), &k2, &det, &ok2);
+                                      vec3_axpy(pt->x, 0.5 * dt, pt->xd), &k2, NULL, &ok2);
         if (status == PROJCURVE_OK)
             status = pc_implicit_velocity(ctx, imp, pt->t + 0.5 * dt,
-                                          vec3_axpy(pt->x, 0.5 * dt, k2), &k3, &det, &ok3);
+                                          vec3_axpy(pt->x, 0.5 * dt, k2), &k3, NULL, &ok3);
         if (status == PROJCURVE_OK)
             status = pc_implicit_velocity(ctx, imp, pt->t + dt, vec3_axpy(pt->x, dt, k3), &k4,
-                                          &det, &ok4);
+                                          NULL, &ok4);
         const pc_vec3 sum = vec3_add(vec3_add(pt->xd, k4), vec3_scale(vec3_add(k2, k3), 2.0));
         *out = vec3_axpy(pt->x, dt / 6.0, sum);
         *solved = ok2 && ok3 && ok4;
@@ -154,9 +153,11 @@ static projcurve_status step(projcurve_context *ctx, trace_run *run, pc_implicit
             return status;
         const double moved = vec3_dist(x, cur->x);
         const double err = vec3_dist(x, x_pred);
-        const int same_side = next_solved && (next.det > 0.0) == (cur->det > 0.0);
+        /* A change of the Morse index (or of the sign of det K, which it
+         * includes) means a centre of curvature lies within the step. */
+        const int same_side = next_solved && next.index == cur->index;
         if (converged && next_solved && !same_side)
-            sign_change_seen = 1;   /* det K changed sign: a centre of curvature */
+            sign_change_seen = 1;
         const int accept = solved && converged && same_side &&
                            err <= TRACE_MAX_PREDICTOR_ERROR * moved + imp->newton_tol &&
                            turn_angle(cur->xd, next.xd) <= TRACE_MAX_TURN;

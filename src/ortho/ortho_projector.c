@@ -10,6 +10,12 @@
  * halves its step instead. */
 #define ORTHO_DIVERGENCE_FACTOR 1e3
 
+/* |det K| / (|Su| |Sv|)^2 at or below this: K is singular (P at a centre
+ * of curvature). K is then made of rounding noise, which mat2_solve's test
+ * relative to K's own entries cannot see; this one is relative to the
+ * first fundamental form. */
+#define ORTHO_DET_SINGULAR 1e-12
+
 static double clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
 /* K of seed 003 eq. (5) and F of eq. (10) from S, Su, Sv, Suu, Suv, Svv. */
@@ -153,7 +159,7 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
     /* seed 003 eq. (16): q' = K^-1 [P'.Su; P'.Sv]. */
     const double b[2] = {vec3_dot(p[1], sd[PC_D3_U]), vec3_dot(p[1], sd[PC_D3_V])};
     double qd[2], qdd[2];
-    if (!mat2_solve(k[0], k[1], k[2], k[3], b, qd))
+    if (!(fabs(out->det) > ORTHO_DET_SINGULAR) || !mat2_solve(k[0], k[1], k[2], k[3], b, qd))
         return 0;
     if (!pc_ortho_second_derivative(sd, p, qd, k, qdd))
         return 0;
@@ -192,4 +198,5 @@ void pc_ortho_projector_init(pc_projector *proj, pc_ortho_cache *cache,
     proj->derivatives = ortho_derivatives;
     proj->residual = ortho_residual;
     proj->data = cache;
+    proj->guess_error = NULL;
 }
