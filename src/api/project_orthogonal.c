@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "ortho/implicit.h"
+#include "ortho/ortho_centres.h"
 #include "ortho/ortho_projector.h"
 #include "ortho/ortho_seeds.h"
 #include "refine/refine.h"
@@ -59,6 +60,8 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
         status = pc_trace_branches(ctx, &proj, &o, &finder, &config, r);
     if (cache.callback_failed && (status == PROJCURVE_OK || status == PROJCURVE_ERR_LIMIT_REACHED))
         status = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "a curve callback failed while tracing");
+    if (status == PROJCURVE_OK)
+        status = pc_ortho_split_at_centres(ctx, &proj, r);
     if (status == PROJCURVE_OK || status == PROJCURVE_ERR_LIMIT_REACHED) {
         name_singular_ends(r);
         r->stats.tol_distance = distance_tolerance(&o, surface->size);

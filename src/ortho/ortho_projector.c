@@ -2,6 +2,7 @@
 
 #include <math.h>
 
+#include "ortho/morse_index.h"
 #include "ortho/surface_d3.h"
 
 /* A Newton iterate whose residual grew by this factor over the starting
@@ -181,6 +182,19 @@ static double ortho_residual(const pc_projector *self, double t, double u, doubl
                           &cache_of(self)->hint_v, sd);
     tensor_and_residual(sd, p, k, f);
     return tangential_distance(sd[PC_D3_U], sd[PC_D3_V], f);
+}
+
+int pc_ortho_morse_index(const pc_projector *proj, double t, double u, double v, int *index)
+{
+    pc_vec3 sd[6], p;
+    double k[4], f[2];
+    if (!eval_curve(proj, t, 0, &p))
+        return 0;
+    pc_nurbs_surface_eval(&proj->surface->nurbs, u, v, 2, &cache_of(proj)->hint_u,
+                          &cache_of(proj)->hint_v, sd);
+    tensor_and_residual(sd, p, k, f);
+    *index = pc_morse_index(k[0] * k[3] - k[1] * k[2], k[0] + k[3]);
+    return 1;
 }
 
 void pc_ortho_projector_init(pc_projector *proj, pc_ortho_cache *cache,

@@ -37,6 +37,11 @@ void pc_ortho_projector_init(pc_projector *proj, pc_ortho_cache *cache,
                              const projcurve_surface *surface, const projcurve_curve *curve,
                              double newton_tol_rel, int newton_max_iter);
 
+/* Morse index (ortho/morse_index.h) of the foot point (u, v) of P(t): the
+ * number of negative eigenvalues of K. Returns 0 when P cannot be
+ * evaluated (a curve callback failed), 1 otherwise. */
+int pc_ortho_morse_index(const pc_projector *proj, double t, double u, double v, int *index);
+
 /* q'' from the local data (exposed for tests): s = S and partials up to
  * order 3 (surface_d3.h layout), p = P, P', P'', qd = q', k = K row-major.
  * Returns 0 when K is singular. */
