@@ -177,6 +177,8 @@ typedef enum projcurve_option_type {
  * Statuses: OK, NULL_ARGUMENT, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_options_create(projcurve_context *ctx,
                                                         projcurve_options **out);
+
+/* Releases options (NULL is accepted). */
 PROJCURVE_API void projcurve_options_destroy(projcurve_options *opts);
 
 /* Type, bounds and default of an option (any output pointer may be NULL).

@@ -21,6 +21,8 @@ typedef struct pc_bvh {
     pc_bvh_node *nodes;
     size_t n_nodes;
     uint32_t *order;  /* patch indices, leaves point into ranges of it */
+    double *boxes;    /* 6 per entry of order[]: that patch's box, so a leaf
+                         tests its patches without touching the grid */
     int depth;        /* height of the tree, bounds the traversal stack */
 } pc_bvh;
 

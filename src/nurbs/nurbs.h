@@ -64,4 +64,69 @@ void pc_nurbs_curve_eval(const pc_nurbs_curve *c, double t, int n_deriv, size_t 
 void pc_nurbs_surface_eval(const pc_nurbs_surface *s, double u, double v, int n_deriv,
                            size_t *hint_u, size_t *hint_v, pc_vec3 *out);
 
+/* ---- Building blocks shared by nurbs/, bezier/ and point/ ---------------- */
+
+/* Largest number of basis functions that are nonzero on one span. */
+#define PC_MAX_ORDER (PROJCURVE_MAX_DEGREE + 1)
+
+/* Highest derivative order computed by pc_basis_ders (curves need 3). */
+#define PC_MAX_DERIV 3
+
+/* Values and derivatives of the degree + 1 basis functions that are nonzero
+ * on one span: d[k][j] = k-th derivative of the j-th function. */
+typedef struct pc_basis {
+    double d[PC_MAX_DERIV + 1][PC_MAX_ORDER];
+} pc_basis;
+
+/* The degree + 1 B-spline basis functions N_{span-degree..span} at t and
+ * their derivatives up to order n_deriv (<= PC_MAX_DERIV):
+ * out->d[k][j] = d^k N_{span-degree+j} / dt^k. Derivatives above the degree
+ * are zero. The NURBS Book, algorithm A2.3. No allocation. */
+void pc_basis_ders(const double *knots, size_t span, int degree, double t, int n_deriv,
+                   pc_basis *out);
+
+/* Point and derivatives (order n_deriv in 0..2, output as
+ * pc_nurbs_surface_eval) of the tensor product of a (p+1) x (q+1) block of
+ * homogeneous points (row j starts at net + j * stride doubles) with the
+ * basis derivative tables bu, bv; rational = 0 skips the division by w
+ * (every weight must then be 1). Shared by spline and Bezier patch
+ * evaluation. */
+void pc_surface_block_eval(const double *net, size_t stride, int p, int q, int n_deriv,
+                           const pc_basis *bu, const pc_basis *bv, int rational, pc_vec3 *out);
+
+/* Checks a user knot vector of n_ctrl + degree + 1 values: finite,
+ * non-decreasing, no value repeated more than degree + 1 times and a
+ * non-empty domain [knots[degree], knots[n_ctrl]]. `name` ("knot vector u")
+ * prefixes the message. Statuses: OK, NOT_FINITE, BAD_KNOTS. */
+projcurve_status pc_knots_validate(projcurve_context *ctx, const char *name, int degree,
+                                   size_t n_ctrl, const double *knots);
+
+/* A batch of splines sharing one knot vector: `rows` splines of n_ctrl
+ * control points with `dim` doubles each, stored row after row. A curve is
+ * one row of dim 4; a surface is, in u, n_v rows of dim 4 and, in v, one row
+ * of dim 4 * n_u (the whole net row is one "point"). */
+typedef struct pc_spline_batch {
+    int degree;
+    size_t n_ctrl;
+    size_t dim;
+    size_t rows;
+    double *knots;  /* n_ctrl + degree + 1, owned (malloc) */
+    double *pts;    /* rows * n_ctrl * dim, owned (malloc) */
+} pc_spline_batch;
+
+/* Converts the batch in place to clamped knots over the same domain
+ * [knots[degree], knots[n_ctrl]] by inserting the domain ends until they have
+ * multiplicity degree (Boehm insertion, exact up to rounding) and dropping
+ * the control points outside. Knots must have passed pc_knots_validate.
+ * Statuses: OK, NO_MEMORY, OVERFLOW. */
+projcurve_status pc_spline_batch_clamp(projcurve_context *ctx, pc_spline_batch *b);
+
+/* 1 if the knot vector of n_ctrl + degree + 1 values has degree + 1 equal
+ * values at each end. */
+int pc_knots_are_clamped(const double *knots, size_t n_ctrl, int degree);
+
+/* Checks that count * size (and count * size * extra) fit in size_t;
+ * returns the product or 0 on overflow (count, size > 0). */
+size_t pc_size_mul(size_t a, size_t b);
+
 #endif /* PC_NURBS_H */

@@ -3,12 +3,13 @@
 # consumers in this directory against the installed files only:
 #   1. through pkg-config (C and C++, shared library, strict warnings),
 #   2. through find_package(projcurve CONFIG) (C and C++ shared, C static).
-# Usage: install_test.sh CMAKE BUILD_DIR C_COMPILER CXX_COMPILER [EXTRA_FLAGS]
+# Usage: install_test.sh CMAKE BUILD_DIR C_COMPILER CXX_COMPILER [EXTRA_FLAGS [CLI_NAME]]
 # EXTRA_FLAGS (e.g. the sanitizer flags) are used to compile and link the
 # consumers, since an instrumented library needs an instrumented program.
+# CLI_NAME, when the build has the command-line tool, must be installed in bin/.
 set -euo pipefail
 
-cmake_exe=$1 build_dir=$2 cc=$3 cxx=$4 extra_flags=${5:-}
+cmake_exe=$1 build_dir=$2 cc=$3 cxx=$4 extra_flags=${5:-} cli_name=${6:-}
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d "${TMPDIR:-/tmp}/projcurve-install-test.XXXXXX")
 trap 'rm -rf "$work"' EXIT
@@ -26,6 +27,9 @@ libdir=$(dirname "$(dirname "$pc_file")")
 for lib in libprojcurve.so libprojcurve.so.1 libprojcurve.a; do
     [[ -e $libdir/$lib ]] || { echo "FAIL: $libdir/$lib not installed"; exit 1; }
 done
+if [[ -n $cli_name && ! -x $prefix/bin/$cli_name ]]; then
+    echo "FAIL: the command-line tool $cli_name is not installed in $prefix/bin"; exit 1
+fi
 
 # --- 1. pkg-config -------------------------------------------------------
 if command -v pkg-config >/dev/null; then
@@ -64,3 +68,13 @@ if ldd "$work/consumer/consumer_c_static" | grep -q libprojcurve; then
     echo "FAIL: consumer_c_static depends on the shared library"; exit 1
 fi
 echo "find_package consumers: OK"
+
+# Another major version is another ABI: the package must refuse it.
+major=$(sed -n 's/^#define PROJCURVE_VERSION_MAJOR \([0-9]*\)$/\1/p' "$prefix/include/projcurve_version.h")
+if "$cmake_exe" -S "$here" -B "$work/consumer_next" -DCMAKE_PREFIX_PATH="$prefix" \
+        -DPROJCURVE_WANTED_VERSION=$((major + 1)) >"$work/next.log" 2>&1; then
+    echo "FAIL: find_package(projcurve $((major + 1))) accepted version $major"; exit 1
+fi
+grep -q "compatible with requested version" "$work/next.log" ||
+    { cat "$work/next.log"; echo "FAIL: unexpected find_package failure"; exit 1; }
+echo "find_package(projcurve $((major + 1))) refused: OK"

@@ -1,0 +1,164 @@
+/*
+ * Public curve functions: creation (NURBS or callback), domain, evaluation,
+ * NURBS data access; and pc_curve_eval, the internal evaluator of both kinds.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/handles.h"
+#include "common/error.h"
+
+projcurve_status projcurve_curve_create_nurbs(projcurve_context *ctx, int degree, size_t n_ctrl,
+                                              const double *ctrl, const double *weights,
+                                              const double *knots, projcurve_curve **out)
+{
+    PC_REQUIRE(ctx, out, "out");
+    PC_REQUIRE(ctx, ctrl, "ctrl");
+    PC_REQUIRE(ctx, knots, "knots");
+    projcurve_curve *c = calloc(1, sizeof *c);
+    if (c == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a curve");
+    const projcurve_status st =
+        pc_nurbs_curve_init(ctx, &c->nurbs, degree, n_ctrl, ctrl, weights, knots);
+    if (st != PROJCURVE_OK) {
+        free(c);
+        return st;
+    }
+    c->kind = PC_CURVE_NURBS;
+    c->t0 = c->nurbs.t0;
+    c->t1 = c->nurbs.t1;
+    *out = c;
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_curve_create_callback(projcurve_context *ctx, projcurve_curve_fn fn,
+                                                 void *user, double t0, double t1,
+                                                 projcurve_curve **out)
+{
+    PC_REQUIRE(ctx, out, "out");
+    if (fn == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NULL_ARGUMENT, "fn is NULL");
+    if (!isfinite(t0) || !isfinite(t1))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "curve domain [%g, %g] is not finite", t0,
+                       t1);
+    if (!(t0 < t1))
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "curve domain [%.17g, %.17g] is empty (need t0 < t1)", t0, t1);
+    projcurve_curve *c = calloc(1, sizeof *c);
+    if (c == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a curve");
+    c->kind = PC_CURVE_CALLBACK;
+    c->t0 = t0;
+    c->t1 = t1;
+    c->fn = fn;
+    c->user = user;
+    *out = c;
+    return PROJCURVE_OK;
+}
+
+void projcurve_curve_destroy(projcurve_curve *curve)
+{
+    if (curve == NULL)
+        return;
+    if (curve->kind == PC_CURVE_NURBS)
+        pc_nurbs_curve_free(&curve->nurbs);
+    free(curve);
+}
+
+projcurve_status projcurve_curve_domain(projcurve_context *ctx, const projcurve_curve *curve,
+                                        double *t0, double *t1)
+{
+    PC_REQUIRE(ctx, curve, "curve");
+    PC_REQUIRE(ctx, t0, "t0");
+    PC_REQUIRE(ctx, t1, "t1");
+    *t0 = curve->t0;
+    *t1 = curve->t1;
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_curve_eval(const projcurve_curve *c, double t, int n_deriv, size_t *hint,
+                               pc_vec3 *out)
+{
+    if (!(t >= c->t0))
+        t = c->t0;
+    if (t > c->t1)
+        t = c->t1;
+    if (c->kind == PC_CURVE_NURBS) {
+        pc_nurbs_curve_eval(&c->nurbs, t, n_deriv > 3 ? 3 : n_deriv, hint, out);
+        return PROJCURVE_OK;
+    }
+    double v[9];
+    if (c->fn(c->user, t, v) != 0)
+        return PROJCURVE_ERR_CALLBACK;
+    const int n = n_deriv > 2 ? 2 : n_deriv;
+    for (int k = 0; k <= n; ++k) {
+        out[k] = vec3_load(v + 3 * k);
+        if (!vec3_is_finite(out[k]))
+            return PROJCURVE_ERR_CALLBACK;
+    }
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_curve_eval(projcurve_context *ctx, const projcurve_curve *curve,
+                                      double t, int n_deriv, double *out)
+{
+    PC_REQUIRE(ctx, curve, "curve");
+    PC_REQUIRE(ctx, out, "out");
+    const int max_deriv = curve->kind == PC_CURVE_NURBS ? 3 : 2;
+    if (n_deriv < 0 || n_deriv > max_deriv)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "derivative order %d is outside [0, %d] for this curve", n_deriv,
+                       max_deriv);
+    if (!isfinite(t))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "curve parameter t is not finite");
+    if (t < curve->t0 || t > curve->t1)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_DOMAIN,
+                       "t = %.17g is outside the curve domain [%.17g, %.17g]", t, curve->t0,
+                       curve->t1);
+    pc_vec3 r[4];
+    if (pc_curve_eval(curve, t, n_deriv, NULL, r) != PROJCURVE_OK)
+        return pc_fail(ctx, PROJCURVE_ERR_CALLBACK,
+                       "curve callback failed or returned a non-finite value at t = %.17g", t);
+    for (int k = 0; k <= n_deriv; ++k)
+        vec3_store(r[k], out + 3 * k);
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_curve_nurbs_info(projcurve_context *ctx, const projcurve_curve *curve,
+                                            int *degree, size_t *n_ctrl, size_t *n_knots,
+                                            int *rational)
+{
+    PC_REQUIRE(ctx, curve, "curve");
+    if (curve->kind != PC_CURVE_NURBS)
+        return pc_fail(ctx, PROJCURVE_ERR_WRONG_KIND, "the curve is a callback curve, not NURBS");
+    const pc_nurbs_curve *c = &curve->nurbs;
+    if (degree != NULL)
+        *degree = c->degree;
+    if (n_ctrl != NULL)
+        *n_ctrl = c->n_ctrl;
+    if (n_knots != NULL)
+        *n_knots = c->n_ctrl + (size_t)c->degree + 1;
+    if (rational != NULL)
+        *rational = c->rational;
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_curve_nurbs_data(projcurve_context *ctx, const projcurve_curve *curve,
+                                            double *ctrl, double *weights, double *knots)
+{
+    PC_REQUIRE(ctx, curve, "curve");
+    if (curve->kind != PC_CURVE_NURBS)
+        return pc_fail(ctx, PROJCURVE_ERR_WRONG_KIND, "the curve is a callback curve, not NURBS");
+    const pc_nurbs_curve *c = &curve->nurbs;
+    for (size_t i = 0; i < c->n_ctrl; ++i) {
+        const double w = c->cw[4 * i + 3];
+        if (ctrl != NULL)
+            for (size_t k = 0; k < 3; ++k)
+                ctrl[3 * i + k] = c->cw[4 * i + k] / w;
+        if (weights != NULL)
+            weights[i] = w;
+    }
+    if (knots != NULL)
+        memcpy(knots, c->knots, (c->n_ctrl + (size_t)c->degree + 1) * sizeof(double));
+    return PROJCURVE_OK;
+}

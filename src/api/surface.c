@@ -1,0 +1,123 @@
+/*
+ * Public surface functions: creation (the spline, its Bezier patch grid and
+ * the patch BVH, built once), shape queries and evaluation.
+ */
+#include <stdlib.h>
+
+#include "api/handles.h"
+#include "common/error.h"
+
+projcurve_status projcurve_surface_create_nurbs(projcurve_context *ctx, int deg_u, int deg_v,
+                                                size_t n_u, size_t n_v, const double *ctrl,
+                                                const double *weights, const double *knots_u,
+                                                const double *knots_v, projcurve_surface **out)
+{
+    PC_REQUIRE(ctx, out, "out");
+    PC_REQUIRE(ctx, ctrl, "ctrl");
+    PC_REQUIRE(ctx, knots_u, "knots_u");
+    PC_REQUIRE(ctx, knots_v, "knots_v");
+    projcurve_surface *s = calloc(1, sizeof *s);
+    if (s == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a surface");
+    projcurve_status st = pc_nurbs_surface_init(ctx, &s->nurbs, deg_u, deg_v, n_u, n_v, ctrl,
+                                                weights, knots_u, knots_v);
+    if (st != PROJCURVE_OK) {
+        free(s);
+        return st;
+    }
+    st = pc_patch_grid_build(ctx, &s->grid, &s->nurbs);
+    if (st == PROJCURVE_OK)
+        st = pc_bvh_build(ctx, &s->bvh, &s->grid);
+    if (st != PROJCURVE_OK) {
+        projcurve_surface_destroy(s);
+        return st;
+    }
+    box_empty(s->box);
+    const size_t n_points = s->nurbs.n_u * s->nurbs.n_v;
+    for (size_t i = 0; i < n_points; ++i) {
+        const double *h = s->nurbs.cw + 4 * i;
+        const double pt[3] = {h[0] / h[3], h[1] / h[3], h[2] / h[3]};
+        box_add_point(s->box, pt);
+    }
+    s->size = box_diagonal(s->box);
+    *out = s;
+    return PROJCURVE_OK;
+}
+
+void projcurve_surface_destroy(projcurve_surface *surface)
+{
+    if (surface == NULL)
+        return;
+    pc_bvh_free(&surface->bvh);
+    pc_patch_grid_free(&surface->grid);
+    pc_nurbs_surface_free(&surface->nurbs);
+    free(surface);
+}
+
+projcurve_status projcurve_surface_domain(projcurve_context *ctx,
+                                          const projcurve_surface *surface, double domain[4])
+{
+    PC_REQUIRE(ctx, surface, "surface");
+    PC_REQUIRE(ctx, domain, "domain");
+    for (int k = 0; k < 4; ++k)
+        domain[k] = surface->nurbs.domain[k];
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_surface_info(projcurve_context *ctx, const projcurve_surface *surface,
+                                        int *deg_u, int *deg_v, size_t *n_u, size_t *n_v,
+                                        size_t *spans_u, size_t *spans_v, int *rational)
+{
+    PC_REQUIRE(ctx, surface, "surface");
+    const pc_nurbs_surface *s = &surface->nurbs;
+    if (deg_u != NULL)
+        *deg_u = s->deg_u;
+    if (deg_v != NULL)
+        *deg_v = s->deg_v;
+    if (n_u != NULL)
+        *n_u = s->n_u;
+    if (n_v != NULL)
+        *n_v = s->n_v;
+    if (spans_u != NULL)
+        *spans_u = surface->grid.spans_u;
+    if (spans_v != NULL)
+        *spans_v = surface->grid.spans_v;
+    if (rational != NULL)
+        *rational = s->rational;
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_surface_eval(projcurve_context *ctx, const projcurve_surface *surface,
+                                        double u, double v, int n_deriv, double *out)
+{
+    PC_REQUIRE(ctx, surface, "surface");
+    PC_REQUIRE(ctx, out, "out");
+    if (n_deriv < 0 || n_deriv > 2)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE, "derivative order %d is outside [0, 2]",
+                       n_deriv);
+    if (!isfinite(u) || !isfinite(v))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "surface parameters (%g, %g) not finite",
+                       u, v);
+    const double *d = surface->nurbs.domain;
+    if (u < d[0] || u > d[1] || v < d[2] || v > d[3])
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_DOMAIN,
+                       "(u, v) = (%.17g, %.17g) is outside the domain [%.17g, %.17g] x "
+                       "[%.17g, %.17g]",
+                       u, v, d[0], d[1], d[2], d[3]);
+    pc_vec3 r[6];
+    pc_nurbs_surface_eval(&surface->nurbs, u, v, n_deriv, NULL, NULL, r);
+    static const int count[3] = {1, 3, 6};
+    for (int k = 0; k < count[n_deriv]; ++k)
+        vec3_store(r[k], out + 3 * k);
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_surface_bounds(projcurve_context *ctx,
+                                          const projcurve_surface *surface, double box[6])
+{
+    PC_REQUIRE(ctx, surface, "surface");
+    PC_REQUIRE(ctx, box, "box");
+    for (int k = 0; k < 6; ++k)
+        box[k] = surface->box[k];
+    return PROJCURVE_OK;
+}

@@ -1,0 +1,238 @@
+/*
+ * Bounding-volume hierarchy over the Bezier patches of a surface.
+ *
+ * Built top-down without recursion: a node's patches are split at the median
+ * of their box centres along the longest axis of those centres, so the tree
+ * is balanced and its height is ceil(log2(n / leaf size)) + 1 whatever the
+ * geometry. Queries walk it with a fixed-size stack of PC_BVH_MAX_DEPTH
+ * entries, which a balanced tree over any size_t number of patches cannot
+ * exceed.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "bezier/bvh.h"
+#include "common/error.h"
+
+#define PC_BVH_LEAF_SIZE 4   /* patches per leaf */
+#define PC_BVH_MAX_DEPTH 64  /* traversal stack; a median split tree is shallower */
+
+typedef struct build_item {
+    uint32_t node, begin, end;
+    int depth;
+} build_item;
+
+static double centre(const double box[6], int axis) { return 0.5 * (box[axis] + box[axis + 3]); }
+
+/* Rearranges order[begin, end) so that order[mid] has the median centre
+ * along axis, smaller before, larger after (Hoare quickselect, iterative). */
+static void select_median(uint32_t *order, size_t begin, size_t end, size_t mid,
+                          const pc_patch_grid *grid, int axis)
+{
+    size_t lo = begin, hi = end - 1;
+    while (lo < hi) {
+        const double pivot = centre(grid->patches[order[lo + (hi - lo) / 2]].box, axis);
+        size_t i = lo, j = hi;
+        while (i <= j) {
+            while (centre(grid->patches[order[i]].box, axis) < pivot)
+                ++i;
+            while (centre(grid->patches[order[j]].box, axis) > pivot)
+                --j;
+            if (i <= j) {
+                const uint32_t tmp = order[i];
+                order[i] = order[j];
+                order[j] = tmp;
+                ++i;
+                if (j == 0)
+                    break;
+                --j;
+            }
+        }
+        if (mid <= j)
+            hi = j;
+        else if (mid >= i)
+            lo = i;
+        else
+            break;
+    }
+}
+
+static int longest_axis_of_centres(const uint32_t *order, size_t begin, size_t end,
+                                   const pc_patch_grid *grid)
+{
+    double box[6];
+    box_empty(box);
+    for (size_t k = begin; k < end; ++k) {
+        const double *b = grid->patches[order[k]].box;
+        const double c[3] = {centre(b, 0), centre(b, 1), centre(b, 2)};
+        box_add_point(box, c);
+    }
+    int axis = 0;
+    for (int k = 1; k < 3; ++k)
+        if (box[k + 3] - box[k] > box[axis + 3] - box[axis])
+            axis = k;
+    return axis;
+}
+
+projcurve_status pc_bvh_build(projcurve_context *ctx, pc_bvh *bvh, const pc_patch_grid *grid)
+{
+    memset(bvh, 0, sizeof *bvh);
+    const size_t n = grid->spans_u * grid->spans_v;
+    if (n == 0 || n > UINT32_MAX / 2)
+        return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "%zu patches exceed the BVH limit", n);
+    const size_t capacity = 2 * n; /* a binary tree with n leaves at most has 2n - 1 nodes */
+    bvh->nodes = malloc(capacity * sizeof(pc_bvh_node));
+    bvh->order = malloc(n * sizeof(uint32_t));
+    bvh->boxes = malloc(6 * n * sizeof(double));
+    build_item *work = malloc(capacity * sizeof(build_item));
+    if (bvh->nodes == NULL || bvh->order == NULL || bvh->boxes == NULL || work == NULL) {
+        free(work);
+        pc_bvh_free(bvh);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for the patch BVH");
+    }
+    for (size_t k = 0; k < n; ++k)
+        bvh->order[k] = (uint32_t)k;
+    size_t n_work = 0, n_nodes = 1;
+    work[n_work++] = (build_item){0, 0, (uint32_t)n, 1};
+    while (n_work > 0) {
+        const build_item it = work[--n_work];
+        pc_bvh_node *node = &bvh->nodes[it.node];
+        box_empty(node->box);
+        for (uint32_t k = it.begin; k < it.end; ++k)
+            box_add_box(node->box, grid->patches[bvh->order[k]].box);
+        if (it.depth > bvh->depth)
+            bvh->depth = it.depth;
+        if (it.end - it.begin <= PC_BVH_LEAF_SIZE) {
+            node->first = it.begin;
+            node->count = it.end - it.begin;
+            continue;
+        }
+        const uint32_t mid = it.begin + (it.end - it.begin) / 2;
+        select_median(bvh->order, it.begin, it.end, mid,
+                      grid, longest_axis_of_centres(bvh->order, it.begin, it.end, grid));
+        const uint32_t left = (uint32_t)n_nodes;
+        n_nodes += 2;
+        node->first = left;
+        node->count = 0;
+        work[n_work++] = (build_item){left, it.begin, mid, it.depth + 1};
+        work[n_work++] = (build_item){left + 1, mid, it.end, it.depth + 1};
+    }
+    free(work);
+    bvh->n_nodes = n_nodes;
+    for (size_t k = 0; k < n; ++k)
+        memcpy(bvh->boxes + 6 * k, grid->patches[bvh->order[k]].box, 6 * sizeof(double));
+    return PROJCURVE_OK;
+}
+
+void pc_bvh_free(pc_bvh *bvh)
+{
+    if (bvh == NULL)
+        return;
+    free(bvh->nodes);
+    free(bvh->order);
+    free(bvh->boxes);
+    memset(bvh, 0, sizeof *bvh);
+}
+
+/* Slab test: does the line origin + lambda dir, lambda in [lo, hi], meet the
+ * box grown by pad? */
+static int line_meets_box(const double box[6], pc_vec3 o, pc_vec3 d, double lo, double hi,
+                          double pad)
+{
+    const double oo[3] = {o.x, o.y, o.z}, dd[3] = {d.x, d.y, d.z};
+    for (int k = 0; k < 3; ++k) {
+        const double bmin = box[k] - pad, bmax = box[k + 3] + pad;
+        if (dd[k] == 0.0) {
+            if (oo[k] < bmin || oo[k] > bmax)
+                return 0;
+            continue;
+        }
+        double t0 = (bmin - oo[k]) / dd[k], t1 = (bmax - oo[k]) / dd[k];
+        if (t0 > t1) {
+            const double tmp = t0;
+            t0 = t1;
+            t1 = tmp;
+        }
+        if (t0 > lo)
+            lo = t0;
+        if (t1 < hi)
+            hi = t1;
+        if (!(lo <= hi))
+            return 0;
+    }
+    return 1;
+}
+
+static double box_distance_sq(const double box[6], pc_vec3 p)
+{
+    const double pp[3] = {p.x, p.y, p.z};
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double e = pp[k] < box[k] ? box[k] - pp[k] : (pp[k] > box[k + 3] ? pp[k] - box[k + 3] : 0.0);
+        d2 += e * e;
+    }
+    return d2;
+}
+
+/* Shared walk: `meets` decides for a box, visit is called for leaf patches. */
+typedef int (*box_test_fn)(const void *query, const double box[6]);
+
+static void walk(const pc_bvh *bvh, box_test_fn meets, const void *query, pc_bvh_visit_fn visit,
+                 void *user)
+{
+    if (bvh->n_nodes == 0)
+        return;
+    uint32_t stack[PC_BVH_MAX_DEPTH + 1];
+    size_t top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const pc_bvh_node *node = &bvh->nodes[stack[--top]];
+        if (!meets(query, node->box))
+            continue;
+        if (node->count > 0) {
+            for (uint32_t k = node->first; k < node->first + node->count; ++k)
+                if (meets(query, bvh->boxes + 6 * (size_t)k) && visit(user, bvh->order[k]))
+                    return;
+            continue;
+        }
+        /* Depth-first: at most one pending sibling per level. */
+        stack[top++] = node->first + 1;
+        stack[top++] = node->first;
+    }
+}
+
+typedef struct line_query {
+    pc_vec3 origin, dir;
+    double lo, hi, pad;
+} line_query;
+
+static int line_test(const void *query, const double box[6])
+{
+    const line_query *q = query;
+    return line_meets_box(box, q->origin, q->dir, q->lo, q->hi, q->pad);
+}
+
+void pc_bvh_query_line(const pc_bvh *bvh, pc_vec3 origin, pc_vec3 dir, double lambda_min,
+                       double lambda_max, double pad, pc_bvh_visit_fn visit, void *user)
+{
+    const line_query q = {origin, dir, lambda_min, lambda_max, pad};
+    walk(bvh, line_test, &q, visit, user);
+}
+
+typedef struct sphere_query {
+    pc_vec3 centre;
+    double radius_sq;
+} sphere_query;
+
+static int sphere_test(const void *query, const double box[6])
+{
+    const sphere_query *q = query;
+    return box_distance_sq(box, q->centre) <= q->radius_sq;
+}
+
+void pc_bvh_query_sphere(const pc_bvh *bvh, pc_vec3 p, double radius, pc_bvh_visit_fn visit,
+                         void *user)
+{
+    const sphere_query q = {p, radius * radius};
+    walk(bvh, sphere_test, &q, visit, user);
+}
