@@ -85,7 +85,7 @@ static int wave_fn(void *user, double t, double out[9])
     return 0;
 }
 
-/* A foot point of P(t) near the closest sample of a 200 x 200 grid (brute
+/* A foot point of P(t) near the closest sample of a 64 x 64 grid (brute
  * force, independent of the library's point projection), by Newton. */
 static int foot_point(const pc_projector *proj, double t, double uv[2])
 {
@@ -93,10 +93,10 @@ static int foot_point(const pc_projector *proj, double t, double uv[2])
     pc_vec3 p;
     pc_curve_eval(proj->curve, t, 0, NULL, &p);
     double best = INFINITY;
-    for (int i = 0; i <= 200; ++i)
-        for (int j = 0; j <= 200; ++j) {
-            const double u = s->domain[0] + (s->domain[1] - s->domain[0]) * i / 200.0;
-            const double v = s->domain[2] + (s->domain[3] - s->domain[2]) * j / 200.0;
+    for (int i = 0; i <= 64; ++i)
+        for (int j = 0; j <= 64; ++j) {
+            const double u = s->domain[0] + (s->domain[1] - s->domain[0]) * i / 64.0;
+            const double v = s->domain[2] + (s->domain[3] - s->domain[2]) * j / 64.0;
             pc_vec3 q;
             pc_nurbs_surface_eval(s, u, v, 0, NULL, NULL, &q);
             const double d = vec3_dist(p, q);
