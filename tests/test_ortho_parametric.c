@@ -447,7 +447,7 @@ static void test_centres(void)
     pc_shape_surface cyl_data = pc_shape_cylinder(5.0, 10.0);
     projcurve_surface *cyl = pc_shape_surface_create(&cyl_data);
     pc_shape_surface_free(&cyl_data);
-    const wave line = {{-2, -1, 5}, 0.0, 0.0, {1, 0.5, 0}, 0};   /* axis at t = 2 */
+    const wave line = {{-2, -1, 4}, 0.0, 0.0, {1, 0.5, 0.5}, 0};   /* axis at t = 2 */
     projcurve_curve *curve = NULL;
     CHECK_OK(projcurve_curve_create_callback(NULL, wave_fn, (void *)&line, 0.0, 4.0, &curve));
     projcurve_result *r = NULL;

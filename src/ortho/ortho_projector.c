@@ -1,5 +1,6 @@
 #include "ortho/ortho_projector.h"
 
+#include <float.h>
 #include <math.h>
 
 #include "ortho/morse_index.h"
@@ -168,7 +169,11 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
     out->dv = qd[1];
     out->ddu = qdd[0];
     out->ddv = qdd[1];
-    out->speed = vec3_norm(vec3_axpy(vec3_scale(sd[PC_D3_U], qd[0]), qd[1], sd[PC_D3_V]));
+    /* A foot point at rest (P' along the normal) has speed 0, which the
+     * engine would read as "unknown"; the smallest positive value says
+     * "known and tiny", so the step is bounded by the engine's cap in t. */
+    const double speed = vec3_norm(vec3_axpy(vec3_scale(sd[PC_D3_U], qd[0]), qd[1], sd[PC_D3_V]));
+    out->speed = speed > DBL_MIN ? speed : DBL_MIN;
     return 1;
 }
 
