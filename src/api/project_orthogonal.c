@@ -58,16 +58,24 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     projcurve_status status = pc_result_create(ctx, 3, &r);
     if (status == PROJCURVE_OK)
         status = pc_trace_branches(ctx, &proj, &o, &finder, &config, r);
+    /* A partial result (LIMIT_REACHED) is finished like a whole one. */
+    const projcurve_status traced = status;
+    if (status == PROJCURVE_ERR_LIMIT_REACHED)
+        status = PROJCURVE_OK;
+    if (status == PROJCURVE_OK)
+        status = pc_ortho_split_at_centres(ctx, &proj, r);
+    if (status == PROJCURVE_OK) {
+        name_singular_ends(r);
+        r->stats.tol_distance = distance_tolerance(&o, surface->size);
+        if (o.compose)
+            status = pc_refine_and_compose(ctx, &proj, &o, r);
+    }
+    /* The projector's functions cannot report a failed curve callback
+     * themselves; it is an error wherever it happened. */
     if (cache.callback_failed && (status == PROJCURVE_OK || status == PROJCURVE_ERR_LIMIT_REACHED))
         status = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "a curve callback failed while tracing");
     if (status == PROJCURVE_OK)
-        status = pc_ortho_split_at_centres(ctx, &proj, r);
-    if (status == PROJCURVE_OK || status == PROJCURVE_ERR_LIMIT_REACHED) {
-        name_singular_ends(r);
-        r->stats.tol_distance = distance_tolerance(&o, surface->size);
-    }
-    if (status == PROJCURVE_OK && o.compose)
-        status = pc_refine_and_compose(ctx, &proj, &o, r);
+        status = traced;
     pc_ortho_finder_free(&finder_state);
     if (status != PROJCURVE_OK && status != PROJCURVE_ERR_LIMIT_REACHED) {
         projcurve_result_destroy(r);

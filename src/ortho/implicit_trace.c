@@ -162,9 +162,12 @@ static projcurve_status step(projcurve_context *ctx, trace_run *run, pc_implicit
                            err <= TRACE_MAX_PREDICTOR_ERROR * moved + imp->newton_tol &&
                            turn_angle(cur->xd, next.xd) <= TRACE_MAX_TURN;
         if (accept) {
-            run->stats->error_sum += err;
-            if (err > run->stats->error_max)
-                run->stats->error_max = err;
+            /* Estimation error of the step relative to the model size,
+             * as the engine's statistics (seed 000 eq. (3.8) analogue). */
+            const double rel = err / imp->model_size;
+            run->stats->error_sum += rel;
+            if (rel > run->stats->error_max)
+                run->stats->error_max = rel;
             /* Grow back only after a first-try success: near a centre of
              * curvature the step then shrinks steadily instead of
              * oscillating across it. */

@@ -30,7 +30,7 @@ typedef struct pc_ortho_finder_state {
 /* Number of full foot-point searches per curve domain in the mid-curve
  * sweep (the brief's "at intervals"): a branch born between two searches
  * is found at the next one and traced back to where it was born. */
-#define PC_ORTHO_JUMP_CHECKS 32
+#define PC_ORTHO_JUMP_CHECKS 16
 
 /* Sets up finder over state for surface and curve. Release with
  * pc_ortho_finder_free. */
