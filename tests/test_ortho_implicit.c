@@ -213,13 +213,19 @@ static void test_shape(const char *name, shape s, wave w, double t0, double t1)
     const double eps_d = 1e-5;
     projcurve_curve *curve = NULL;
     CHECK_OK(projcurve_curve_create_callback(NULL, wave_fn, &w, t0, t1, &curve));
-    for (long long method = 0; method <= 1; ++method) {
-        projcurve_options *o = make_options(eps_d, method);
+    /* Second order and RK4 with arc-length steps, then second order with a
+     * constant parameter step. */
+    static const char *const variants[3] = {"second-order", "rk4", "constant dt"};
+    for (int variant = 0; variant < 3; ++variant) {
+        projcurve_options *o = make_options(eps_d, variant == 1 ? PROJCURVE_METHOD_RK4
+                                                                : PROJCURVE_METHOD_SECOND_ORDER);
+        if (variant == 2)
+            CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_PARAM_STEP, 0.05));
         projcurve_result *r = NULL;
         CHECK_OK(projcurve_project_orthogonal_implicit(NULL, shape_fn, &s, 20.0, curve, o, &r));
         if (r) {
             char what[64];
-            snprintf(what, sizeof what, "%s %s", name, method ? "rk4" : "second-order");
+            snprintf(what, sizeof what, "%s %s", name, variants[variant]);
             check_against_oracle(what, r, &s, &w, t0, t1, eps_d);
         }
         projcurve_result_destroy(r);

@@ -109,77 +109,99 @@ static projcurve_status find_seed(projcurve_context *ctx, const pc_implicit *imp
 typedef struct trace_run {
     pc_implicit imp;              /* with the gradient floor set from the seed */
     const struct projcurve_options *opts;
-    double dt_fixed, ds_nominal, dt_min;
+    double dt_fixed;              /* PARAM_STEP, 0 = arc-length steps */
+    double ds_nominal, dt_max, dt_min;
     pc_stats *stats;
 } trace_run;
 
-/* One accepted step from *cur, or a reason to stop. *end is set when the
- * branch ends (with its reason); otherwise *cur advances. */
+/* Outcome of one attempted step. */
+typedef struct attempt {
+    pc_implicit_point next;
+    double err;             /* |predicted - corrected| */
+    int accepted;
+    int index_changed;      /* corrected, but across a centre of curvature */
+} attempt;
+
+/* Predicts and corrects from cur to t_new and decides whether to accept. */
+static projcurve_status try_step(projcurve_context *ctx, trace_run *run,
+                                 const pc_implicit_point *cur, double t_new, attempt *out)
+{
+    const pc_implicit *imp = &run->imp;
+    pc_vec3 x_pred, x;
+    int solved = 0, converged = 0, iterations = 0, next_solved = 0;
+    out->accepted = out->index_changed = 0;
+    ++run->stats->steps;
+    projcurve_status status =
+        predict(ctx, imp, run->opts->method, cur, t_new - cur->t, &x_pred, &solved);
+    x = x_pred;
+    if (status == PROJCURVE_OK && solved)
+        status = pc_implicit_correct(ctx, imp, t_new, &x, &converged, &iterations);
+    run->stats->newton_iterations += iterations;
+    if (status == PROJCURVE_OK && converged)
+        status = pc_implicit_point_at(ctx, imp, t_new, x, &out->next, &next_solved);
+    if (status != PROJCURVE_OK || !converged || !next_solved)
+        return status;
+    out->err = vec3_dist(x, x_pred);
+    /* A change of the Morse index (which includes a sign change of det K)
+     * means a centre of curvature lies within the step. */
+    out->index_changed = out->next.index != cur->index;
+    out->accepted = !out->index_changed &&
+                    out->err <= TRACE_MAX_PREDICTOR_ERROR * vec3_dist(x, cur->x) +
+                                    imp->newton_tol &&
+                    turn_angle(cur->xd, out->next.xd) <= TRACE_MAX_TURN;
+    return PROJCURVE_OK;
+}
+
+/* The parameter step of attempt number `attempt` from cur. */
+static double step_size(const trace_run *run, const pc_implicit_point *cur, double ds,
+                        int attempt_no)
+{
+    if (run->dt_fixed > 0.0)
+        return ldexp(run->dt_fixed, -attempt_no);
+    const double speed = vec3_norm(cur->xd);
+    /* A foot point at rest (P' along the normal) gets the largest step. */
+    return speed * run->dt_max > ds ? ds / speed : run->dt_max;
+}
+
+/* One accepted step from *cur, or a reason to stop: *ended is set with
+ * *end when the branch ends; otherwise *cur advances. */
 static projcurve_status step(projcurve_context *ctx, trace_run *run, pc_implicit_point *cur,
                              double *ds, int *ended, projcurve_branch_end *end)
 {
-    const pc_implicit *imp = &run->imp;
-    const double t1 = imp->curve->t1;
-    int sign_change_seen = 0;
-    for (int attempt = 0; attempt < TRACE_MAX_REJECTS; ++attempt) {
-        const double speed = vec3_norm(cur->xd);
-        double dt = run->dt_fixed > 0.0 ? run->dt_fixed : *ds / (speed > 0.0 ? speed : 1.0);
-        if (run->dt_fixed > 0.0)
-            dt = ldexp(run->dt_fixed, -attempt);
+    const double t1 = run->imp.curve->t1;
+    int centre_seen = 0;
+    for (int attempt_no = 0; attempt_no < TRACE_MAX_REJECTS; ++attempt_no) {
+        double dt = step_size(run, cur, *ds, attempt_no);
         if (dt > t1 - cur->t)
             dt = t1 - cur->t;
-        if (dt < run->dt_min) {
-            *ended = 1;
-            *end = (sign_change_seen || fabs(cur->det) < TRACE_DET_SMALL)
-                       ? PROJCURVE_END_CURVATURE_CENTRE
-                       : PROJCURVE_END_FAILED;
-            return PROJCURVE_OK;
-        }
+        if (dt < run->dt_min)
+            break;
         const double t_new = t1 - cur->t - dt <= run->dt_min ? t1 : cur->t + dt;
-        pc_vec3 x_pred, x;
-        int solved = 0, converged = 0, iterations = 0;
-        ++run->stats->steps;
-        projcurve_status status =
-            predict(ctx, imp, run->opts->method, cur, t_new - cur->t, &x_pred, &solved);
-        x = x_pred;
-        if (status == PROJCURVE_OK && solved)
-            status = pc_implicit_correct(ctx, imp, t_new, &x, &converged, &iterations);
-        run->stats->newton_iterations += iterations;
-        pc_implicit_point next;
-        int next_solved = 0;
-        if (status == PROJCURVE_OK && converged)
-            status = pc_implicit_point_at(ctx, imp, t_new, x, &next, &next_solved);
+        attempt a;
+        const projcurve_status status = try_step(ctx, run, cur, t_new, &a);
         if (status != PROJCURVE_OK)
             return status;
-        const double moved = vec3_dist(x, cur->x);
-        const double err = vec3_dist(x, x_pred);
-        /* A change of the Morse index (or of the sign of det K, which it
-         * includes) means a centre of curvature lies within the step. */
-        const int same_side = next_solved && next.index == cur->index;
-        if (converged && next_solved && !same_side)
-            sign_change_seen = 1;
-        const int accept = solved && converged && same_side &&
-                           err <= TRACE_MAX_PREDICTOR_ERROR * moved + imp->newton_tol &&
-                           turn_angle(cur->xd, next.xd) <= TRACE_MAX_TURN;
-        if (accept) {
-            /* Estimation error of the step relative to the model size,
-             * as the engine's statistics (seed 000 eq. (3.8) analogue). */
-            const double rel = err / imp->model_size;
+        centre_seen = centre_seen || a.index_changed;
+        if (a.accepted) {
+            /* Estimation error relative to the model size, as the engine's
+             * statistics (the analogue of seed 000 eq. (3.8)). */
+            const double rel = a.err / run->imp.model_size;
             run->stats->error_sum += rel;
             if (rel > run->stats->error_max)
                 run->stats->error_max = rel;
             /* Grow back only after a first-try success: near a centre of
              * curvature the step then shrinks steadily instead of
              * oscillating across it. */
-            if (attempt == 0 && run->dt_fixed <= 0.0 && *ds < run->ds_nominal)
+            if (attempt_no == 0 && *ds < run->ds_nominal)
                 *ds = fmin(run->ds_nominal, 2.0 * *ds);
-            *cur = next;
+            *cur = a.next;
             return PROJCURVE_OK;
         }
         *ds *= 0.5;
     }
     *ended = 1;
-    *end = sign_change_seen ? PROJCURVE_END_CURVATURE_CENTRE : PROJCURVE_END_FAILED;
+    *end = (centre_seen || fabs(cur->det) < TRACE_DET_SMALL) ? PROJCURVE_END_CURVATURE_CENTRE
+                                                             : PROJCURVE_END_FAILED;
     return PROJCURVE_OK;
 }
 
@@ -193,6 +215,7 @@ projcurve_status pc_implicit_trace(projcurve_context *ctx, pc_implicit *imp,
     const double span = imp->curve->t1 - imp->curve->t0;
     run.dt_min = TRACE_MIN_DT_REL * span;
     run.dt_fixed = opts->param_step;
+    run.dt_max = opts->arc_step_fraction * span;
     const double length = curve_length_estimate(imp->curve);
     if (length < 0.0)
         return pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "curve callback failed");
