@@ -49,7 +49,7 @@ static projcurve_status predict(projcurve_context *ctx, const pc_implicit *imp, 
 {
     projcurve_status status;
     if (method == PROJCURVE_METHOD_RK4) {
-        pc_vec3 k2, k3, k4;
+        pc_vec3 k2 = pt->xd, k3 = pt->xd, k4 = pt->xd;
         int ok2 = 0, ok3 = 0, ok4 = 0;
         status = pc_implicit_velocity(ctx, imp, pt->t + 0.5 * dt,
                                       vec3_axpy(pt->x, 0.5 * dt, pt->xd), &k2, NULL, &ok2);
