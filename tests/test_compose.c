@@ -11,7 +11,9 @@
 #include <string.h>
 
 #include "check.h"
+#include "api/handles.h"
 #include "compose/compose.h"
+#include "shapes.h"
 
 #define MAX_ORDER (PROJCURVE_MAX_DEGREE + 1)
 #define N_SAMPLES 100
@@ -228,11 +230,57 @@ static void test_rational_cylinder(void)
     }
 }
 
+/* The patches of real decomposed surfaces (the layout refine/ composes
+ * with): random segments inside every patch of a rational bumpy surface, a
+ * torus and a quintic plane, composed and compared with the library's NURBS
+ * evaluation of the whole surface at 100 parameters. */
+static void test_decomposed_surfaces(void)
+{
+    const pc_shape_surface shapes[] = {pc_shape_bumpy(6004, 4, 3, 0.4, 1), pc_shape_torus(3.0, 1.0),
+                                       pc_shape_plane(5, 4, 2, 3)};
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 6005);
+    for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; ++k) {
+        projcurve_surface *s = pc_shape_surface_create(&shapes[k]);
+        CHECK(s != NULL);
+        if (s == NULL)
+            continue;
+        const pc_patch_grid *g = &s->grid;
+        double worst = 0.0;
+        for (size_t i = 0; i < g->spans_u * g->spans_v; ++i) {
+            const pc_bezier_patch *pt = &g->patches[i];
+            for (int trial = 0; trial < 4; ++trial) {
+                double uv0[2], uv1[2], out[4 * 2 * MAX_ORDER];
+                random_uv(&rng, pt, uv0);
+                random_uv(&rng, pt, uv1);
+                pc_compose_segment(pt, uv0, uv1, out);
+                for (int j = 0; j < N_SAMPLES; ++j) {
+                    const double sp = (double)j / (N_SAMPLES - 1);
+                    double a[4];
+                    curve_point_h(pt->deg_u + pt->deg_v, out, sp, a);
+                    pc_vec3 e;
+                    pc_nurbs_surface_eval(&s->nurbs, uv0[0] + sp * (uv1[0] - uv0[0]),
+                                          uv0[1] + sp * (uv1[1] - uv0[1]), 0, NULL, NULL, &e);
+                    const double d = vec3_dist(vec3(a[0] / a[3], a[1] / a[3], a[2] / a[3]), e);
+                    worst = d > worst ? d : worst;
+                }
+            }
+        }
+        CHECK(worst <= REL_TOL * s->size);
+        projcurve_surface_destroy(s);
+    }
+    for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; ++k) {
+        pc_shape_surface copy = shapes[k];
+        pc_shape_surface_free(&copy);
+    }
+}
+
 int main(void)
 {
     test_random_patches();
     test_degree_elevation();
     test_bilinear_diagonal();
     test_rational_cylinder();
+    test_decomposed_surfaces();
     return pc_test_finish("test_compose");
 }

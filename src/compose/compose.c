@@ -10,64 +10,58 @@
  *   R_k = sum_{a+b=k} [C(p,a) C(q,b) / C(n,k)] f(x0^{p-a} x1^a ; y0^{q-b} y1^b).
  *
  * The bi-blossom values H[a][b] = f(x0^{p-a} x1^a ; y0^{q-b} y1^b) are the
- * control net of the patch restricted to [x0,x1] x [y0,y1] (rows first, then
- * columns), computed with de Casteljau steps whose parameters lie in [0, 1]:
- * every operation is an affine combination, so the result is as accurate as
- * the patch evaluation itself. Homogeneous points make the rational case the
- * same code.
+ * control net of the patch restricted to [x0,x1] x [y0,y1]; by linearity they
+ * are H = Au^T P Av with the restriction matrices of the two Bernstein bases
+ * (the blossoms of the basis functions, see restriction_matrix). Every weight
+ * is non-negative and each set sums to 1, so the result is a chain of convex
+ * combinations of the control points: as accurate as evaluating the patch.
+ * Homogeneous points make the rational case the same code.
  */
 #include "compose.h"
-
-#include <string.h>
 
 #include "projcurve.h"
 
 /* Largest number of control points per direction of a patch. */
 #define PC_COMPOSE_MAX_ORDER (PROJCURVE_MAX_DEGREE + 1)
+/* Patches up to this order per direction (bicubic is 4) use small stack
+ * buffers: the large ones cost page probes and cache misses on every call. */
+#define PC_COMPOSE_SMALL_ORDER 8
 
-/* Linear interpolation of homogeneous points: out = (1 - t) a + t b. */
-static inline void lerp4(const double *a, const double *b, double t, double *out)
-{
-    const double s = 1.0 - t;
-    for (int c = 0; c < 4; ++c)
-        out[c] = s * a[c] + t * b[c];
-}
+#if defined(__GNUC__)
+#define PC_NOINLINE __attribute__((noinline))
+#else
+#define PC_NOINLINE
+#endif
 
 /*
- * Blossom values of a degree-`deg` Bezier curve with homogeneous control
- * points in[0..deg] (point i at in + 4 * i * stride): writes
- * out[a] = f(x0^{deg-a} x1^a), a = 0..deg (at out + 4 * a * stride), i.e. the
- * control points of the curve restricted to [x0, x1]. `in` and `out` may be
- * the same array. O(deg^3), no allocation: the triangle at x1 is kept in
- * `tri` and, for each a, a second de Casteljau pass at x0 runs in `work`.
+ * Restriction matrix of the degree-p Bernstein basis to [x0, x1]:
+ * A[i * (p + 1) + a] = blossom of B_i^p at (x0^{p-a}, x1^a), so that the
+ * control points of a curve restricted to [x0, x1] are
+ * f(x0^{p-a} x1^a) = sum_i A[i][a] b_i. The blossom of B_i^p at (t_1..t_p)
+ * is the coefficient of z^i in prod_k ((1 - t_k) + t_k z): a product of
+ * linear factors with non-negative coefficients for x0, x1 in [0, 1], so
+ * every entry is a sum of non-negative terms and each column sums to 1.
  */
-static void restrict_curve(const double *in, size_t stride, int deg, double x0, double x1,
-                           double *out)
+static void restriction_matrix(int p, double x0, double x1, double *A)
 {
-    double tri[PC_COMPOSE_MAX_ORDER][4]; /* row a of the triangle at x1 */
-    double work[PC_COMPOSE_MAX_ORDER][4];
-    double result[PC_COMPOSE_MAX_ORDER][4];
-
-    for (int i = 0; i <= deg; ++i)
-        memcpy(tri[i], in + 4 * (size_t)i * stride, sizeof tri[i]);
-    for (int a = 0; a <= deg; ++a) {
-        /* tri[0..deg-a] is the control polygon of g(.) = f(x1^a, .), a curve
-         * of degree deg - a: evaluate its blossom at x0^{deg-a}. */
-        const int m = deg - a;
-        memcpy(work, tri, sizeof work[0] * (size_t)(m + 1));
-        for (int r = 1; r <= m; ++r)
-            for (int i = 0; i <= m - r; ++i)
-                lerp4(work[i], work[i + 1], x0, work[i]);
-        memcpy(result[a], work[0], sizeof result[a]);
-        /* Next row of the triangle: one more argument x1. */
-        for (int i = 0; i < m; ++i)
-            lerp4(tri[i], tri[i + 1], x1, tri[i]);
+    const size_t order = (size_t)(p + 1);
+    for (int a = 0; a <= p; ++a) {
+        double poly[PC_COMPOSE_MAX_ORDER];
+        int len = 1;
+        poly[0] = 1.0;
+        for (int k = 0; k < p; ++k, ++len) { /* multiply by (1 - x) + x z */
+            const double x = k < a ? x1 : x0, r = 1.0 - x;
+            poly[len] = poly[len - 1] * x;
+            for (int j = len - 1; j > 0; --j)
+                poly[j] = poly[j] * r + poly[j - 1] * x;
+            poly[0] *= r;
+        }
+        for (int i = 0; i <= p; ++i)
+            A[(size_t)i * order + (size_t)a] = poly[i];
     }
-    for (int a = 0; a <= deg; ++a)
-        memcpy(out + 4 * (size_t)a * stride, result[a], sizeof result[a]);
 }
 
-/* Binomial coefficients C(n, 0..n) as doubles (exact for n <= 60). */
+/* Binomial coefficients C(n, 0..n) as doubles (exact for n <= 56). */
 static void binomial_row(int n, double *row)
 {
     row[0] = 1.0;
@@ -75,23 +69,46 @@ static void binomial_row(int n, double *row)
         row[k] = row[k - 1] * (double)(n - k + 1) / (double)k;
 }
 
-void pc_compose_segment(const pc_bezier_patch *patch, const double uv0[2], const double uv1[2],
-                        double *cw_out)
+/* The composition with caller-provided scratch: au (p+1)^2, av (q+1)^2 and
+ * net 4 (p+1)(q+1) doubles. */
+static void compose_with(const pc_bezier_patch *patch, const double uv0[2], const double uv1[2],
+                         double *cw_out, double *au, double *av, double *net)
 {
     const int p = patch->deg_u, q = patch->deg_v, n = p + q;
+    const size_t pu = (size_t)(p + 1), pv = (size_t)(q + 1);
     const double du = patch->u1 - patch->u0, dv = patch->v1 - patch->v0;
-    const double x0 = (uv0[0] - patch->u0) / du, x1 = (uv1[0] - patch->u0) / du;
-    const double y0 = (uv0[1] - patch->v0) / dv, y1 = (uv1[1] - patch->v0) / dv;
-    /* H[b][a] (u index fastest, as the patch net) = f(x0^{p-a} x1^a ; y0^{q-b} y1^b). */
-    double net[PC_COMPOSE_MAX_ORDER * PC_COMPOSE_MAX_ORDER * 4];
-    const size_t row = (size_t)(p + 1);
+    restriction_matrix(p, (uv0[0] - patch->u0) / du, (uv1[0] - patch->u0) / du, au);
+    restriction_matrix(q, (uv0[1] - patch->v0) / dv, (uv1[1] - patch->v0) / dv, av);
 
-    memcpy(net, patch->cw, sizeof(double) * 4 * row * (size_t)(q + 1));
-    for (int b = 0; b <= q; ++b)           /* restrict every u-row to [x0, x1] */
-        restrict_curve(net + 4 * row * (size_t)b, 1, p, x0, x1, net + 4 * row * (size_t)b);
-    for (int a = 0; a <= p; ++a)           /* then every v-column to [y0, y1] */
-        restrict_curve(net + 4 * (size_t)a, row, q, y0, y1, net + 4 * (size_t)a);
+    /* net[b][a] = H[a][b] = f(x0^{p-a} x1^a ; y0^{q-b} y1^b)
+     *           = sum_j av[j][b] sum_i au[i][a] P_ij: each row j of the
+     * patch is restricted in u, then spread over the H[.][b]. */
+    for (size_t k = 0; k < 4 * pu * pv; ++k)
+        net[k] = 0.0;
+    for (size_t j = 0; j < pv; ++j) {
+        const double *pj = patch->cw + 4 * pu * j;
+        for (size_t a = 0; a < pu; ++a) {
+            double x = 0.0, y = 0.0, z = 0.0, w = 0.0;
+            for (size_t i = 0; i < pu; ++i) {
+                const double m = au[i * pu + a];
+                const double *c = pj + 4 * i;
+                x += m * c[0];
+                y += m * c[1];
+                z += m * c[2];
+                w += m * c[3];
+            }
+            for (size_t b = 0; b < pv; ++b) {
+                const double m = av[j * pv + b];
+                double *h = net + 4 * (pu * b + a);
+                h[0] += m * x;
+                h[1] += m * y;
+                h[2] += m * z;
+                h[3] += m * w;
+            }
+        }
+    }
 
+    /* R_k = sum_{a+b=k} C(p,a) C(q,b) / C(n,k) H[a][b] */
     double cp[PC_COMPOSE_MAX_ORDER], cq[PC_COMPOSE_MAX_ORDER], cn[2 * PC_COMPOSE_MAX_ORDER];
     binomial_row(p, cp);
     binomial_row(q, cq);
@@ -103,11 +120,36 @@ void pc_compose_segment(const pc_bezier_patch *patch, const double uv0[2], const
         for (int a = a_lo; a <= a_hi; ++a) {
             const int b = k - a;
             const double weight = cp[a] * cq[b] / cn[k];
-            const double *h = net + 4 * (row * (size_t)b + (size_t)a);
-            for (int c = 0; c < 4; ++c)
-                r[c] += weight * h[c];
+            const double *h = net + 4 * (pu * (size_t)b + (size_t)a);
+            r[0] += weight * h[0];
+            r[1] += weight * h[1];
+            r[2] += weight * h[2];
+            r[3] += weight * h[3];
         }
     }
+}
+
+/* Patches of high degree: buffers for the largest order. */
+static PC_NOINLINE void compose_large(const pc_bezier_patch *patch, const double uv0[2],
+                                      const double uv1[2], double *cw_out)
+{
+    double au[PC_COMPOSE_MAX_ORDER * PC_COMPOSE_MAX_ORDER];
+    double av[PC_COMPOSE_MAX_ORDER * PC_COMPOSE_MAX_ORDER];
+    double net[4 * PC_COMPOSE_MAX_ORDER * PC_COMPOSE_MAX_ORDER];
+    compose_with(patch, uv0, uv1, cw_out, au, av, net);
+}
+
+void pc_compose_segment(const pc_bezier_patch *patch, const double uv0[2], const double uv1[2],
+                        double *cw_out)
+{
+    if (patch->deg_u >= PC_COMPOSE_SMALL_ORDER || patch->deg_v >= PC_COMPOSE_SMALL_ORDER) {
+        compose_large(patch, uv0, uv1, cw_out);
+        return;
+    }
+    double au[PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
+    double av[PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
+    double net[4 * PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
+    compose_with(patch, uv0, uv1, cw_out, au, av, net);
 }
 
 void pc_compose_to_cartesian(int degree, const double *cw, double *ctrl, double *weights)

@@ -13,13 +13,19 @@
 
 typedef struct pc_hit {
     double u, v, lambda;
+    double residual; /* distance of S(u, v) to the line */
     unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY */
 } pc_hit;
 
-/* A growable list of hits owned by the caller (pc_hit_list_free). */
+/* A growable list of hits owned by the caller (pc_hit_list_free). Start it
+ * zeroed ({0}). It also keeps the scratch memory of the Bezier clipping, so
+ * that a caller who reuses one list for many rays pays no allocation per ray
+ * once the list has grown. */
 typedef struct pc_hit_list {
     pc_hit *items;
     size_t count, capacity;
+    double *work;          /* clipping scratch, reused between calls */
+    size_t work_capacity;  /* doubles */
 } pc_hit_list;
 
 void pc_hit_list_free(pc_hit_list *list);
@@ -28,13 +34,17 @@ void pc_hit_list_free(pc_hit_list *list);
  * ray_only, only lambda > 0. dir need not be unit length but must be finite
  * and non-zero (the caller validates). Each hit satisfies the line equation
  * to ~1e-12 of the model size. Hits that coincide (shared patch edges and
- * corners) are reported once. Statuses: OK, NO_MEMORY. */
+ * corners) are reported once. Statuses: OK, NO_MEMORY (OVERFLOW for degrees
+ * out of range, which a valid surface never has). The list's scratch is
+ * reused: calling again with the same list allocates nothing new. */
 projcurve_status pc_intersect_line(projcurve_context *ctx, const projcurve_surface *s,
                                    pc_vec3 origin, pc_vec3 dir, int ray_only,
                                    pc_hit_list *hits);
 
 /* Hits restricted to the given patches (indices into s->grid.patches), used
- * by jump detection to look only at the patches near a predicted point. */
+ * by jump detection to look only at the patches near a predicted point.
+ * An index may repeat. Statuses: as above, and INDEX for an index past the
+ * last patch. */
 projcurve_status pc_intersect_line_patches(projcurve_context *ctx, const projcurve_surface *s,
                                            const size_t *patch_indices, size_t n_patches,
                                            pc_vec3 origin, pc_vec3 dir, int ray_only,

@@ -31,7 +31,10 @@ typedef struct pc_branch {
 
 typedef struct pc_stats {
     double points, steps, newton_iterations, jumps, pieces;
-    double error_sum, error_max; /* |predicted - corrected| over corrected steps */
+    double error_sum, error_max; /* estimation error of each corrected step:
+                                    seed 000 eq. (3.8) (the projector's
+                                    guess_error) */
+    double error_count;          /* steps summed into error_sum */
     double tol_distance;
 } pc_stats;
 

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Fuzzes every file reader with libFuzzer for a bounded time.
+#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 60; PROJCURVE_FUZZ_SECONDS also works)
+# Builds the targets of tests/fuzz with clang (-DPROJCURVE_FUZZ=ON) in
+# build-fuzz/, seeds each from ../shared, and stops at the first crash,
+# leak or hang (the reproducer is left in build-fuzz/artifacts/).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+seconds=${1:-${PROJCURVE_FUZZ_SECONDS:-60}}
+if ! command -v clang >/dev/null; then
+    echo "clang not found: fuzzing skipped"
+    exit 0
+fi
+
+cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DPROJCURVE_FUZZ=ON -DPROJCURVE_BUILD_BENCH=OFF -DPROJCURVE_BUILD_CLI=OFF
+cmake --build build-fuzz -j2 --target fuzz_iges fuzz_step fuzz_gismo fuzz_teapot
+
+shared=../shared
+declare -A seeds=(
+    [iges]="$shared/cases"
+    [step]="$shared/data/real/test-joinsurf_01.stp"
+    [gismo]="$shared/data/real/horn.xml $shared/data/real/shroud_kaplan.xml"
+    [teapot]="$shared/data/real/teapot_newell_spd.txt"
+)
+mkdir -p build-fuzz/artifacts
+for reader in iges step gismo teapot; do
+    corpus=build-fuzz/corpus/$reader
+    mkdir -p "$corpus"
+    for seed in ${seeds[$reader]}; do
+        if [[ -d $seed ]]; then cp -n "$seed"/*.igs "$corpus"/ 2>/dev/null || true
+        elif [[ -f $seed ]]; then cp -n "$seed" "$corpus"/
+        fi
+    done
+    echo "==== fuzz_$reader: ${seconds}s ===="
+    build-fuzz/tests/fuzz/fuzz_$reader -max_total_time="$seconds" -timeout=10 \
+        -rss_limit_mb=2048 -print_final_stats=1 \
+        -artifact_prefix=build-fuzz/artifacts/"$reader"- "$corpus"
+done
+echo "fuzzing: no crash, leak or hang found"

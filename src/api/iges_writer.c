@@ -1,0 +1,206 @@
+/*
+ * Public IGES writer: surfaces (128), curves (126) and projection results,
+ * each composed branch as its 3D curve (126), its (u, v) pcurve (126 of
+ * degree 1 through the traced points, in the plane z = 0) and a curve on
+ * surface (142, "projection of a curve onto the surface") tying them to the
+ * surface. A surface is written once however often it is added (entities
+ * are compared by their parameter text, i.e. exactly).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/handles.h"
+#include "common/error.h"
+#include "io/iges_write.h"
+
+#define PC_IGES_CURVE_ON_SURFACE 142
+#define PC_IGES_COS_PROJECTION 1 /* CRTN: created as a projection */
+#define PC_IGES_COS_PREFER_3D 2  /* PREF: the 3D curve is exact, the pcurve a polyline */
+#define PC_IGES_COS_PREFER_2D 1
+
+struct projcurve_iges_writer {
+    pc_iges_out out;
+};
+
+projcurve_status projcurve_iges_writer_create(projcurve_context *ctx,
+                                              projcurve_iges_writer **out)
+{
+    PC_REQUIRE(ctx, out, "out");
+    projcurve_iges_writer *w = calloc(1, sizeof *w);
+    if (w == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory creating an IGES writer");
+    *out = w;
+    return PROJCURVE_OK;
+}
+
+void projcurve_iges_writer_destroy(projcurve_iges_writer *writer)
+{
+    if (writer == NULL)
+        return;
+    pc_iges_out_free(&writer->out);
+    free(writer);
+}
+
+/* Adds entity 128 unless an identical one is there; *de gets its pointer. */
+static projcurve_status add_surface(projcurve_context *ctx, projcurve_iges_writer *w,
+                                    const projcurve_surface *s, size_t *de)
+{
+    pc_text_buf b = {0};
+    pc_iges_format_surface(&b, &s->nurbs);
+    if (b.failed) {
+        free(b.text);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory formatting a surface");
+    }
+    for (size_t i = 0; i < w->out.count; ++i)
+        if (w->out.entities[i].type == 128 && strcmp(w->out.entities[i].params, b.text) == 0) {
+            free(b.text);
+            *de = 2 * i + 1;
+            return PROJCURVE_OK;
+        }
+    const projcurve_status st =
+        pc_iges_out_add(ctx, &w->out, 128, 0, PC_IGES_STATUS_INDEPENDENT, &b, de);
+    free(b.text);
+    return st;
+}
+
+projcurve_status projcurve_iges_writer_add_surface(projcurve_context *ctx,
+                                                   projcurve_iges_writer *w,
+                                                   const projcurve_surface *s)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, s, "surface");
+    size_t de;
+    return add_surface(ctx, w, s, &de);
+}
+
+static projcurve_status add_curve(projcurve_context *ctx, projcurve_iges_writer *w,
+                                  const projcurve_curve *c, const char *status, size_t *de)
+{
+    if (c->kind != PC_CURVE_NURBS)
+        return pc_fail(ctx, PROJCURVE_ERR_WRONG_KIND,
+                       "a callback curve has no NURBS form to write");
+    pc_text_buf b = {0};
+    pc_iges_format_curve(&b, &c->nurbs, 0);
+    const projcurve_status st = pc_iges_out_add(ctx, &w->out, 126, 0, status, &b, de);
+    free(b.text);
+    return st;
+}
+
+projcurve_status projcurve_iges_writer_add_curve(projcurve_context *ctx,
+                                                 projcurve_iges_writer *w,
+                                                 const projcurve_curve *c)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, c, "curve");
+    size_t de;
+    return add_curve(ctx, w, c, PC_IGES_STATUS_INDEPENDENT, &de);
+}
+
+/* The branch's traced (u, v) points as a degree-1 pcurve in z = 0,
+ * parametrised by the curve parameter t (repeated t values dropped). */
+static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   const projcurve_result *r, size_t branch, size_t *de)
+{
+    size_t n = 0;
+    double probe[3];
+    projcurve_status st = projcurve_result_branch_points(ctx, r, branch, 0, probe, &n);
+    if (st != PROJCURVE_OK)
+        return st;
+    if (n < 2) {
+        *de = 0;
+        return PROJCURVE_OK;
+    }
+    double *tuv = malloc(3 * n * sizeof *tuv);
+    double *xyz = malloc(3 * n * sizeof *xyz);
+    double *t = malloc(n * sizeof *t);
+    if (tuv == NULL || xyz == NULL || t == NULL) {
+        st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory writing a pcurve");
+        goto cleanup;
+    }
+    size_t got = 0;
+    if ((st = projcurve_result_branch_points(ctx, r, branch, n, tuv, &got)) != PROJCURVE_OK)
+        goto cleanup;
+    /* Branches may be traced with t decreasing: keep t increasing. */
+    const int reversed = tuv[0] > tuv[3 * (got - 1)];
+    size_t m = 0;
+    for (size_t k = 0; k < got; ++k) {
+        const size_t i = reversed ? got - 1 - k : k;
+        if (m > 0 && !(tuv[3 * i] > t[m - 1]))
+            continue;
+        t[m] = tuv[3 * i];
+        xyz[3 * m] = tuv[3 * i + 1];
+        xyz[3 * m + 1] = tuv[3 * i + 2];
+        xyz[3 * m + 2] = 0.0;
+        ++m;
+    }
+    *de = 0;
+    if (m >= 2) {
+        pc_text_buf b = {0};
+        pc_iges_format_polyline(&b, xyz, t, m, 1);
+        st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PARAMETRIC_PART, &b, de);
+        free(b.text);
+    }
+cleanup:
+    free(tuv);
+    free(xyz);
+    free(t);
+    return st;
+}
+
+static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   size_t surface_de, const projcurve_result *r, size_t branch)
+{
+    size_t pcurve_de = 0, curve_de = 0;
+    projcurve_status st = add_pcurve(ctx, w, r, branch, &pcurve_de);
+    if (st != PROJCURVE_OK)
+        return st;
+    projcurve_curve *c = NULL;
+    st = projcurve_result_branch_curve(ctx, r, branch, &c);
+    if (st == PROJCURVE_OK) {
+        st = add_curve(ctx, w, c, PC_IGES_STATUS_PART, &curve_de);
+        projcurve_curve_destroy(c);
+    } else if (st == PROJCURVE_ERR_INVALID_ARGUMENT) {
+        st = PROJCURVE_OK; /* not composed: the pcurve alone describes it */
+    }
+    if (st != PROJCURVE_OK || (pcurve_de == 0 && curve_de == 0))
+        return st;
+    pc_text_buf b = {0};
+    pc_text_buf_int(&b, PC_IGES_COS_PROJECTION);
+    pc_text_buf_int(&b, (long long)surface_de);
+    pc_text_buf_int(&b, (long long)pcurve_de);
+    pc_text_buf_int(&b, (long long)curve_de);
+    pc_text_buf_int(&b, curve_de ? PC_IGES_COS_PREFER_3D : PC_IGES_COS_PREFER_2D);
+    pc_text_buf_end(&b);
+    size_t de;
+    st = pc_iges_out_add(ctx, &w->out, PC_IGES_CURVE_ON_SURFACE, 0, PC_IGES_STATUS_INDEPENDENT, &b,
+                         &de);
+    free(b.text);
+    return st;
+}
+
+projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
+                                                  projcurve_iges_writer *w,
+                                                  const projcurve_surface *s,
+                                                  const projcurve_result *r)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, s, "surface");
+    PC_REQUIRE(ctx, r, "result");
+    if (projcurve_result_point_dim(r) != 3)
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "the result is not on a parametric surface (implicit projection)");
+    size_t surface_de;
+    projcurve_status st = add_surface(ctx, w, s, &surface_de);
+    const size_t n = projcurve_result_branch_count(r);
+    for (size_t b = 0; st == PROJCURVE_OK && b < n; ++b)
+        st = add_branch(ctx, w, surface_de, r, b);
+    return st;
+}
+
+projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,
+                                             const projcurve_iges_writer *w, const char *path)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, path, "path");
+    return pc_iges_out_write(ctx, &w->out, path);
+}

@@ -1,0 +1,119 @@
+/*
+ * projcurve_project_directional: validation, then the tracing engine with
+ * the directional equations and seed finder (trace/), then tolerance
+ * control and composition (refine/) when asked.
+ */
+#include "api/project.h"
+
+#include <math.h>
+
+#include "common/error.h"
+#include "refine/refine.h"
+#include "trace/directional.h"
+#include "trace/line_seeds.h"
+#include "trace/result.h"
+#include "trace/trace.h"
+
+/* Automatic eps_D: this fraction of the surface's size (projcurve.h). */
+#define PC_AUTO_TOL_DISTANCE 1e-4
+
+projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_options *opts,
+                                    struct projcurve_options *out)
+{
+    if (opts == NULL) {
+        pc_options_defaults(out);
+        return PROJCURVE_OK;
+    }
+    for (int key = PROJCURVE_OPT_TOL_DISTANCE; key <= PROJCURVE_OPT_JUMP_DETECTION; ++key) {
+        projcurve_option_type type;
+        double lo, hi, value;
+        if (projcurve_option_info(NULL, (projcurve_option)key, &type, &lo, &hi, NULL) !=
+            PROJCURVE_OK)
+            continue;
+        if (type == PROJCURVE_OPTION_DOUBLE) {
+            projcurve_options_get_double(NULL, opts, (projcurve_option)key, &value);
+        } else {
+            long long iv = 0;
+            projcurve_options_get_int(NULL, opts, (projcurve_option)key, &iv);
+            value = (double)iv;
+        }
+        if (!isfinite(value))
+            return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "option %d is not finite", key);
+        if (value < lo || value > hi)
+            return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                           "option %d = %.17g is outside [%.17g, %.17g]", key, value, lo, hi);
+    }
+    *out = *opts;
+    return PROJCURVE_OK;
+}
+
+/* Unit direction from dir; statuses NOT_FINITE, ZERO_DIRECTION. Scaling by
+ * the largest component first keeps tiny and huge vectors normalisable. */
+static projcurve_status unit_direction(projcurve_context *ctx, const double dir[3],
+                                       pc_vec3 *out)
+{
+    const pc_vec3 d = vec3_load(dir);
+    if (!vec3_is_finite(d))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE,
+                       "direction (%g, %g, %g) is not finite", d.x, d.y, d.z);
+    const double m = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
+    if (!(m > 0.0))
+        return pc_fail(ctx, PROJCURVE_ERR_ZERO_DIRECTION, "direction is the zero vector");
+    *out = vec3_normalize(vec3(d.x / m, d.y / m, d.z / m));
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_project_directional(projcurve_context *ctx,
+                                               const projcurve_surface *surface,
+                                               const projcurve_curve *curve,
+                                               const double dir[3],
+                                               const projcurve_options *opts,
+                                               projcurve_result **out)
+{
+    PC_REQUIRE(ctx, surface, "surface");
+    PC_REQUIRE(ctx, curve, "curve");
+    PC_REQUIRE(ctx, dir, "dir");
+    PC_REQUIRE(ctx, out, "out");
+    pc_vec3 unit;
+    struct projcurve_options o;
+    projcurve_status st = unit_direction(ctx, dir, &unit);
+    if (st == PROJCURVE_OK)
+        st = pc_options_resolve(ctx, opts, &o);
+    if (st != PROJCURVE_OK)
+        return st;
+
+    pc_projector proj;
+    pc_directional_data data;
+    pc_directional_cache cache;
+    pc_directional_init(&proj, &data, &cache, surface, curve, unit, o.newton_tol,
+                        (int)o.newton_max_iter);
+    pc_line_finder finder;
+    pc_line_finder_init(&finder, &proj, unit);
+    projcurve_result *r = NULL;
+    st = pc_result_create(ctx, 3, &r);
+    if (st == PROJCURVE_OK) {
+        /* the arc-length step is needed for stepping and for the jump
+         * sweep; constant parameter steps without jumps do without it */
+        const int need_length = o.param_step == 0.0 || o.jump_detection;
+        const pc_trace_config config = {
+            need_length ? pc_directional_length_estimate(&finder) : 0.0, proj.model_size};
+        r->stats.tol_distance =
+            o.tol_distance > 0.0 ? o.tol_distance : PC_AUTO_TOL_DISTANCE * proj.model_size;
+        st = pc_trace_branches(ctx, &proj, &o, &finder.base, &config, r);
+    }
+    /* tolerance control and composition also on a partial result */
+    if (o.compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED)) {
+        const projcurve_status cs = pc_refine_and_compose(ctx, &proj, &o, r);
+        if (cs != PROJCURVE_OK)
+            st = cs;
+    }
+    if (cache.callback_failed && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))
+        st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
+    pc_line_finder_free(&finder);
+    if (st != PROJCURVE_OK && st != PROJCURVE_ERR_LIMIT_REACHED) {
+        projcurve_result_destroy(r);
+        return st;
+    }
+    *out = r;
+    return st;
+}

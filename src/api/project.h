@@ -1,0 +1,16 @@
+/*
+ * Helpers shared by the projection entry points (directional, orthogonal).
+ */
+#ifndef PC_API_PROJECT_H
+#define PC_API_PROJECT_H
+
+#include "api/handles.h"
+
+/* Copies opts (defaults when NULL) into *out after checking every value
+ * against the bounds projcurve_option_info tells (a handle can only hold
+ * valid values; this guards against a corrupted one).
+ * Statuses: OK, OUT_OF_RANGE, NOT_FINITE. */
+projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_options *opts,
+                                    struct projcurve_options *out);
+
+#endif /* PC_API_PROJECT_H */

@@ -1,0 +1,145 @@
+/*
+ * The hit list: growth, and the final pass that sorts hits by lambda, merges
+ * the copies of one hit and flags the ones on the domain's boundary.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "common/error.h"
+#include "intersect/ray_patch.h"
+
+/* Two hits are one when their parameters differ by at most this fraction
+ * of the domain and their points by at most this fraction of the model:
+ * Newton gives both to ~1e-15, so copies of a hit found from two patches
+ * (shared edges and corners) or from two clipping boxes agree far closer,
+ * while distinct transversal hits are much farther apart. */
+#define PC_DEDUP_REL 1e-8
+/* The same for grazing hits: a double root is only determined to about
+ * sqrt(rounding) ~ 1e-8 along the tangent, and two roots this close along a
+ * grazing line are reported as the one tangent hit they nearly are. */
+#define PC_DEDUP_TANGENT_REL 1e-5
+/* A hit this close (fraction of the domain) to an edge of it is on the
+ * boundary. */
+#define PC_BOUNDARY_REL 1e-9
+/* Initial capacities. */
+#define PC_HIT_LIST_MIN_CAPACITY 8
+
+projcurve_status pc_hit_list_push(projcurve_context *ctx, pc_hit_list *list, pc_hit hit)
+{
+    if (list->count == list->capacity) {
+        const size_t cap = list->capacity ? 2 * list->capacity : PC_HIT_LIST_MIN_CAPACITY;
+        if (cap > SIZE_MAX / sizeof *list->items)
+            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "hit list of %zu hits is too large", cap);
+        pc_hit *items = realloc(list->items, cap * sizeof *items);
+        if (items == NULL)
+            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "cannot grow the hit list to %zu hits",
+                           cap);
+        list->items = items;
+        list->capacity = cap;
+    }
+    list->items[list->count++] = hit;
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_hit_list_reserve_work(projcurve_context *ctx, pc_hit_list *list, size_t n)
+{
+    if (list->work_capacity >= n)
+        return PROJCURVE_OK;
+    if (n > SIZE_MAX / sizeof *list->work)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "clipping scratch of %zu doubles is too large",
+                       n);
+    double *work = malloc(n * sizeof *work);
+    if (work == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY,
+                       "cannot allocate %zu doubles of clipping scratch", n);
+    free(list->work);
+    list->work = work;
+    list->work_capacity = n;
+    return PROJCURVE_OK;
+}
+
+void pc_hit_list_free(pc_hit_list *list)
+{
+    if (list == NULL)
+        return;
+    free(list->items);
+    free(list->work);
+    list->items = NULL;
+    list->work = NULL;
+    list->count = list->capacity = list->work_capacity = 0;
+}
+
+/* By lambda, then u, then v: a total order, so that results do not depend
+ * on the order in which patches were visited. */
+static int compare_hits(const void *a, const void *b)
+{
+    const pc_hit *x = a, *y = b;
+    if (x->lambda != y->lambda)
+        return x->lambda < y->lambda ? -1 : 1;
+    if (x->u != y->u)
+        return x->u < y->u ? -1 : 1;
+    if (x->v != y->v)
+        return x->v < y->v ? -1 : 1;
+    return 0;
+}
+
+typedef struct dedup_tolerances {
+    double du, dv, dlambda;                 /* transversal hits */
+    double du_tangent, dv_tangent, dlambda_tangent; /* when either is grazing */
+} dedup_tolerances;
+
+static int same_hit(const pc_hit *a, const pc_hit *b, const dedup_tolerances *tol)
+{
+    const int tangent = ((a->flags | b->flags) & PROJCURVE_HIT_TANGENT) != 0;
+    const double du = tangent ? tol->du_tangent : tol->du;
+    const double dv = tangent ? tol->dv_tangent : tol->dv;
+    const double dl = tangent ? tol->dlambda_tangent : tol->dlambda;
+    return fabs(a->u - b->u) <= du && fabs(a->v - b->v) <= dv && fabs(a->lambda - b->lambda) <= dl;
+}
+
+void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_norm,
+                        double scale)
+{
+    const double span_u = domain[1] - domain[0], span_v = domain[3] - domain[2];
+    if (list->count > 1)
+        qsort(list->items, list->count, sizeof *list->items, compare_hits);
+    dedup_tolerances tol;
+    tol.du = PC_DEDUP_REL * span_u;
+    tol.dv = PC_DEDUP_REL * span_v;
+    tol.dlambda = PC_DEDUP_REL * scale / dir_norm; /* both hits lie on the line */
+    tol.du_tangent = PC_DEDUP_TANGENT_REL * span_u;
+    tol.dv_tangent = PC_DEDUP_TANGENT_REL * span_v;
+    tol.dlambda_tangent = PC_DEDUP_TANGENT_REL * scale / dir_norm;
+    size_t kept = 0;
+    for (size_t i = 0; i < list->count; ++i) {
+        const pc_hit h = list->items[i];
+        int merged = 0;
+        /* Sorted by lambda: only the last few kept hits can match. */
+        for (size_t j = kept; j-- > 0;) {
+            pc_hit *k = &list->items[j];
+            if (h.lambda - k->lambda > tol.dlambda_tangent)
+                break;
+            if (same_hit(k, &h, &tol)) {
+                /* Keep the copy nearest the line: for a grazing hit the
+                 * copies differ by up to ~sqrt(tolerance) along it. */
+                const unsigned flags = k->flags | h.flags;
+                if (h.residual < k->residual)
+                    *k = h;
+                k->flags = flags;
+                merged = 1;
+                break;
+            }
+        }
+        if (!merged)
+            list->items[kept++] = h;
+    }
+    list->count = kept;
+    for (size_t i = 0; i < kept; ++i) {
+        pc_hit *h = &list->items[i];
+        const double bu = PC_BOUNDARY_REL * span_u, bv = PC_BOUNDARY_REL * span_v;
+        if (h->u - domain[0] <= bu || domain[1] - h->u <= bu || h->v - domain[2] <= bv ||
+            domain[3] - h->v <= bv)
+            h->flags |= PROJCURVE_HIT_BOUNDARY;
+    }
+}

@@ -1,0 +1,305 @@
+#include "intersect/ray_patch.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "common/error.h"
+#include "intersect/bezier_clip.h"
+#include "intersect/frame_net.h"
+
+/* A hit's distance to the line may be at most this fraction of the scale
+ * given to pc_ray_frame_init (the size and position of the model): Newton
+ * reaches ~1e-16 of it, and an exactly tangent line gives a least-squares
+ * minimum at rounding level; a line that misses by less counts as tangent. */
+#define PC_HIT_RESIDUAL_REL 1e-12
+/* Control values in the ray frame carry rounding errors of a few ulps of
+ * the coordinates' scale; clipping treats values this small as zero. */
+#define PC_CLIP_ZERO_REL (16.0 * DBL_EPSILON)
+/* |d . n| below this (n the unit normal) makes a hit a grazing one: there
+ * the Jacobian of (d1, d2) is ~this small relative to |Su x Sv| and the
+ * hit is a fold of the projection (seed 000 s3.4). */
+#define PC_HIT_TANGENT_COS 1e-6
+/* Subdivision stops at this depth; depth d boxes are about 2^(-d/2) wide. */
+#define PC_CLIP_MAX_DEPTH 56
+/* A stalled box narrower than this (local parameters) on both sides holds a
+ * root where clipping converges only linearly (a tangent, double root) or a
+ * curve of roots: it is finished by least squares instead of subdivided. */
+#define PC_CLIP_STALL_WIDTH 1e-7
+/* Bound on clipping rounds per patch (each round is one clip in s and t);
+ * it is reached only when the line lies in the surface along a curve. */
+#define PC_CLIP_MAX_ROUNDS 4096
+/* A root may lie this far outside its patch (local parameters) before it is
+ * rejected: the neighbouring patch then reports it. Accepted roots are
+ * clamped into the patch. */
+#define PC_PARAM_SLACK 1e-9
+/* After a failed Newton try on a box, the next waits until the box has
+ * shrunk by this factor: a try costs about as much as a clipping round. */
+#define PC_NEWTON_RETRY_FACTOR 0.01
+
+void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double scale,
+                       int ray_only)
+{
+    const double norm = pc_vec3_length_robust(dir);
+    frame->origin = origin;
+    /* Scaled first, so that tiny or huge (finite) directions stay exact. */
+    const double big = fmax(fabs(dir.x), fmax(fabs(dir.y), fabs(dir.z)));
+    frame->d = vec3_normalize(vec3_scale(dir, 1.0 / big));
+    vec3_orthonormal_pair(frame->d, &frame->e1, &frame->e2);
+    frame->inv_dir_norm = 1.0 / norm;
+    frame->origin_e1 = vec3_dot(frame->e1, origin);
+    frame->origin_e2 = vec3_dot(frame->e2, origin);
+    frame->origin_d = vec3_dot(frame->d, origin);
+    frame->tol_residual = PC_HIT_RESIDUAL_REL * scale;
+    frame->tol_zero = PC_CLIP_ZERO_REL * scale;
+    frame->ray_only = ray_only;
+}
+
+double pc_vec3_length_robust(pc_vec3 a)
+{
+    const double big = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (!(big > 0.0) || !isfinite(big))
+        return big > 0.0 ? big : 0.0;
+    return big * vec3_norm(vec3_scale(a, 1.0 / big));
+}
+
+static size_t net_points(int deg_u, int deg_v)
+{
+    return (size_t)(deg_u + 1) * (size_t)(deg_v + 1);
+}
+
+size_t pc_ray_patch_work_size(int deg_u, int deg_v)
+{
+    if (deg_u < 1 || deg_v < 1 || deg_u > PROJCURVE_MAX_DEGREE || deg_v > PROJCURVE_MAX_DEGREE)
+        return 0;
+    /* The frame net (4 values per point) and one planar net (2 values per
+     * point) for each level of the subdivision stack. */
+    return net_points(deg_u, deg_v) * (4 + 2 * (PC_CLIP_MAX_DEPTH + 1));
+}
+
+/* Writes the patch's net in the ray frame into q. Returns 0 when the
+ * control net lies entirely on one side of one of the two planes through
+ * the line (or, for a ray, behind its origin): the convex hull then misses
+ * the line. The third coordinate is computed only for nets that pass. */
+static int project_net(const pc_ray_frame *f, const pc_bezier_patch *patch, double *q,
+                       double *w_max)
+{
+    const size_t np = net_points(patch->deg_u, patch->deg_v);
+    const double tol = f->tol_residual;
+    int neg_x = 0, pos_x = 0, neg_y = 0, pos_y = 0;
+    double w_top = 0.0;
+    for (size_t k = 0; k < np; ++k) {
+        const double *cw = patch->cw + 4 * k;
+        const pc_vec3 p = vec3(cw[0], cw[1], cw[2]);
+        const double w = cw[3];
+        double *out = q + 4 * k;
+        out[0] = vec3_dot(f->e1, p) - w * f->origin_e1;
+        out[1] = vec3_dot(f->e2, p) - w * f->origin_e2;
+        out[3] = w;
+        w_top = w > w_top ? w : w_top;
+        const double slack = tol * w;
+        neg_x |= out[0] <= slack;
+        pos_x |= out[0] >= -slack;
+        neg_y |= out[1] <= slack;
+        pos_y |= out[1] >= -slack;
+    }
+    if (!(neg_x && pos_x && neg_y && pos_y))
+        return 0;
+    int ahead = 0;
+    for (size_t k = 0; k < np; ++k) {
+        const double *cw = patch->cw + 4 * k;
+        double *out = q + 4 * k;
+        out[2] = vec3_dot(f->d, vec3(cw[0], cw[1], cw[2])) - cw[3] * f->origin_d;
+        ahead |= out[2] >= -tol * cw[3];
+    }
+    *w_max = w_top;
+    return ahead || !f->ray_only;
+}
+
+typedef struct patch_search {
+    const pc_ray_frame *frame;
+    const pc_bezier_patch *patch;
+    pc_frame_net net;
+    pc_hit_list *hits;
+    projcurve_context *ctx;
+    double zero_tol; /* rounding level of the homogeneous control values */
+    double lipschitz; /* of the Jacobian over the patch */
+    double jac_max;   /* bound on |J|_F over the patch */
+} patch_search;
+
+/* Records a root found in patch-local parameters if it is a hit. */
+static projcurve_status record_root(const patch_search *ps, const pc_frame_root *r, int forced_tangent)
+{
+    const pc_ray_frame *f = ps->frame;
+    if (!(r->residual <= f->tol_residual))
+        return PROJCURVE_OK;
+    if (!(r->s >= -PC_PARAM_SLACK && r->s <= 1.0 + PC_PARAM_SLACK && r->t >= -PC_PARAM_SLACK &&
+          r->t <= 1.0 + PC_PARAM_SLACK))
+        return PROJCURVE_OK;
+    pc_hit hit;
+    hit.lambda = r->z * f->inv_dir_norm;
+    if (f->ray_only && !(hit.lambda > 0.0))
+        return PROJCURVE_OK;
+    const pc_bezier_patch *p = ps->patch;
+    const double s = fmin(fmax(r->s, 0.0), 1.0), t = fmin(fmax(r->t, 0.0), 1.0);
+    hit.u = s >= 1.0 ? p->u1 : p->u0 + s * (p->u1 - p->u0);
+    hit.v = t >= 1.0 ? p->v1 : p->v0 + t * (p->v1 - p->v0);
+    hit.residual = r->residual;
+    hit.flags = (forced_tangent || r->cos_dir < PC_HIT_TANGENT_COS) ? PROJCURVE_HIT_TANGENT : 0u;
+    return pc_hit_list_push(ps->ctx, ps->hits, hit);
+}
+
+/* A box that clipping shrank below PC_CLIP_WIDTH_TOL: Newton from its
+ * centre, which must stay near the box; least squares if Newton fails. */
+static projcurve_status finish_converged(const patch_search *ps, const double box[4])
+{
+    const double cs = 0.5 * (box[0] + box[1]), ct = 0.5 * (box[2] + box[3]);
+    const double ws = box[1] - box[0] + PC_PARAM_SLACK, wt = box[3] - box[2] + PC_PARAM_SLACK;
+    pc_frame_root r;
+    if (pc_frame_net_newton(&ps->net, cs, ct, &r) && fabs(r.s - cs) <= ws &&
+        fabs(r.t - ct) <= wt)
+        return record_root(ps, &r, 0);
+    if (!pc_frame_net_minimize(&ps->net, box, &r))
+        return PROJCURVE_OK;
+    return record_root(ps, &r, 1);
+}
+
+/* Newton from the centre of a box, accepted when its root lies in the box
+ * and is provably the only one there: with beta = |J(r)^-1| and L the
+ * Jacobian's Lipschitz bound, (X, Y)(x) = (J(r) + E)(x - r) with
+ * |E| <= L |x - r| / 2, nonsingular while |x - r| < 2 / (beta L); the box
+ * must lie within half that radius (Kantorovich-style uniqueness).
+ * Returns 1 when the box is finished (its root recorded). */
+static int try_certified_newton(const patch_search *ps, const double box[4], projcurve_status *st)
+{
+    pc_frame_root r;
+    if (!pc_frame_net_newton(&ps->net, 0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), &r))
+        return 0;
+    if (!(r.s >= box[0] - PC_PARAM_SLACK && r.s <= box[1] + PC_PARAM_SLACK &&
+          r.t >= box[2] - PC_PARAM_SLACK && r.t <= box[3] + PC_PARAM_SLACK))
+        return 0;
+    const double *j = r.jac;
+    const double det = j[0] * j[3] - j[1] * j[2];
+    const double norm = sqrt(j[0] * j[0] + j[1] * j[1] + j[2] * j[2] + j[3] * j[3]);
+    const double ds = fmax(r.s - box[0], box[1] - r.s), dt = fmax(r.t - box[2], box[3] - r.t);
+    const double reach = sqrt(ds * ds + dt * dt);
+    /* beta <= |J|_F / |det J|. */
+    if (!(reach * norm * ps->lipschitz <= fabs(det)))
+        return 0;
+    *st = record_root(ps, &r, 0);
+    return 1;
+}
+
+/* Whether a certified Newton try on a box of this width can succeed at
+ * all: it needs reach L <= |det J| / |J|_F <= |J|_F / 2 <= jac_max / 2,
+ * with reach up to the box's diagonal. */
+static int newton_may_certify(const patch_search *ps, double width)
+{
+    return 2.0 * 1.4142135623730951 * width * ps->lipschitz <= ps->jac_max;
+}
+
+/* A box where clipping stalls at the resolution limit: the least-squares
+ * minimum of the distance to the line, a tangent hit if it touches. */
+static projcurve_status finish_stalled(const patch_search *ps, const double box[4])
+{
+    pc_frame_root r;
+    if (!pc_frame_net_minimize(&ps->net, box, &r))
+        return PROJCURVE_OK;
+    return record_root(ps, &r, 1);
+}
+
+/* The side to halve: the wider one among those not converged. */
+static int split_direction(const double box[4])
+{
+    return (box[3] - box[2]) > (box[1] - box[0]) ? 1 : 0;
+}
+
+/* Depth-first Bezier clipping over a bounded stack of planar nets. */
+static projcurve_status clip_patch(const patch_search *ps, double *slots)
+{
+    const int m = ps->net.deg_u, n = ps->net.deg_v;
+    const size_t np = net_points(m, n);
+    const size_t slot_size = 2 * np;
+    double boxes[PC_CLIP_MAX_DEPTH + 1][4];
+    double next_try[PC_CLIP_MAX_DEPTH + 1]; /* width that allows a Newton try */
+    int depth[PC_CLIP_MAX_DEPTH + 1];
+    for (size_t k = 0; k < np; ++k) {
+        slots[2 * k] = ps->net.q[4 * k];
+        slots[2 * k + 1] = ps->net.q[4 * k + 1];
+    }
+    boxes[0][0] = boxes[0][2] = 0.0;
+    boxes[0][1] = boxes[0][3] = 1.0;
+    depth[0] = 0;
+    next_try[0] = 1.0;
+    int top = 0;
+    /* A patch flat enough for Newton to be certified on the whole of it
+     * (small patches of a fine surface) needs no clipping at all. */
+    if (newton_may_certify(ps, 1.0)) {
+        projcurve_status st = PROJCURVE_OK;
+        if (try_certified_newton(ps, boxes[0], &st))
+            return st;
+        next_try[0] = PC_NEWTON_RETRY_FACTOR;
+    }
+    for (int round = 0; top >= 0 && round < PC_CLIP_MAX_ROUNDS; ++round) {
+        double *net = slots + (size_t)top * slot_size;
+        double *box = boxes[top];
+        const pc_clip_outcome outcome = pc_bezier_clip_step(net, m, n, ps->zero_tol, box);
+        projcurve_status st = PROJCURVE_OK;
+        if (outcome == PC_CLIP_PROGRESS) {
+            const double width = fmax(box[1] - box[0], box[3] - box[2]);
+            if (width <= next_try[top] && newton_may_certify(ps, width)) {
+                if (try_certified_newton(ps, box, &st)) {
+                    --top;
+                    if (st != PROJCURVE_OK)
+                        return st;
+                } else {
+                    next_try[top] = width * PC_NEWTON_RETRY_FACTOR;
+                }
+            }
+            continue;
+        }
+        if (outcome == PC_CLIP_EMPTY) {
+            --top;
+            continue;
+        }
+        const int tiny = box[1] - box[0] < PC_CLIP_STALL_WIDTH && box[3] - box[2] < PC_CLIP_STALL_WIDTH;
+        if (outcome == PC_CLIP_CONVERGED) {
+            st = finish_converged(ps, box);
+            --top;
+        } else if (tiny || depth[top] >= PC_CLIP_MAX_DEPTH) {
+            st = finish_stalled(ps, box);
+            --top;
+        } else {
+            /* Stalled: halve; the upper half goes on top of the stack. */
+            const int dir = split_direction(box);
+            pc_bezier_clip_split(net, net + slot_size, m, n, dir, box, boxes[top + 1]);
+            depth[top + 1] = ++depth[top];
+            next_try[top + 1] = next_try[top];
+            ++top;
+        }
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_ray_patch_hits(projcurve_context *ctx, const pc_ray_frame *frame,
+                                   const pc_bezier_patch *patch, double *work,
+                                   pc_hit_list *hits)
+{
+    patch_search ps;
+    ps.frame = frame;
+    ps.patch = patch;
+    ps.net.deg_u = patch->deg_u;
+    ps.net.deg_v = patch->deg_v;
+    ps.net.q = work;
+    ps.hits = hits;
+    ps.ctx = ctx;
+    double w_max = 0.0;
+    if (!project_net(frame, patch, work, &w_max))
+        return PROJCURVE_OK;
+    ps.zero_tol = frame->tol_zero * w_max;
+    pc_frame_net_jacobian_bounds(&ps.net, &ps.lipschitz, &ps.jac_max);
+    return clip_patch(&ps, work + 4 * net_points(patch->deg_u, patch->deg_v));
+}

@@ -1,0 +1,88 @@
+/*
+ * IGES 5.3 reading, internal pieces.
+ *
+ * An IGES file is a sequence of 80-column records: columns 1-72 data,
+ * column 73 the section letter (S, G, D, P, T in this order), columns 74-80
+ * the sequence number. The directory (D) has two records per entity; the
+ * parameter data (P) of an entity is free-format text in columns 1-64 of its
+ * records, fields separated by the parameter delimiter and ended by the
+ * record delimiter, both declared at the start of the global (G) section.
+ */
+#ifndef PC_IO_IGES_H
+#define PC_IO_IGES_H
+
+#include <stddef.h>
+
+#include "common/arena.h"
+#include "io/io_geom.h"
+#include "io/io_model.h"
+
+#define PC_IGES_RECORD 80
+#define PC_IGES_DATA_COLUMNS 72
+#define PC_IGES_PARAM_COLUMNS 64
+
+typedef struct pc_iges_section {
+    const char **records; /* each PC_IGES_RECORD characters, space padded */
+    size_t *lines;        /* line number of each record in the file (1-based) */
+    size_t count;
+} pc_iges_section;
+
+/* One directory entry (two D records). */
+typedef struct pc_iges_entry {
+    int type;
+    long param_start;   /* P sequence number of the first parameter record */
+    long param_lines;   /* number of parameter records */
+    long transform;     /* DE pointer of a 124 entity, 0 if none */
+    int form;
+    int subordinate;    /* status digits 3-4: 0 independent, 1 physically dependent, ... */
+    int use;            /* status digits 5-6: 5 = 2D parametric */
+} pc_iges_entry;
+
+/* A parameter field: raw text (trimmed) or the string of a Hollerith field. */
+typedef struct pc_iges_field {
+    const char *text;
+    size_t len;
+} pc_iges_field;
+
+typedef struct pc_iges_file {
+    projcurve_context *ctx;
+    pc_arena *arena;
+    pc_iges_section sec[5]; /* S, G, D, P, T */
+    char param_delim, record_delim;
+    pc_iges_entry *entries;
+    size_t n_entries;
+} pc_iges_file;
+
+/* The parameters of one entity. */
+typedef struct pc_iges_params {
+    const pc_iges_file *file;
+    size_t de;            /* DE pointer (odd sequence number) for messages */
+    int type;
+    pc_iges_field *fields; /* fields[0] is the entity type */
+    size_t count;
+} pc_iges_params;
+
+/* Splits the text into sections (iges_records.c). */
+projcurve_status pc_iges_split(pc_iges_file *f, const char *data, size_t len);
+/* Reads the delimiters from the global section (iges_params.c). */
+projcurve_status pc_iges_read_global(pc_iges_file *f);
+/* Reads the directory (iges_directory.c). */
+projcurve_status pc_iges_read_directory(pc_iges_file *f);
+/* Tokenises the parameter data of the entity at DE pointer de (iges_params.c). */
+projcurve_status pc_iges_params_of(const pc_iges_file *f, size_t de, pc_iges_params *out);
+/* Field i as a real / an integer; a missing or empty field gives the default
+ * (0) as IGES prescribes. Non-numeric text gives PARSE naming the entity. */
+projcurve_status pc_iges_real(const pc_iges_params *p, size_t i, double *out);
+projcurve_status pc_iges_int(const pc_iges_params *p, size_t i, long *out);
+/* The entry at DE pointer de, or NULL (with PARSE recorded) when de does not
+ * point at the start of a directory entry. */
+const pc_iges_entry *pc_iges_entry_at(const pc_iges_file *f, long de, size_t from_de);
+
+/* Geometry of curve and surface entities (iges_geometry.c): the result has
+ * the entity's own transformation (DE field 7) applied. A *skip_reason is
+ * set (and OK returned) for valid entities that are not converted. */
+projcurve_status pc_iges_curve(const pc_iges_file *f, size_t de, pc_io_curve *out,
+                               const char **skip_reason);
+projcurve_status pc_iges_surface(const pc_iges_file *f, size_t de, pc_io_surface *out);
+
+#endif /* PC_IO_IGES_H */

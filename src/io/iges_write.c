@@ -1,0 +1,226 @@
+/*
+ * Layout of an IGES 5.3 file: fixed 80-column records, fields never split
+ * across records, sequence numbers per section, and the terminate record
+ * with the section counts.
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/error.h"
+#include "io/iges_write.h"
+
+#define PC_IGES_G_WIDTH 72
+#define PC_IGES_P_WIDTH 64
+
+projcurve_status pc_iges_out_add(projcurve_context *ctx, pc_iges_out *out, int type, int form,
+                                 const char *status, pc_text_buf *params, size_t *de)
+{
+    if (params->failed || params->text == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory formatting IGES entity %d",
+                       type);
+    if (out->count == out->cap) {
+        const size_t fresh = out->cap ? 2 * out->cap : 16;
+        pc_iges_out_entity *p = realloc(out->entities, fresh * sizeof *p);
+        if (p == NULL)
+            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory adding IGES entity %d",
+                           type);
+        out->entities = p;
+        out->cap = fresh;
+    }
+    pc_iges_out_entity *e = &out->entities[out->count];
+    e->type = type;
+    e->form = form;
+    snprintf(e->status, sizeof e->status, "%s", status);
+    e->params = params->text;
+    params->text = NULL;
+    params->len = params->cap = 0;
+    *de = 2 * out->count + 1;
+    ++out->count;
+    return PROJCURVE_OK;
+}
+
+void pc_iges_out_free(pc_iges_out *out)
+{
+    for (size_t i = 0; i < out->count; ++i)
+        free(out->entities[i].params);
+    free(out->entities);
+    out->entities = NULL;
+    out->count = out->cap = 0;
+}
+
+typedef struct sink {
+    char *text;
+    size_t len, cap;
+    int failed;
+} sink;
+
+static void put(sink *s, const char *line)
+{
+    const size_t n = strlen(line);
+    if (s->failed)
+        return;
+    if (s->len + n + 1 > s->cap) {
+        size_t fresh = s->cap ? 2 * s->cap : 1u << 16;
+        while (fresh < s->len + n + 1)
+            fresh *= 2;
+        char *p = realloc(s->text, fresh);
+        if (p == NULL) {
+            s->failed = 1;
+            return;
+        }
+        s->text = p;
+        s->cap = fresh;
+    }
+    memcpy(s->text + s->len, line, n + 1);
+    s->len += n;
+}
+
+/* Emits free-format text as records of `width` data columns, breaking
+ * after a delimiter so no field is split; returns the records used. */
+static size_t records(sink *s, const char *text, size_t width, char section, size_t seq,
+                      size_t de)
+{
+    const size_t len = strlen(text);
+    size_t pos = 0, used = 0;
+    while (pos < len) {
+        size_t take = len - pos;
+        if (take > width) {
+            take = width;
+            while (take > 0 && text[pos + take - 1] != ',' && text[pos + take - 1] != ';')
+                --take;
+            if (take == 0)
+                take = width; /* a single field wider than a record: split it */
+        }
+        char line[96];
+        if (section == 'P')
+            snprintf(line, sizeof line, "%-64.*s %7zuP%7zu\n", (int)take, text + pos, de,
+                     seq + used);
+        else
+            snprintf(line, sizeof line, "%-72.*s%c%7zu\n", (int)take, text + pos, section,
+                     seq + used);
+        put(s, line);
+        pos += take;
+        ++used;
+    }
+    return used;
+}
+
+/* Hollerith form of a string. */
+static void hollerith(char *out, size_t cap, const char *s)
+{
+    snprintf(out, cap, "%zuH%s,", strlen(s), s);
+}
+
+static size_t global_section(sink *s)
+{
+    char g[1024], h[6][96];
+    hollerith(h[0], sizeof h[0], "libprojcurve model");
+    hollerith(h[1], sizeof h[1], "projcurve.igs");
+    hollerith(h[2], sizeof h[2], "libprojcurve " PROJCURVE_VERSION_STRING);
+    hollerith(h[3], sizeof h[3], "libprojcurve " PROJCURVE_VERSION_STRING);
+    hollerith(h[4], sizeof h[4], "20000101.000000");
+    hollerith(h[5], sizeof h[5], "MM");
+    /* Delimiters, sender id, file, system, preprocessor, integer bits,
+     * single/double precision ranges, receiver id, scale, units (2 = mm),
+     * line weights, max width, date, resolution, max coordinate, author,
+     * organisation, IGES version 11 (= 5.3), drafting standard, date. */
+    snprintf(g, sizeof g,
+             "1H,,1H;,%s%s%s%s32,38,6,308,15,%s1.,2,%s1,1.,%s1.E-10,0.,,,11,0,%s", h[0],
+             h[1], h[2], h[3], h[0], h[5], h[4], h[4]);
+    g[strlen(g) - 1] = ';';
+    return records(s, g, PC_IGES_G_WIDTH, 'G', 1, 0);
+}
+
+static projcurve_status layout(projcurve_context *ctx, const pc_iges_out *out, sink *s)
+{
+    char line[96];
+    snprintf(line, sizeof line, "%-72sS%7d\n", "libprojcurve: projected curves on NURBS surfaces", 1);
+    put(s, line);
+    const size_t n_g = global_section(s);
+    /* Parameter record counts first: the directory points into P. */
+    size_t *p_start = calloc(out->count + 1, sizeof *p_start);
+    size_t *p_count = calloc(out->count + 1, sizeof *p_count);
+    if (p_start == NULL || p_count == NULL) {
+        free(p_start);
+        free(p_count);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory writing IGES");
+    }
+    sink params = {0};
+    size_t seq = 1;
+    for (size_t i = 0; i < out->count; ++i) {
+        const pc_iges_out_entity *e = &out->entities[i];
+        char head[16];
+        snprintf(head, sizeof head, "%d,", e->type);
+        /* The type field and the parameters go through one text. */
+        sink whole = {0};
+        put(&whole, head);
+        put(&whole, e->params);
+        if (whole.failed) {
+            params.failed = 1;
+            free(whole.text);
+            break;
+        }
+        p_start[i] = seq;
+        p_count[i] = records(&params, whole.text, PC_IGES_P_WIDTH, 'P', seq, 2 * i + 1);
+        seq += p_count[i];
+        free(whole.text);
+    }
+    for (size_t i = 0; i < out->count; ++i) {
+        const pc_iges_out_entity *e = &out->entities[i];
+        snprintf(line, sizeof line, "%8d%8zu%8d%8d%8d%8d%8d%8d%8sD%7zu\n", e->type, p_start[i], 0,
+                 0, 0, 0, 0, 0, e->status, 2 * i + 1);
+        put(s, line);
+        snprintf(line, sizeof line, "%8d%8d%8d%8zu%8d%8s%8s%8s%8dD%7zu\n", e->type, 0, 0,
+                 p_count[i], e->form, "", "", "", 0, 2 * i + 2);
+        put(s, line);
+    }
+    if (params.text)
+        put(s, params.text);
+    snprintf(line, sizeof line, "S%7dG%7zuD%7zuP%7zu%40sT%7d\n", 1, n_g, 2 * out->count, seq - 1,
+             "", 1);
+    put(s, line);
+    const int failed = params.failed || s->failed;
+    free(params.text);
+    free(p_start);
+    free(p_count);
+    if (failed)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory writing IGES");
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_iges_out_text(projcurve_context *ctx, const pc_iges_out *out, char **text,
+                                  size_t *len)
+{
+    sink s = {0};
+    const projcurve_status st = layout(ctx, out, &s);
+    if (st != PROJCURVE_OK) {
+        free(s.text);
+        return st;
+    }
+    *text = s.text;
+    *len = s.len;
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_iges_out_write(projcurve_context *ctx, const pc_iges_out *out,
+                                   const char *path)
+{
+    char *text = NULL;
+    size_t len = 0;
+    projcurve_status st = pc_iges_out_text(ctx, out, &text, &len);
+    if (st != PROJCURVE_OK)
+        return st;
+    FILE *fp = fopen(path, "wb");
+    if (fp == NULL) {
+        st = pc_fail(ctx, PROJCURVE_ERR_IO, "cannot create %s: %s", path, strerror(errno));
+    } else {
+        const size_t written = fwrite(text, 1, len, fp);
+        const int closed = fclose(fp);
+        if (written != len || closed != 0)
+            st = pc_fail(ctx, PROJCURVE_ERR_IO, "error writing %s", path);
+    }
+    free(text);
+    return st;
+}

@@ -1,0 +1,397 @@
+#include "io/io_geom.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "common/error.h"
+
+/* A quarter turn: arcs are split into Bezier segments no wider than this so
+ * that every middle weight cos(angle / 2) stays >= cos(pi / 4). */
+#define PC_ARC_MAX_SEGMENT (M_PI / 2.0)
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+void pc_io_affine_identity(pc_io_affine *a)
+{
+    memset(a->m, 0, sizeof a->m);
+    a->m[0] = a->m[5] = a->m[10] = 1.0;
+}
+
+pc_io_affine pc_io_affine_compose(const pc_io_affine *outer, const pc_io_affine *inner)
+{
+    pc_io_affine r;
+    for (int i = 0; i < 3; ++i) {
+        const double *o = outer->m + 4 * i;
+        for (int j = 0; j < 4; ++j) {
+            double s = (j == 3) ? o[3] : 0.0;
+            for (int k = 0; k < 3; ++k)
+                s += o[k] * inner->m[4 * k + j];
+            r.m[4 * i + j] = s;
+        }
+    }
+    return r;
+}
+
+void pc_io_affine_apply(const pc_io_affine *a, const double p[3], double out[3])
+{
+    double r[3];
+    for (int i = 0; i < 3; ++i)
+        r[i] = a->m[4 * i] * p[0] + a->m[4 * i + 1] * p[1] + a->m[4 * i + 2] * p[2] + a->m[4 * i + 3];
+    memcpy(out, r, sizeof r);
+}
+
+void pc_io_affine_points(const pc_io_affine *a, double *ctrl, size_t n_points)
+{
+    for (size_t i = 0; i < n_points; ++i)
+        pc_io_affine_apply(a, ctrl + 3 * i, ctrl + 3 * i);
+}
+
+void pc_io_curve_domain(const pc_io_curve *c, double *t0, double *t1)
+{
+    *t0 = c->knots[c->degree];
+    *t1 = c->knots[c->n_ctrl];
+}
+
+static void *arena_doubles(pc_arena *arena, size_t n)
+{
+    return pc_arena_calloc(arena, n, sizeof(double));
+}
+
+static projcurve_status no_memory(projcurve_context *ctx)
+{
+    return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory while converting geometry");
+}
+
+projcurve_status pc_io_line_curve(projcurve_context *ctx, pc_arena *arena, const double p0[3],
+                                  const double p1[3], pc_io_curve *out)
+{
+    double *ctrl = arena_doubles(arena, 6);
+    double *knots = arena_doubles(arena, 4);
+    if (ctrl == NULL || knots == NULL)
+        return no_memory(ctx);
+    memcpy(ctrl, p0, 3 * sizeof(double));
+    memcpy(ctrl + 3, p1, 3 * sizeof(double));
+    const double dx = p1[0] - p0[0], dy = p1[1] - p0[1], dz = p1[2] - p0[2];
+    const double len = sqrt(dx * dx + dy * dy + dz * dz);
+    knots[2] = knots[3] = (len > 0.0 && isfinite(len)) ? len : 1.0;
+    *out = (pc_io_curve){.degree = 1, .n_ctrl = 2, .ctrl = ctrl, .weights = NULL, .knots = knots};
+    return PROJCURVE_OK;
+}
+
+static void arc_point(const double c[3], const double x[3], const double y[3], double r,
+                      double a, double s, double out[3])
+{
+    /* s scales the point away from the centre (1 on the arc, 1/cos for the
+     * middle control point of a segment). */
+    for (int k = 0; k < 3; ++k)
+        out[k] = c[k] + s * r * (cos(a) * x[k] + sin(a) * y[k]);
+}
+
+projcurve_status pc_io_arc_curve(projcurve_context *ctx, pc_arena *arena,
+                                 const double centre[3], const double x_axis[3],
+                                 const double y_axis[3], double radius, double a0, double a1,
+                                 pc_io_curve *out)
+{
+    const double sweep = a1 - a0;
+    if (!(sweep > 0.0) || !(sweep <= 2.0 * M_PI + 1e-12) || !(radius > 0.0) || !isfinite(radius))
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "arc of radius %g over [%g, %g] rad cannot be converted", radius, a0, a1);
+    size_t n_seg = (size_t)ceil(sweep / PC_ARC_MAX_SEGMENT - 1e-12);
+    if (n_seg < 1)
+        n_seg = 1;
+    const size_t n_ctrl = 2 * n_seg + 1;
+    double *ctrl = arena_doubles(arena, 3 * n_ctrl);
+    double *w = arena_doubles(arena, n_ctrl);
+    double *knots = arena_doubles(arena, n_ctrl + 3);
+    if (ctrl == NULL || w == NULL || knots == NULL)
+        return no_memory(ctx);
+    const double step = sweep / (double)n_seg;
+    const double w_mid = cos(step / 2.0);
+    for (size_t s = 0; s <= n_seg; ++s) {
+        const double a = (s == n_seg) ? a1 : a0 + step * (double)s;
+        arc_point(centre, x_axis, y_axis, radius, a, 1.0, ctrl + 6 * s);
+        w[2 * s] = 1.0;
+        if (s < n_seg) {
+            arc_point(centre, x_axis, y_axis, radius, a + step / 2.0, 1.0 / w_mid, ctrl + 6 * s + 3);
+            w[2 * s + 1] = w_mid;
+        }
+    }
+    /* Knots: a0 x3, each interior join twice, a1 x3. */
+    knots[0] = knots[1] = knots[2] = a0;
+    for (size_t s = 1; s < n_seg; ++s)
+        knots[2 * s + 1] = knots[2 * s + 2] = a0 + step * (double)s;
+    knots[n_ctrl] = knots[n_ctrl + 1] = knots[n_ctrl + 2] = a1;
+    *out = (pc_io_curve){.degree = 2, .n_ctrl = n_ctrl, .ctrl = ctrl, .weights = w, .knots = knots};
+    return PROJCURVE_OK;
+}
+
+/* ---- homogeneous working copies ---------------------------------------- */
+
+typedef struct hcurve {
+    int p;
+    size_t n;       /* control points */
+    size_t cap;     /* capacity in points (knots: cap + p + 1) */
+    double *pw;     /* 4 * cap */
+    double *u;      /* cap + p + 1 */
+} hcurve;
+
+static projcurve_status hcurve_from(projcurve_context *ctx, pc_arena *arena, const pc_io_curve *c,
+                                    size_t extra, hcurve *h)
+{
+    h->p = c->degree;
+    h->n = c->n_ctrl;
+    h->cap = c->n_ctrl + extra;
+    h->pw = arena_doubles(arena, 4 * h->cap);
+    h->u = arena_doubles(arena, h->cap + (size_t)c->degree + 1);
+    if (h->pw == NULL || h->u == NULL)
+        return no_memory(ctx);
+    for (size_t i = 0; i < c->n_ctrl; ++i) {
+        const double w = c->weights ? c->weights[i] : 1.0;
+        for (int k = 0; k < 3; ++k)
+            h->pw[4 * i + (size_t)k] = w * c->ctrl[3 * i + (size_t)k];
+        h->pw[4 * i + 3] = w;
+    }
+    memcpy(h->u, c->knots, (c->n_ctrl + (size_t)c->degree + 1) * sizeof(double));
+    return PROJCURVE_OK;
+}
+
+static size_t knot_multiplicity(const hcurve *h, double t)
+{
+    size_t s = 0;
+    for (size_t i = 0; i < h->n + (size_t)h->p + 1; ++i)
+        s += (h->u[i] == t);
+    return s;
+}
+
+/* Boehm's insertion of t (U[p] <= t <= U[n]) once; needs cap > n.
+ * Q[i] = P[i] (i <= k-p), a_i P[i] + (1 - a_i) P[i-1] (k-p < i <= k),
+ * P[i-1] (i > k), a_i = (t - U[i]) / (U[i+p] - U[i]). */
+static void hcurve_insert(hcurve *h, double t)
+{
+    const size_t p = (size_t)h->p;
+    size_t k = p;
+    for (size_t i = p; i < h->n; ++i)
+        if (h->u[i] < h->u[i + 1] && h->u[i] <= t)
+            k = i;
+    double old[4 * (PROJCURVE_MAX_DEGREE + 1)];
+    double alpha[PROJCURVE_MAX_DEGREE + 1];
+    memcpy(old, h->pw + 4 * (k - p), 4 * (p + 1) * sizeof(double));
+    for (size_t i = k - p + 1; i <= k; ++i)
+        alpha[i - (k - p)] = (t - h->u[i]) / (h->u[i + p] - h->u[i]);
+    memmove(h->pw + 4 * (k + 1), h->pw + 4 * k, 4 * (h->n - k) * sizeof(double));
+    memmove(h->u + k + 2, h->u + k + 1, (h->n + p - k) * sizeof(double));
+    for (size_t i = k - p + 1; i <= k; ++i) {
+        const size_t j = i - (k - p);
+        for (size_t c = 0; c < 4; ++c)
+            h->pw[4 * i + c] = alpha[j] * old[4 * j + c] + (1.0 - alpha[j]) * old[4 * (j - 1) + c];
+    }
+    h->u[k + 1] = t;
+    h->n += 1;
+}
+
+static size_t last_knot_index(const hcurve *h, double t)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < h->n + (size_t)h->p + 1; ++i)
+        if (h->u[i] == t)
+            k = i;
+    return k;
+}
+
+static size_t first_knot_index(const hcurve *h, double t)
+{
+    for (size_t i = 0; i < h->n + (size_t)h->p + 1; ++i)
+        if (h->u[i] == t)
+            return i;
+    return 0;
+}
+
+/* Inserts a and b to multiplicity p and keeps the part between them (the
+ * points P[k-p .. m-1] where U[k] is the last a and U[m] the first b), so
+ * that the result is clamped over [a, b]. extra is spare capacity kept for
+ * later insertions. */
+static projcurve_status hcurve_restrict(projcurve_context *ctx, pc_arena *arena,
+                                        const pc_io_curve *c, double a, double b, size_t extra,
+                                        hcurve *out)
+{
+    const size_t p = (size_t)c->degree;
+    hcurve h;
+    projcurve_status st = hcurve_from(ctx, arena, c, 2 * p, &h);
+    if (st != PROJCURVE_OK)
+        return st;
+    for (size_t r = knot_multiplicity(&h, a); r < p; ++r)
+        hcurve_insert(&h, a);
+    for (size_t r = knot_multiplicity(&h, b); r < p; ++r)
+        hcurve_insert(&h, b);
+    const size_t k = last_knot_index(&h, a);
+    const size_t m = first_knot_index(&h, b);
+    if (m <= k || k < p)
+        return pc_fail(ctx, PROJCURVE_ERR_BAD_KNOTS, "cannot restrict a curve to [%.17g, %.17g]", a, b);
+    out->p = (int)p;
+    out->n = m - k + p;
+    out->cap = out->n + extra;
+    out->pw = arena_doubles(arena, 4 * out->cap);
+    out->u = arena_doubles(arena, out->cap + p + 1);
+    if (out->pw == NULL || out->u == NULL)
+        return no_memory(ctx);
+    memcpy(out->pw, h.pw + 4 * (k - p), 4 * out->n * sizeof(double));
+    size_t q = 0;
+    for (size_t i = 0; i <= p; ++i)
+        out->u[q++] = a;
+    for (size_t i = k + 1; i < m; ++i)
+        out->u[q++] = h.u[i];
+    for (size_t i = 0; i <= p; ++i)
+        out->u[q++] = b;
+    return PROJCURVE_OK;
+}
+
+static projcurve_status hcurve_to_io(projcurve_context *ctx, pc_arena *arena, const hcurve *h,
+                                     pc_io_curve *out)
+{
+    double *ctrl = arena_doubles(arena, 3 * h->n);
+    double *w = arena_doubles(arena, h->n);
+    double *knots = arena_doubles(arena, h->n + (size_t)h->p + 1);
+    if (ctrl == NULL || w == NULL || knots == NULL)
+        return no_memory(ctx);
+    int rational = 0;
+    for (size_t i = 0; i < h->n; ++i) {
+        w[i] = h->pw[4 * i + 3];
+        for (size_t k = 0; k < 3; ++k)
+            ctrl[3 * i + k] = h->pw[4 * i + k] / w[i];
+        rational |= (w[i] != w[0]);
+    }
+    memcpy(knots, h->u, (h->n + (size_t)h->p + 1) * sizeof(double));
+    *out = (pc_io_curve){.degree = h->p, .n_ctrl = h->n, .ctrl = ctrl,
+                         .weights = rational ? w : NULL, .knots = knots};
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_io_curve_restrict(projcurve_context *ctx, pc_arena *arena,
+                                      const pc_io_curve *c, double a, double b,
+                                      pc_io_curve *out)
+{
+    double t0, t1;
+    pc_io_curve_domain(c, &t0, &t1);
+    if (!(a < b) || a < t0 || b > t1)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_DOMAIN,
+                       "range [%.17g, %.17g] is not inside the curve domain [%.17g, %.17g]", a, b,
+                       t0, t1);
+    hcurve h;
+    projcurve_status st = hcurve_restrict(ctx, arena, c, a, b, 0, &h);
+    return st != PROJCURVE_OK ? st : hcurve_to_io(ctx, arena, &h, out);
+}
+
+/* Raises a Bezier segment (4D points) from degree p to p + 1 in place; the
+ * buffer holds p + 2 points. */
+static void bezier_elevate(double *pw, int p)
+{
+    const double n1 = (double)(p + 1);
+    double prev[4];
+    memcpy(prev, pw, sizeof prev);
+    for (int i = 1; i <= p; ++i) {
+        double cur[4];
+        memcpy(cur, pw + 4 * i, sizeof cur);
+        const double a = (double)i / n1;
+        for (int c = 0; c < 4; ++c)
+            pw[4 * i + c] = a * prev[c] + (1.0 - a) * cur[c];
+        memcpy(prev, cur, sizeof prev);
+    }
+    memcpy(pw + 4 * (p + 1), prev, sizeof prev);
+}
+
+/* Splits c (clamped over its domain) into Bezier segments by inserting
+ * every interior knot to multiplicity p. */
+static projcurve_status hcurve_bezier(projcurve_context *ctx, pc_arena *arena,
+                                      const pc_io_curve *c, hcurve *h)
+{
+    double t0, t1;
+    pc_io_curve_domain(c, &t0, &t1);
+    const size_t p = (size_t)c->degree;
+    size_t n_interior = 0;
+    for (size_t i = p + 1; i < c->n_ctrl; ++i)
+        n_interior += (c->knots[i] > t0 && c->knots[i] < t1 && c->knots[i] != c->knots[i - 1]);
+    projcurve_status st = hcurve_restrict(ctx, arena, c, t0, t1, n_interior * p, h);
+    if (st != PROJCURVE_OK)
+        return st;
+    for (size_t i = p + 1; i < h->n; ++i) {
+        const double t = h->u[i];
+        if (t > t0 && t < t1 && t != h->u[i - 1])
+            for (size_t r = knot_multiplicity(h, t); r < p; ++r)
+                hcurve_insert(h, t);
+    }
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_io_curve_join(projcurve_context *ctx, pc_arena *arena,
+                                  const pc_io_curve *parts, size_t n_parts, double gap_tol,
+                                  pc_io_curve *out)
+{
+    if (n_parts == 0)
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT, "no curves to join");
+    if (n_parts == 1) {
+        double t0, t1;
+        pc_io_curve_domain(&parts[0], &t0, &t1);
+        return pc_io_curve_restrict(ctx, arena, &parts[0], t0, t1, out);
+    }
+    int deg = 1;
+    for (size_t i = 0; i < n_parts; ++i)
+        deg = parts[i].degree > deg ? parts[i].degree : deg;
+    const size_t P = (size_t)deg;
+    hcurve *bz = pc_arena_calloc(arena, n_parts, sizeof *bz);
+    if (bz == NULL)
+        return no_memory(ctx);
+    size_t n_seg = 0;
+    for (size_t i = 0; i < n_parts; ++i) {
+        projcurve_status st = hcurve_bezier(ctx, arena, &parts[i], &bz[i]);
+        if (st != PROJCURVE_OK)
+            return st;
+        n_seg += (bz[i].n - 1) / (size_t)bz[i].p;
+    }
+    hcurve o = {.p = deg, .n = n_seg * P + 1};
+    o.cap = o.n;
+    o.pw = arena_doubles(arena, 4 * o.n);
+    o.u = arena_doubles(arena, o.n + P + 1);
+    if (o.pw == NULL || o.u == NULL)
+        return no_memory(ctx);
+    double seg[4 * (PROJCURVE_MAX_DEGREE + 1)];
+    double t = bz[0].u[0];
+    size_t q = 0, kq = 0;
+    for (size_t k = 0; k <= P; ++k)
+        o.u[kq++] = t;
+    for (size_t i = 0; i < n_parts; ++i) {
+        const hcurve *h = &bz[i];
+        const size_t p = (size_t)h->p;
+        double scale = 1.0;
+        if (i > 0) {
+            const double *end = o.pw + 4 * (q - 1);
+            const double *start = h->pw;
+            double gap = 0.0;
+            for (size_t c = 0; c < 3; ++c) {
+                const double d = end[c] / end[3] - start[c] / start[3];
+                gap += d * d;
+            }
+            if (!(sqrt(gap) <= gap_tol))
+                return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                               "part %zu does not start where part %zu ends (gap %g)", i + 1, i,
+                               sqrt(gap));
+            scale = end[3] / start[3];
+        }
+        for (size_t s = 0; s + 1 < h->n; s += p) {
+            memcpy(seg, h->pw + 4 * s, 4 * (p + 1) * sizeof(double));
+            for (int e = (int)p; e < deg; ++e)
+                bezier_elevate(seg, e);
+            const size_t first = (q == 0) ? 0 : 1; /* a join shares its point */
+            for (size_t j = first; j <= P; ++j) {
+                for (size_t c = 0; c < 4; ++c)
+                    o.pw[4 * q + c] = seg[4 * j + c] * scale;
+                ++q;
+            }
+            t += h->u[s + p + 1] - h->u[s + p];
+            for (size_t k = 0; k < P; ++k)
+                o.u[kq++] = t;
+        }
+    }
+    o.u[kq] = t;
+    return hcurve_to_io(ctx, arena, &o, out);
+}

@@ -1,0 +1,154 @@
+/*
+ * Knot lines of S (seed 000 s4): a composed piece is exact only inside one
+ * Bezier patch, so every segment is split where its chord meets a knot line.
+ * The split vertex is put on the projection curve and exactly on the knot
+ * line, so the two sub-chords lie in closed patch boxes.
+ */
+#include <math.h>
+
+#include "refine/refine_internal.h"
+
+/* Bound of the bracketed root search for a knot-line crossing; the Illinois
+ * variant of regula falsi converges superlinearly, so it is never reached in
+ * practice, and the chord crossing is used when it is. */
+#define PC_CROSSING_MAX_ITER 60
+
+/* Cells [lo, hi] of the breaks holding x: x in cell i iff
+ * breaks[i] <= x <= breaks[i + 1]; a value on an inner break is in two. */
+static void cell_range(const double *breaks, size_t n_cells, double x, size_t *lo, size_t *hi)
+{
+    size_t a = 0, b = n_cells; /* largest i < n_cells with breaks[i] <= x */
+    while (b - a > 1) {
+        const size_t mid = a + (b - a) / 2;
+        if (breaks[mid] <= x)
+            a = mid;
+        else
+            b = mid;
+    }
+    *hi = a;
+    *lo = (a > 0 && x == breaks[a]) ? a - 1 : a;
+}
+
+/* Overlap of the cell ranges of x0 and x1 (1 and its lowest cell), or 0 and
+ * the knot line first crossed when going from x0 to x1. */
+static int common_cell(const double *breaks, size_t n_cells, double x0, double x1, size_t *cell,
+                       double *line)
+{
+    size_t lo0, hi0, lo1, hi1;
+    cell_range(breaks, n_cells, x0, &lo0, &hi0);
+    cell_range(breaks, n_cells, x1, &lo1, &hi1);
+    const size_t lo = lo0 > lo1 ? lo0 : lo1, hi = hi0 < hi1 ? hi0 : hi1;
+    if (lo <= hi) {
+        *cell = lo;
+        return 1;
+    }
+    *line = x0 < x1 ? breaks[hi0 + 1] : breaks[lo0];
+    return 0;
+}
+
+/* x moved onto the nearest inner break if within tol. */
+static double snap_to_break(const double *breaks, size_t n_cells, double x, double tol)
+{
+    size_t lo, hi;
+    cell_range(breaks, n_cells, x, &lo, &hi);
+    if (hi > 0 && fabs(x - breaks[hi]) <= tol)
+        return breaks[hi];
+    if (hi + 1 < n_cells && fabs(breaks[hi + 1] - x) <= tol)
+        return breaks[hi + 1];
+    return x;
+}
+
+const pc_bezier_patch *pc_refine_common_patch(const pc_refiner *r, const pc_rvertex *a,
+                                              const pc_rvertex *b)
+{
+    const pc_patch_grid *g = r->grid;
+    size_t iu, iv;
+    double line;
+    if (!common_cell(g->breaks_u, g->spans_u, a->u, b->u, &iu, &line) ||
+        !common_cell(g->breaks_v, g->spans_v, a->v, b->v, &iv, &line))
+        return NULL;
+    return pc_patch_grid_at(g, iu, iv);
+}
+
+int pc_refine_on_knot_line(const pc_refiner *r, const pc_rvertex *v)
+{
+    const pc_patch_grid *g = r->grid;
+    size_t lo, hi;
+    cell_range(g->breaks_u, g->spans_u, v->u, &lo, &hi);
+    if (lo != hi)
+        return 1;
+    cell_range(g->breaks_v, g->spans_v, v->v, &lo, &hi);
+    return lo != hi;
+}
+
+/* Root of coord(t) = line on the projection between a and b (coordinate 0 =
+ * u, 1 = v), which bracket it; regula falsi, Illinois variant. */
+static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int coord,
+                          double line, pc_rvertex *out)
+{
+    pc_rvertex lo = *a, hi = *b;
+    double g_lo = (coord == 0 ? lo.u : lo.v) - line, g_hi = (coord == 0 ? hi.u : hi.v) - line;
+    int side = 0; /* which end stayed last time, for the Illinois halving */
+    for (int iter = 0; iter < PC_CROSSING_MAX_ITER; ++iter) {
+        const double t = (g_hi * lo.t - g_lo * hi.t) / (g_hi - g_lo);
+        pc_rvertex c;
+        if (!pc_refine_exact_point(r, &lo, &hi, t, &c))
+            return 0;
+        const double g = (coord == 0 ? c.u : c.v) - line;
+        if (fabs(g) <= r->min_move || fabs(hi.t - lo.t) <= r->min_dt) {
+            *out = c;
+            return 1;
+        }
+        if ((g < 0.0) == (g_lo < 0.0)) {
+            lo = c, g_lo = g;
+            if (side == -1)
+                g_hi *= 0.5;
+            side = -1;
+        } else {
+            hi = c, g_hi = g;
+            if (side == 1)
+                g_lo *= 0.5;
+            side = 1;
+        }
+    }
+    return 0;
+}
+
+void pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int exact,
+                             pc_rvertex *out)
+{
+    const pc_patch_grid *g = r->grid;
+    size_t cell;
+    double line_u = 0.0, line_v = 0.0;
+    const int in_u = common_cell(g->breaks_u, g->spans_u, a->u, b->u, &cell, &line_u);
+    const int in_v = common_cell(g->breaks_v, g->spans_v, a->v, b->v, &cell, &line_v);
+    /* The line met first along the chord; its chord parameter is in (0, 1). */
+    const double alpha_u = in_u ? INFINITY : (line_u - a->u) / (b->u - a->u);
+    const double alpha_v = in_v ? INFINITY : (line_v - a->v) / (b->v - a->v);
+    const int coord = alpha_u <= alpha_v ? 0 : 1;
+    const double alpha = coord == 0 ? alpha_u : alpha_v, line = coord == 0 ? line_u : line_v;
+
+    pc_rvertex c;
+    int ok = exact && exact_crossing(r, a, b, coord, line, &c);
+    /* The crossing must fall strictly between a and b in t, or the split
+     * would not shorten anything. */
+    if (ok && !((c.t - a->t) * (b->t - c.t) > 0.0))
+        ok = 0;
+    if (!ok) {
+        c.t = a->t + alpha * (b->t - a->t);
+        c.u = a->u + alpha * (b->u - a->u);
+        c.v = a->v + alpha * (b->v - a->v);
+    }
+    /* Exactly on the knot line; and at a patch corner when it passes within
+     * rounding of one, or the next segment would be a sliver across the
+     * other line whose chord direction is noise. */
+    if (coord == 0) {
+        c.u = line;
+        c.v = snap_to_break(g->breaks_v, g->spans_v, c.v, r->snap);
+    } else {
+        c.v = line;
+        c.u = snap_to_break(g->breaks_u, g->spans_u, c.u, r->snap);
+    }
+    c.fixed = 1;
+    *out = c;
+}

@@ -1,0 +1,190 @@
+/*
+ * Choosing the vertices: a march along the exact projection with step
+ * control, as an adaptive ODE integrator controls its step. From the current
+ * vertex, a candidate segment of parameter length h ends at the exact point
+ * q(t + h); it is accepted when
+ *   - its composed image is within eps_D of the exact curve (deviation.c),
+ *   - each of its end tangents is within eps_T / 2 of the exact tangent
+ *     there, so that at every joint the two pieces' tangents differ by at
+ *     most eps_T (triangle inequality on angles: eps_T-G1, seed 000 s2
+ *     step 4),
+ * and the next h is predicted from how far the candidate was from the
+ * bounds: the distance grows as h^2 and the tangent error as h for a smooth
+ * curve. Pieces thus come out close to the longest the tolerances allow,
+ * instead of being halved until they fit.
+ *
+ * Runs go from one fixed vertex (branch end or knot-line crossing of the
+ * traced polyline) to the next; a candidate whose chord leaves the patch is
+ * cut at the exact knot-line crossing. At a knot line S may have a crease
+ * (C0 knots, e.g. every knot of a degree-1 surface): the exact projection
+ * then has a corner there, so each piece is held to the exact tangent on its
+ * own side, and that joint keeps the corner of the exact curve.
+ */
+#include <math.h>
+
+#include "refine/refine_internal.h"
+
+#define PC_MARCH_GROW_MAX 2.0     /* largest step growth after a success */
+#define PC_MARCH_SHRINK_MIN 0.1   /* largest step cut after a failure */
+#define PC_MARCH_STEP_SAFETY 0.9  /* aim a little inside the bounds */
+/* Rejections in a row before a candidate is taken anyway: the step has then
+ * shrunk by at least PC_MARCH_SHRINK_MIN^... it never happens for a curve
+ * the corrector can follow; the bound only guarantees termination. */
+#define PC_MARCH_MAX_REJECTIONS 60
+
+/* One-sided tangents by differences: the step, as a fraction of the
+ * branch's t range (and at most a quarter of the segment). The angle error
+ * is about curvature x step, the rounding error newton_tol / step: both far
+ * below any eps_T at this size. */
+#define PC_SIDE_STEP_REL 1e-6
+
+/* Tangent of the exact projection at v, along increasing t (zero if the
+ * projector cannot give it, e.g. at a fold: then no angle bound there). */
+static pc_vec3 derivative_tangent(pc_refiner *r, const pc_rvertex *v)
+{
+    pc_proj_point pt;
+    if (!r->proj->derivatives(r->proj, v->t, v->u, v->v, &pt))
+        return vec3(0.0, 0.0, 0.0);
+    pc_vec3 d[3];
+    pc_nurbs_surface_eval(r->nurbs, v->u, v->v, 1, &r->hint_u, &r->hint_v, d);
+    return vec3_add(vec3_scale(d[1], pt.du), vec3_scale(d[2], pt.dv));
+}
+
+pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other)
+{
+    if (!pc_refine_on_knot_line(r, v) || other->t == v->t)
+        return derivative_tangent(r, v);
+    double step = PC_SIDE_STEP_REL * r->t_range;
+    if (step > 0.25 * fabs(other->t - v->t))
+        step = 0.25 * fabs(other->t - v->t);
+    const double sign = other->t > v->t ? 1.0 : -1.0;
+    pc_rvertex w;
+    if (!(step > 0.0) || !pc_refine_exact_point(r, v, other, v->t + sign * step, &w))
+        return derivative_tangent(r, v);
+    const pc_vec3 d = vec3_sub(pc_refine_surface_point(r, w.u, w.v),
+                               pc_refine_surface_point(r, v->u, v->v));
+    return vec3_scale(d, sign);
+}
+
+/* Angle between a and b in radians; 0 when either has no direction. */
+static double angle_between(pc_vec3 a, pc_vec3 b)
+{
+    const double na = vec3_norm(a), nb = vec3_norm(b);
+    if (!(na > 0.0) || !(nb > 0.0))
+        return 0.0;
+    return atan2(vec3_norm(vec3_cross(a, b)), vec3_dot(a, b));
+}
+
+/* End tangent directions of a rational Bezier curve: the derivative of
+ * A / w at an end is (A' - w' C) / w with A' = n (cw_1 - cw_0); only its
+ * direction is needed, so the positive factors are dropped. */
+static pc_vec3 end_direction(const double *end, const double *next)
+{
+    const double w = end[3];
+    const pc_vec3 c = vec3(end[0] / w, end[1] / w, end[2] / w);
+    const pc_vec3 d = vec3(next[0] - end[0], next[1] - end[1], next[2] - end[2]);
+    return vec3_axpy(d, -(next[3] - end[3]), c);
+}
+
+/* The larger angle between the composed curve's end tangents and the exact
+ * tangents t0 (start) and t1 (end). */
+static double end_angle(int n, const double *cw, pc_vec3 t0, pc_vec3 t1)
+{
+    const pc_vec3 c0 = end_direction(cw, cw + 4);
+    const pc_vec3 c1 = vec3_scale(end_direction(cw + 4 * n, cw + 4 * (n - 1)), -1.0);
+    const double a0 = angle_between(c0, t0), a1 = angle_between(c1, t1);
+    return a0 > a1 ? a0 : a1;
+}
+
+/* How much to scale the step: from the distance ratio (error ~ h^2) and the
+ * angle ratio (error ~ h). */
+static double step_factor(double ratio_d, double ratio_a)
+{
+    const double fd = ratio_d > 0.0 ? 1.0 / sqrt(ratio_d) : PC_MARCH_GROW_MAX;
+    const double fa = ratio_a > 0.0 ? 1.0 / ratio_a : PC_MARCH_GROW_MAX;
+    double f = PC_MARCH_STEP_SAFETY * (fd < fa ? fd : fa);
+    if (f > PC_MARCH_GROW_MAX)
+        f = PC_MARCH_GROW_MAX;
+    if (f < PC_MARCH_SHRINK_MIN)
+        f = PC_MARCH_SHRINK_MIN;
+    return f;
+}
+
+/* The candidate end for a step h from cur towards the run end b. */
+static int candidate(pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b, double h,
+                     pc_rvertex *cand)
+{
+    const double remaining = b->t - cur->t;
+    if (h >= remaining) {
+        *cand = *b;
+        return 1;
+    }
+    if (h > 0.5 * remaining) /* two balanced pieces rather than a long and a sliver */
+        h = 0.5 * remaining;
+    return pc_refine_exact_point(r, cur, b, cur->t + h, cand);
+}
+
+/* The first traced vertex after cur (or b): what is known of the curve when
+ * the corrector cannot reach it. */
+static pc_rvertex next_known(const pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b)
+{
+    size_t k = pc_refine_guide_index(r, cur->t);
+    while (k < r->n_guide && !(r->guide[k].t > cur->t))
+        ++k;
+    return k < r->n_guide && r->guide[k].t < b->t ? r->guide[k] : *b;
+}
+
+projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
+                                 pc_vertex_list *out)
+{
+    pc_rvertex cur = *a;
+    pc_vec3 t_cur = pc_refine_exact_tangent(r, &cur, b);
+    double h = r->step > 0.0 ? r->step : b->t - a->t;
+    int rejections = 0;
+    while (cur.t < b->t) {
+        pc_rvertex cand;
+        if (!candidate(r, &cur, b, h, &cand)) {
+            h *= 0.5; /* the corrector failed: come closer */
+            if (++rejections < PC_MARCH_MAX_REJECTIONS && h > r->min_dt)
+                continue;
+            cand = next_known(r, &cur, b); /* the exact curve is out of reach here */
+        }
+        if (pc_refine_common_patch(r, &cur, &cand) == NULL)
+            pc_refine_knot_crossing(r, &cur, &cand, cand.t - cur.t > r->min_dt, &cand);
+        const pc_bezier_patch *patch = pc_refine_common_patch(r, &cur, &cand);
+        const double hh = cand.t - cur.t;
+        double ratio_d = 0.0, ratio_a = 0.0, t_far;
+        const pc_vec3 t_cand = pc_refine_exact_tangent(r, &cand, &cur);
+        if (patch != NULL) { /* the cheap angle test first */
+            double cw[PC_PIECE_MAX_CW];
+            const int n = pc_refine_compose(patch, &cur, &cand, cw);
+            ratio_a = end_angle(n, cw, t_cur, t_cand) / r->half_angle;
+            if (ratio_a <= 1.0)
+                ratio_d = pc_refine_deviation(r, n, cw, &cur, &cand, r->eps_d, &t_far) / r->eps_d;
+        }
+        const double f = step_factor(ratio_d, ratio_a);
+        const int ok = patch != NULL && ratio_d <= 1.0 && ratio_a <= 1.0;
+        if (!ok && hh > r->min_dt && ++rejections < PC_MARCH_MAX_REJECTIONS) {
+            h = hh * f;
+            continue;
+        }
+        /* Accepted, or forced (see PC_MARCH_MAX_REJECTIONS): then the angle
+         * pass has work to do. A step cut short by the run end or a knot
+         * line says nothing against the old h. */
+        if (!ok)
+            ++r->forced;
+        const projcurve_status st = patch != NULL ? pc_refine_output(r, out, &cand)
+                                                  : pc_refine_split(r, &cur, &cand, 0, out);
+        if (st != PROJCURVE_OK)
+            return st;
+        h = hh * f > h || hh >= h ? hh * f : h;
+        /* the start tangent of the next piece: the other side at a knot line */
+        t_cur = cand.t < b->t && pc_refine_on_knot_line(r, &cand)
+                    ? pc_refine_exact_tangent(r, &cand, b)
+                    : t_cand;
+        cur = cand;
+        rejections = 0;
+    }
+    r->step = h;
+    return PROJCURVE_OK;
+}

@@ -1,0 +1,277 @@
+/*
+ * Tolerance control and composition of traced branches (seed 000 s2 steps
+ * 3-5, s4). For each branch:
+ *   1. the traced polyline gets an exact vertex wherever it crosses a knot
+ *      line of S (cells.c), so that every chord lies in one Bezier patch;
+ *   2. the traced vertices not needed for eps_D are dropped (simplify.c) and
+ *      every chord kept is subdivided at the farthest point of the exact
+ *      projection until its composed image is within eps_D (split.c,
+ *      deviation.c);
+ *   3. joints whose piece tangents differ by more than eps_T get vertices
+ *      (angle.c);
+ *   4. every segment is composed with its patch by blossoming (compose/).
+ * The refined polyline replaces the branch's points: it is the pcurve of the
+ * composed pieces. See docs/refine_compose.md.
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+
+#include "common/error.h"
+#include "compose/compose.h"
+#include "refine/refine.h"
+#include "refine/refine_internal.h"
+
+/* Automatic eps_D, relative to the model size (projcurve.h). */
+#define PC_REFINE_AUTO_DISTANCE 1e-4
+/* The deviation is estimated from samples; aiming a little below eps_D
+ * covers the estimate's error and the difference between the two one-sided
+ * distances, which agree to second order for curves this close. */
+#define PC_REFINE_EPS_SAFETY 0.9
+/* The same for eps_T: the exact tangent is exact, so little is needed. */
+#define PC_REFINE_ANGLE_SAFETY 0.98
+/* Parameter intervals shorter than this fraction of the branch are not
+ * split further, and (u, v) moves below this fraction of the domain count as
+ * zero: the corrector cannot resolve finer. */
+#define PC_REFINE_MIN_DT_REL 1e-12
+#define PC_REFINE_MIN_MOVE_REL 1e-13
+/* Knot-line crossings this close to a patch corner (fraction of the domain)
+ * are put on the corner: the move is far below any eps_D. */
+#define PC_REFINE_SNAP_REL 1e-11
+#define PC_RADIANS_PER_DEGREE 0.017453292519943295769
+
+static projcurve_status check_options(projcurve_context *ctx, const struct projcurve_options *o)
+{
+    if (!isfinite(o->tol_distance))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "distance tolerance is not finite");
+    if (o->tol_distance < 0.0)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "distance tolerance %g is negative (0 = automatic)", o->tol_distance);
+    if (!isfinite(o->tol_angle_deg))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "angle tolerance is not finite");
+    if (!(o->tol_angle_deg > 0.0 && o->tol_angle_deg <= 90.0))
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "angle tolerance %g degrees is outside (0, 90]", o->tol_angle_deg);
+    if (o->max_pieces < 1)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE, "piece limit %lld is below 1",
+                       o->max_pieces);
+    return PROJCURVE_OK;
+}
+
+/* The branch's points as ascending vertices (dropping repeated t), ends fixed. */
+static projcurve_status load_branch(projcurve_context *ctx, const pc_branch *b,
+                                    pc_vertex_list *out, int *descending)
+{
+    const double *p = b->points;
+    const size_t n = b->n_points;
+    *descending = p[0] > p[3 * (n - 1)];
+    out->count = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const double *q = p + 3 * (*descending ? n - 1 - k : k);
+        const pc_rvertex v = {q[0], q[1], q[2], k == 0 || k + 1 == n};
+        if (out->count > 0 && !(v.t > out->items[out->count - 1].t))
+            continue;
+        const projcurve_status st = pc_vertex_list_push(ctx, out, &v);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    out->items[out->count - 1].fixed = 1;
+    return PROJCURVE_OK;
+}
+
+/* Work lists of one call, reused from branch to branch. */
+typedef struct refine_lists {
+    pc_vertex_list traced, crossed, out, scratch;
+} refine_lists;
+
+static void refine_lists_free(refine_lists *l)
+{
+    pc_vertex_list_free(&l->traced);
+    pc_vertex_list_free(&l->crossed);
+    pc_vertex_list_free(&l->out);
+    pc_vertex_list_free(&l->scratch);
+}
+
+/* Steps 1-3 for one branch into l->out (ascending t). */
+static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_lists *l,
+                                      int *descending)
+{
+    projcurve_status st = load_branch(r->ctx, b, &l->traced, descending);
+    if (st != PROJCURVE_OK)
+        return st;
+    const pc_rvertex *tv = l->traced.items;
+    const size_t nt = l->traced.count;
+    r->t_range = tv[nt - 1].t - tv[0].t;
+    r->min_dt = PC_REFINE_MIN_DT_REL * r->t_range;
+    /* 1. knot-line crossings: an intermediate list, outside the piece budget */
+    const size_t budget = r->max_vertices;
+    r->max_vertices = SIZE_MAX;
+    r->guide = tv;
+    r->n_guide = nt;
+    l->crossed.count = 0;
+    st = pc_vertex_list_push(r->ctx, &l->crossed, &tv[0]);
+    for (size_t k = 0; k + 1 < nt && st == PROJCURVE_OK; ++k)
+        st = pc_refine_split(r, &tv[k], &tv[k + 1], 0, &l->crossed);
+    r->max_vertices = budget;
+    if (st != PROJCURVE_OK)
+        return st;
+    l->crossed.items[l->crossed.count - 1].fixed = 1;
+    /* 2. and 3. with the crossings as the corrector's guide */
+    r->guide = l->crossed.items;
+    r->n_guide = l->crossed.count;
+    l->out.count = 0;
+    st = pc_refine_output(r, &l->out, &l->crossed.items[0]);
+    r->step = 0.0;
+    r->forced = 0;
+    for (size_t k = 1, start = 0; k < l->crossed.count && st == PROJCURVE_OK; ++k) {
+        if (!l->crossed.items[k].fixed)
+            continue;
+        st = pc_refine_march(r, &l->crossed.items[start], &l->crossed.items[k], &l->out);
+        start = k;
+    }
+    if (st == PROJCURVE_OK && r->forced > 0)
+        st = pc_refine_angles(r, &l->out, &l->scratch);
+    return st;
+}
+
+/* Composes the segment a-b (one piece, or one per patch when it still crosses
+ * knot lines, which the split loop's bounds can leave in pathological cases)
+ * and appends it to the branch. */
+static projcurve_status add_pieces(pc_refiner *r, pc_branch *b, const pc_rvertex *a,
+                                   const pc_rvertex *end, int rational)
+{
+    const size_t bound = r->grid->spans_u + r->grid->spans_v + 2;
+    pc_rvertex cur = *a;
+    for (size_t iter = 0; iter < bound; ++iter) {
+        pc_rvertex next = *end;
+        const pc_bezier_patch *patch = pc_refine_common_patch(r, &cur, &next);
+        if (patch == NULL) {
+            pc_refine_knot_crossing(r, &cur, end, 0, &next);
+            patch = pc_refine_common_patch(r, &cur, &next);
+            if (patch == NULL)
+                break;
+        }
+        double cw[PC_PIECE_MAX_CW], ctrl[3 * (PC_PIECE_MAX_DEGREE + 1)];
+        double weights[PC_PIECE_MAX_DEGREE + 1];
+        const int n = pc_refine_compose(patch, &cur, &next, cw);
+        if (rational) {
+            pc_compose_to_cartesian(n, cw, ctrl, weights);
+        } else { /* weights are 1 up to rounding: keep the polynomial form exact */
+            for (int k = 0; k <= n; ++k)
+                for (int c = 0; c < 3; ++c)
+                    ctrl[3 * k + c] = cw[4 * k + c];
+        }
+        const double uv[4] = {cur.u, cur.v, next.u, next.v};
+        const projcurve_status st = pc_branch_add_piece(r->ctx, b, n, cur.t, next.t, uv, ctrl,
+                                                        rational ? weights : NULL);
+        if (st != PROJCURVE_OK || (next.t == end->t && next.u == end->u && next.v == end->v))
+            return st;
+        cur = next;
+    }
+    return pc_fail(r->ctx, PROJCURVE_ERR_SINGULAR,
+                   "segment (%g, %g)-(%g, %g) could not be split at the knot lines", a->u, a->v,
+                   end->u, end->v);
+}
+
+/* Step 4, and the refined polyline as the branch's points. */
+static projcurve_status store_branch(pc_refiner *r, pc_branch *b, const pc_vertex_list *out,
+                                     int descending)
+{
+    const int rational = r->nurbs->rational;
+    const size_t n = out->count;
+    for (size_t k = 0; k + 1 < n; ++k) {
+        const pc_rvertex *a = &out->items[descending ? n - 1 - k : k];
+        const pc_rvertex *e = &out->items[descending ? n - 2 - k : k + 1];
+        const projcurve_status st = add_pieces(r, b, a, e, rational);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    b->n_points = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const pc_rvertex *v = &out->items[descending ? n - 1 - k : k];
+        const double point[3] = {v->t, v->u, v->v};
+        const projcurve_status st = pc_branch_add_point(r->ctx, b, 3, point);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    return PROJCURVE_OK;
+}
+
+static void refiner_init(pc_refiner *r, projcurve_context *ctx, const pc_projector *proj,
+                         const struct projcurve_options *o, double eps)
+{
+    const projcurve_surface *s = proj->surface;
+    const double *dom = s->nurbs.domain;
+    *r = (pc_refiner){0};
+    r->ctx = ctx;
+    r->proj = proj;
+    r->nurbs = &s->nurbs;
+    r->grid = &s->grid;
+    r->eps_d = PC_REFINE_EPS_SAFETY * eps;
+    r->cos_eps_t = cos(o->tol_angle_deg * PC_RADIANS_PER_DEGREE);
+    r->half_angle = 0.5 * PC_REFINE_ANGLE_SAFETY * o->tol_angle_deg * PC_RADIANS_PER_DEGREE;
+    r->min_move = PC_REFINE_MIN_MOVE_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
+    r->snap = PC_REFINE_SNAP_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
+}
+
+projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projector *proj,
+                                       const struct projcurve_options *opts,
+                                       projcurve_result *res)
+{
+    PC_REQUIRE(ctx, proj, "projector");
+    PC_REQUIRE(ctx, proj->surface, "projector surface");
+    PC_REQUIRE(ctx, res, "result");
+    struct projcurve_options defaults;
+    if (opts == NULL) {
+        pc_options_defaults(&defaults);
+        opts = &defaults;
+    }
+    projcurve_status st = check_options(ctx, opts);
+    if (st != PROJCURVE_OK)
+        return st;
+    if (res->point_dim != 3)
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "refinement needs (t, u, v) branches, not %d-dimensional points",
+                       res->point_dim);
+    if (!opts->compose)
+        return PROJCURVE_OK;
+    const double eps = opts->tol_distance > 0.0
+                           ? opts->tol_distance
+                           : PC_REFINE_AUTO_DISTANCE * proj->surface->size;
+    res->stats.tol_distance = eps;
+
+    pc_refiner r;
+    refiner_init(&r, ctx, proj, opts, eps);
+    refine_lists lists = {{0}, {0}, {0}, {0}};
+    const size_t max_pieces = (size_t)opts->max_pieces;
+    size_t pieces = 0;
+    for (size_t i = 0; i < res->n_branches && st == PROJCURVE_OK; ++i) {
+        pc_branch *b = &res->branches[i];
+        pc_branch_clear_pieces(b);
+        if (r.limit_hit) {
+            b->end = PROJCURVE_END_LIMIT;
+            continue;
+        }
+        if (b->n_points < 2)
+            continue;
+        int descending = 0;
+        r.max_vertices = max_pieces - pieces + 1;
+        st = refine_branch(&r, b, &lists, &descending);
+        if (st == PROJCURVE_ERR_LIMIT_REACHED) {
+            b->end = PROJCURVE_END_LIMIT;
+            st = PROJCURVE_OK;
+        }
+        if (st == PROJCURVE_OK)
+            st = store_branch(&r, b, &lists.out, descending);
+        pieces += b->n_pieces;
+        if (pieces >= max_pieces && i + 1 < res->n_branches)
+            r.limit_hit = 1;
+    }
+    refine_lists_free(&lists);
+    res->stats.pieces = (double)pieces;
+    if (st == PROJCURVE_OK && r.limit_hit)
+        st = pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
+                     "the piece limit %lld was reached; the pieces made so far are kept",
+                     opts->max_pieces);
+    return st;
+}

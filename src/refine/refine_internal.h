@@ -1,0 +1,137 @@
+/*
+ * Shared state of the tolerance control of one branch (refine/). The stages,
+ * each in its own file:
+ *   vertices.c   growable vertex lists
+ *   exact.c      exact points of the projection (corrector seeded from the
+ *                traced polyline) and images on S
+ *   cells.c      which Bezier patch holds a segment; exact knot-line crossings
+ *   deviation.c  Hausdorff distance of a composed segment to the exact curve
+ *   split.c      the subdivision loop: knot lines, then Hausdorff (eps_D)
+ *   march.c      the vertices: a step-controlled march along the exact curve
+ *   angle.c      joint angle control (eps_T)
+ *   refine.c     the driver: options, branches, composition, statistics
+ */
+#ifndef PC_REFINE_INTERNAL_H
+#define PC_REFINE_INTERNAL_H
+
+#include <stddef.h>
+
+#include "api/handles.h"
+#include "bezier/bezier.h"
+#include "trace/projector.h"
+
+/* Largest degree of a composed piece and its homogeneous storage. */
+#define PC_PIECE_MAX_DEGREE (2 * PROJCURVE_MAX_DEGREE)
+#define PC_PIECE_MAX_CW (4 * (PC_PIECE_MAX_DEGREE + 1))
+
+/* A vertex of the parameter-space polyline: curve parameter t and (u, v).
+ * `fixed` marks vertices that simplification must keep (branch ends and
+ * knot-line crossings). */
+typedef struct pc_rvertex {
+    double t, u, v;
+    int fixed;
+} pc_rvertex;
+
+typedef struct pc_vertex_list {
+    pc_rvertex *items;
+    size_t count, capacity;
+} pc_vertex_list;
+
+typedef struct pc_refiner {
+    projcurve_context *ctx;
+    const pc_projector *proj;
+    const pc_nurbs_surface *nurbs;
+    const pc_patch_grid *grid;
+    double eps_d;        /* distance to reach, model units (safety factor applied) */
+    double cos_eps_t;    /* cosine of the joint angle tolerance */
+    double half_angle;   /* eps_T / 2 in radians (safety applied): the bound on
+                            each piece end's tangent error */
+    double step;         /* the march's current parameter step (0 = none yet) */
+    size_t forced;       /* segments the march accepted without meeting the bounds */
+    double min_dt;       /* parameter intervals below this are not split */
+    double t_range;      /* the branch's parameter range */
+    double min_move;     /* uv step below which a knot crossing is converged */
+    double snap;         /* a crossing this close (u, v) to a patch corner is put on it */
+    /* The traced polyline (ascending t, knot crossings included): bracketing
+     * exact points give the corrector its initial guesses. */
+    const pc_rvertex *guide;
+    size_t n_guide;
+    size_t max_vertices; /* output vertices allowed for this branch (pieces + 1) */
+    int limit_hit;       /* set when max_vertices stopped the refinement */
+    size_t hint_u, hint_v;
+} pc_refiner;
+
+/* vertices.c */
+projcurve_status pc_vertex_list_push(projcurve_context *ctx, pc_vertex_list *list,
+                                     const pc_rvertex *v);
+void pc_vertex_list_free(pc_vertex_list *list);
+
+/* Appends v to the output list unless the vertex budget is spent (then sets
+ * r->limit_hit and returns LIMIT_REACHED). */
+projcurve_status pc_refine_output(pc_refiner *r, pc_vertex_list *out, const pc_rvertex *v);
+
+/* exact.c: the exact projection point at t between the exact vertices a and b
+ * (t between a.t and b.t): the corrector started from the interpolation of
+ * the closest known exact points. Returns 1 on success. */
+int pc_refine_exact_point(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, double t,
+                          pc_rvertex *out);
+/* Index of the last guide vertex with t_k <= t (0 if none). */
+size_t pc_refine_guide_index(const pc_refiner *r, double t);
+/* S(u, v). */
+pc_vec3 pc_refine_surface_point(pc_refiner *r, double u, double v);
+
+/* cells.c: the patch whose closed parameter box holds both a and b (then the
+ * whole segment lies in it), or NULL. */
+const pc_bezier_patch *pc_refine_common_patch(const pc_refiner *r, const pc_rvertex *a,
+                                              const pc_rvertex *b);
+/* 1 when v lies on an inner knot line (then S may have a crease there). */
+int pc_refine_on_knot_line(const pc_refiner *r, const pc_rvertex *v);
+/* For a segment with no common patch: the vertex where the projection meets
+ * the first knot line crossed by the chord a-b, lying exactly on that line.
+ * When the corrector cannot give it (or `exact` is 0), the chord's own
+ * crossing with t interpolated. Always strictly between a and b. */
+void pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int exact,
+                             pc_rvertex *out);
+
+/* deviation.c: Rational Bezier curve of degree n (homogeneous cw): point and
+ * first two derivatives at s (n >= 2). */
+void pc_piece_eval(int n, const double *cw, double s, pc_vec3 out[3]);
+/* Distance from x to the composed curve, by Newton on the foot parameter from
+ * s0 (an upper bound of the true distance; *s_foot may be NULL). */
+double pc_piece_distance(int n, const double *cw, pc_vec3 x, double s0, double *s_foot);
+/* Estimated Hausdorff distance between the segment a-b, composed as the
+ * degree-n curve cw, and the exact projection over [a.t, b.t]; *t_far gets
+ * where it is largest. Stops early with the first value found above limit.
+ * INFINITY when the exact curve could not be evaluated. */
+double pc_refine_deviation(pc_refiner *r, int n, const double *cw, const pc_rvertex *a,
+                           const pc_rvertex *b, double limit, double *t_far);
+
+/* split.c: appends the vertices after a up to and including b (out's last
+ * vertex is a), subdividing until every segment lies in one patch and, when
+ * `hausdorff` is set, is within eps_D. Statuses: OK, LIMIT_REACHED, NO_MEMORY. */
+projcurve_status pc_refine_split(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
+                                 int hausdorff, pc_vertex_list *out);
+
+/* march.c: tangent of the exact projection at v along increasing t, on the
+ * side of v towards `other` (an exact point on the same run): at a knot line
+ * of S, where the surface may have a crease, the one-sided tangent by a
+ * short difference; elsewhere q' from the projector. Zero if unavailable. */
+pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other);
+
+/* march.c: appends the vertices after a up to and including b (ascending t,
+ * out's last vertex is a): every segment in one patch, within eps_D, and with
+ * end tangents within eps_T / 2 of the exact ones. Statuses: OK,
+ * LIMIT_REACHED, NO_MEMORY. */
+projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
+                                 pc_vertex_list *out);
+
+/* angle.c: inserts vertices until every joint angle is within eps_T (needed
+ * only where the march had to force a segment);
+ * `list` is replaced by the result (scratch is working storage). */
+projcurve_status pc_refine_angles(pc_refiner *r, pc_vertex_list *list, pc_vertex_list *scratch);
+
+/* The composed segment a-b (both in patch): degree returned, cw filled. */
+int pc_refine_compose(const pc_bezier_patch *patch, const pc_rvertex *a, const pc_rvertex *b,
+                      double *cw);
+
+#endif /* PC_REFINE_INTERNAL_H */

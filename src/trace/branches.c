@@ -1,0 +1,320 @@
+/*
+ * The driver of the tracing engine (trace.h): seeds at the start of the
+ * curve, one traced branch per seed, then the sweep over t of seed 000
+ * s3.4 that finds the branches born in mid-curve. A branch found by the
+ * sweep is traced backwards first, to where it was born (a boundary entry,
+ * a fold, or the start of the curve), then forwards to its end.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "common/error.h"
+#include "trace/tracer.h"
+
+/* Samples of the curve for the fallback length estimate. */
+#define PC_LENGTH_SAMPLES 64
+/* Smallest sweep step, as a fraction of the curve's domain; it bounds the
+ * number of checks. */
+#define PC_SWEEP_MIN_FRACTION 1e-7
+/* Seeds closer than this fraction of the model size on S are one point. */
+#define PC_SEED_SAME 1e-9
+/* The sweep checks every this fraction of the arc-length step. */
+#define PC_SWEEP_STEP_FRACTION 0.5
+/* Largest arc-length step in t, as a multiple of the arc-step fraction of
+ * the domain: the step where the projection barely moves stays sane. */
+#define PC_MAX_STEP_FACTOR 4.0
+
+/* Length of the curve's polyline through PC_LENGTH_SAMPLES + 1 points. */
+static double curve_length(const projcurve_curve *c)
+{
+    double len = 0.0;
+    size_t hint = 0;
+    pc_vec3 prev = {0, 0, 0};
+    for (int i = 0; i <= PC_LENGTH_SAMPLES; ++i) {
+        const double t = c->t0 + (c->t1 - c->t0) * (double)i / PC_LENGTH_SAMPLES;
+        pc_vec3 p;
+        if (pc_curve_eval(c, t, 0, &hint, &p) != PROJCURVE_OK)
+            return 0.0;
+        if (i > 0)
+            len += vec3_dist(p, prev);
+        prev = p;
+    }
+    return len;
+}
+
+static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_projector *proj,
+                         const struct projcurve_options *opts, const pc_trace_config *cfg,
+                         projcurve_result *r)
+{
+    const projcurve_curve *c = proj->curve;
+    *tr = (pc_tracer){0};
+    tr->ctx = ctx;
+    tr->proj = proj;
+    tr->r = r;
+    tr->method = (int)opts->method;
+    tr->t_begin = c->t0;
+    tr->t_end = c->t1;
+    for (int k = 0; k < 4; ++k)
+        tr->dom[k] = proj->surface->nurbs.domain[k];
+    const double span = c->t1 - c->t0;
+    double length = cfg->length_estimate > 0.0 ? cfg->length_estimate : curve_length(c);
+    if (!(length > 0.0) || !isfinite(length))
+        length = cfg->model_size > 0.0 ? cfg->model_size : 1.0;
+    tr->ds = opts->arc_step_fraction * length;
+    tr->param_step = opts->param_step;
+    tr->max_step = fmin(PC_MAX_STEP_FACTOR * opts->arc_step_fraction, 1.0) * span;
+    tr->min_step = PC_TRACE_MIN_STEP * span;
+    tr->max_points = (size_t)opts->max_points;
+}
+
+static projcurve_branch_start start_reason(projcurve_branch_end backward_end)
+{
+    switch (backward_end) {
+    case PROJCURVE_END_BOUNDARY:
+        return PROJCURVE_START_BOUNDARY;
+    case PROJCURVE_END_SILHOUETTE:
+        return PROJCURVE_START_SILHOUETTE;
+    case PROJCURVE_END_CURVE_END:
+        return PROJCURVE_START_CURVE_START;
+    default:
+        return PROJCURVE_START_JUMP;
+    }
+}
+
+/* Traces `back` backwards from the seed, then moves its vertices, reversed,
+ * into branch bi. */
+static projcurve_status trace_birth(pc_tracer *tr, const pc_seed *seed, size_t bi)
+{
+    pc_branch back = {0};
+    projcurve_branch_end why = PROJCURVE_END_FAILED;
+    projcurve_status st = pc_trace_run(tr, seed, -1, tr->t_begin, 1, &back, &why);
+    pc_branch *b = &tr->r->branches[bi];
+    b->start = start_reason(why);
+    for (size_t k = back.n_points; st == PROJCURVE_OK && k-- > 0;)
+        st = pc_branch_add_point(tr->ctx, b, 3, back.points + 3 * k);
+    free(back.points);
+    return st;
+}
+
+/* A new branch through the seed: traced forwards to its end, and first
+ * backwards to its birth when it was found in mid-curve. */
+static projcurve_status start_branch(pc_tracer *tr, const pc_seed *seed, int mid_curve)
+{
+    pc_branch *b = NULL;
+    projcurve_status st = pc_result_add_branch(tr->ctx, tr->r, &b);
+    if (st != PROJCURVE_OK)
+        return st;
+    const size_t bi = tr->r->n_branches - 1;
+    b->start = PROJCURVE_START_CURVE_START;
+    b->end = PROJCURVE_END_FAILED;
+    if (mid_curve) {
+        tr->r->stats.jumps += 1.0;
+        st = trace_birth(tr, seed, bi);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    b = &tr->r->branches[bi];
+    projcurve_branch_end why = PROJCURVE_END_FAILED;
+    st = pc_trace_run(tr, seed, +1, tr->t_end, b->n_points == 0, b, &why);
+    b->end = why;
+    return st;
+}
+
+/* Index j of the segment [t_j, t_j+1] of b holding t (b has >= 2 points,
+ * t within its range). */
+static size_t segment_at(const pc_branch *b, double t)
+{
+    size_t lo = 0, hi = b->n_points - 1;
+    while (hi - lo > 1) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (b->points[3 * mid] <= t)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+static int branch_covers(const pc_branch *b, double t)
+{
+    return b->n_points >= 2 && b->points[0] <= t && t <= b->points[3 * (b->n_points - 1)];
+}
+
+/* The current points of the branches alive at t, interpolated on their
+ * polylines. */
+static projcurve_status active_points(pc_tracer *tr, double t, pc_seed_list *out)
+{
+    out->count = 0;
+    for (size_t i = 0; i < tr->r->n_branches; ++i) {
+        const pc_branch *b = &tr->r->branches[i];
+        if (!branch_covers(b, t))
+            continue;
+        const double *p = b->points + 3 * segment_at(b, t);
+        const double w = p[3] > p[0] ? (t - p[0]) / (p[3] - p[0]) : 0.0;
+        projcurve_status st = pc_seed_list_push(tr->ctx, out, t, p[1] + w * (p[4] - p[1]),
+                                                p[2] + w * (p[5] - p[2]));
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    return PROJCURVE_OK;
+}
+
+/* The sweep step at t: half an arc-length step ds of the fastest branch
+ * alive (speed measured on its polyline), or of the curve itself when none
+ * is. Half, so that the normal motion of a ray's hits between two checks
+ * stays below the ds of the jump criteria 2 and 4. */
+static double sweep_step(const pc_tracer *tr, double t)
+{
+    const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
+    double speed = 0.0;
+    for (size_t i = 0; i < tr->r->n_branches; ++i) {
+        const pc_branch *b = &tr->r->branches[i];
+        if (!branch_covers(b, t))
+            continue;
+        const double *p = b->points + 3 * segment_at(b, t);
+        if (!(p[3] > p[0]))
+            continue;
+        pc_vec3 a, c;
+        pc_nurbs_surface_eval(s, p[1], p[2], 0, NULL, NULL, &a);
+        pc_nurbs_surface_eval(s, p[4], p[5], 0, NULL, NULL, &c);
+        speed = fmax(speed, vec3_dist(a, c) / (p[3] - p[0]));
+    }
+    if (!(speed > 0.0)) {
+        pc_vec3 d[2];
+        if (pc_curve_eval(tr->proj->curve, t, 1, NULL, d) == PROJCURVE_OK)
+            speed = vec3_norm(d[1]);
+    }
+    const double span = tr->t_end - tr->t_begin;
+    double dt = speed > 0.0 ? PC_SWEEP_STEP_FRACTION * tr->ds / speed : tr->max_step;
+    dt = fmin(dt, tr->max_step);
+    return fmax(dt, PC_SWEEP_MIN_FRACTION * span);
+}
+
+/* 1 when the found point continues a branch that stopped short of t
+ * without a geometric reason (it reached the curve's end a rounding error
+ * early, failed, or hit the point limit): within ds of its last vertex and
+ * within the sweep step dt in t. Branches that ended on the boundary or a
+ * fold are not continued: a point beyond them is a new branch. */
+static int continues_branch(const pc_tracer *tr, const pc_seed *p, double dt)
+{
+    const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
+    pc_vec3 a;
+    pc_nurbs_surface_eval(s, p->u, p->v, 0, NULL, NULL, &a);
+    for (size_t i = 0; i < tr->r->n_branches; ++i) {
+        const pc_branch *b = &tr->r->branches[i];
+        if (b->n_points == 0 || b->end == PROJCURVE_END_BOUNDARY ||
+            b->end == PROJCURVE_END_SILHOUETTE)
+            continue;
+        const double *last = b->points + 3 * (b->n_points - 1);
+        if (last[0] > p->t || p->t - last[0] > dt)
+            continue;
+        pc_vec3 e;
+        pc_nurbs_surface_eval(s, last[1], last[2], 0, NULL, NULL, &e);
+        if (vec3_dist(a, e) <= tr->ds)
+            return 1;
+    }
+    return 0;
+}
+
+/* Removes the seeds that coincide on S with an earlier one: the same point
+ * of a closed surface's seam or of a collapsed edge found under two
+ * parameters is one point of the projection. */
+static void drop_coincident(const pc_tracer *tr, pc_seed_list *list)
+{
+    const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
+    const double same = PC_SEED_SAME * tr->proj->model_size;
+    size_t kept = 0;
+    for (size_t k = 0; k < list->count; ++k) {
+        pc_vec3 a;
+        pc_nurbs_surface_eval(s, list->items[k].u, list->items[k].v, 0, NULL, NULL, &a);
+        int duplicate = 0;
+        for (size_t i = 0; i < kept && !duplicate; ++i) {
+            pc_vec3 b;
+            pc_nurbs_surface_eval(s, list->items[i].u, list->items[i].v, 0, NULL, NULL, &b);
+            duplicate = vec3_dist(a, b) <= same;
+        }
+        if (!duplicate)
+            list->items[kept++] = list->items[k];
+    }
+    list->count = kept;
+}
+
+/* Seed 000 s3.4 over the whole curve. */
+static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
+{
+    pc_seed_list active = {0}, found = {0};
+    unsigned char *matched = NULL;
+    size_t cap_matched = 0;
+    projcurve_status st = PROJCURVE_OK;
+    if (finder->reset)
+        finder->reset(finder);
+    const size_t max_checks = (size_t)(1.0 / PC_SWEEP_MIN_FRACTION) + 2;
+    double t = tr->t_begin;
+    for (size_t check = 0; check < max_checks && t < tr->t_end && !tr->limit_hit; ++check) {
+        const double dt = sweep_step(tr, t);
+        const double t_prev = t;
+        t = t + dt >= tr->t_end ? tr->t_end : t + dt;
+        st = active_points(tr, t, &active);
+        if (st != PROJCURVE_OK)
+            break;
+        if (finder->may_jump && !finder->may_jump(finder, t, active.items, active.count, tr->ds))
+            continue;
+        st = finder->find(finder, tr->ctx, t, &found);
+        if (st != PROJCURVE_OK)
+            break;
+        drop_coincident(tr, &found);
+        if (found.count > cap_matched) {
+            unsigned char *m = realloc(matched, found.count);
+            if (m == NULL) {
+                st = pc_fail(tr->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory matching seeds");
+                break;
+            }
+            matched = m;
+            cap_matched = found.count;
+        }
+        pc_match_seeds(tr->proj->surface, active.items, active.count, found.items, found.count,
+                       tr->ds, matched);
+        for (size_t k = 0; k < found.count && st == PROJCURVE_OK && !tr->limit_hit; ++k)
+            if (!matched[k] && !continues_branch(tr, &found.items[k], t - t_prev))
+                st = start_branch(tr, &found.items[k], 1);
+        if (st != PROJCURVE_OK)
+            break;
+    }
+    free(matched);
+    pc_seed_list_free(&active);
+    pc_seed_list_free(&found);
+    return st;
+}
+
+/* Branches of a single vertex (a seed on a fold, a grazing hit) carry no
+ * curve: they are dropped. */
+static void drop_single_points(projcurve_result *r)
+{
+    for (size_t i = r->n_branches; i-- > 0;)
+        if (r->branches[i].n_points < 2) {
+            r->stats.points -= (double)r->branches[i].n_points;
+            pc_result_remove_branch(r, i);
+        }
+}
+
+projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *proj,
+                                   const struct projcurve_options *opts,
+                                   pc_seed_finder *finder, const pc_trace_config *config,
+                                   projcurve_result *r)
+{
+    pc_tracer tr;
+    tracer_setup(&tr, ctx, proj, opts, config, r);
+    pc_seed_list seeds = {0};
+    projcurve_status st = finder->find(finder, ctx, tr.t_begin, &seeds);
+    drop_coincident(&tr, &seeds);
+    for (size_t k = 0; k < seeds.count && st == PROJCURVE_OK && !tr.limit_hit; ++k)
+        st = start_branch(&tr, &seeds.items[k], 0);
+    pc_seed_list_free(&seeds);
+    if (st == PROJCURVE_OK && opts->jump_detection && !tr.limit_hit)
+        st = sweep(&tr, finder);
+    drop_single_points(r);
+    if (st == PROJCURVE_OK && tr.limit_hit)
+        st = pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
+                     "the limit of %zu traced points was reached", tr.max_points);
+    return st;
+}

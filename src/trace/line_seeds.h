@@ -1,0 +1,62 @@
+/*
+ * The seed finder of the directional projection (seed 000 s3.1, s3.4): the
+ * points of the projection at P(t) are the hits of the ray P(t) + lambda Dir
+ * (lambda > 0) with S; the jump criteria compare the ray's hits with the
+ * control polygons of the patches against the previous ray's.
+ */
+#ifndef PC_TRACE_LINE_SEEDS_H
+#define PC_TRACE_LINE_SEEDS_H
+
+#include <stddef.h>
+
+#include "intersect/intersect.h"
+#include "trace/trace.h"
+
+/* A hit of a ray with the control polygon of patch `patch`. */
+typedef struct pc_polygon_hit {
+    size_t patch;
+    pc_vec3 x;
+} pc_polygon_hit;
+
+/* A list of polygon hits (one ray's). */
+typedef struct pc_polygon_hits {
+    pc_polygon_hit *items;
+    size_t count, capacity;
+} pc_polygon_hits;
+
+typedef struct pc_line_finder {
+    pc_seed_finder base;       /* base.state points to this struct */
+    const pc_projector *proj;  /* surface, curve and the corrector */
+    pc_vec3 dir;               /* unit projection direction */
+    pc_hit_list hits;          /* scratch of find() */
+    size_t curve_hint;
+    /* Jump criteria state (seed 000 s3.4): control-polygon hits of the
+     * previous ray L1 and of the current ray L2, and the patches the BVH
+     * returned for L2. */
+    pc_polygon_hits l1, l2;
+    size_t *patches;
+    size_t n_patches, cap_patches;
+    int have_l1;
+} pc_line_finder;
+
+/* Sets up the finder (no allocation until used). proj must be directional. */
+void pc_line_finder_init(pc_line_finder *f, const pc_projector *proj, pc_vec3 unit_dir);
+void pc_line_finder_free(pc_line_finder *f);
+
+/* The jump criteria of seed 000 s3.4 (jump_detect.c), the finder's
+ * may_jump and reset. */
+int pc_line_may_jump(pc_seed_finder *self, double t, const pc_seed *active, size_t n_active,
+                     double ds);
+void pc_line_jump_reset(pc_seed_finder *self);
+
+/* Every control-polygon hit of the ray origin + lambda dir over the patches
+ * whose boxes it meets; clears and fills out. Returns 0 when memory ran
+ * out. Also used by the length estimate. */
+int pc_line_polygon_hits(pc_line_finder *f, pc_vec3 origin, pc_polygon_hits *out);
+
+/* The projection's arc length estimated as in seed 000 s3.3 (the curve's
+ * polyline projected onto the patches' control polygons); 0 when no
+ * sample meets them (length_estimate.c). */
+double pc_directional_length_estimate(pc_line_finder *f);
+
+#endif /* PC_TRACE_LINE_SEEDS_H */

@@ -1,0 +1,205 @@
+/*
+ * One branch, one direction: the loop of seed 000 s3 steps 2-4. At the
+ * current point the projector gives q', q''; the step h comes from the
+ * constant arc length ds (eq. (3.7), h = ds / |Q'|) or the constant
+ * parameter step; the predictor (Taylor (3.5) or RK4) estimates q(t + h) and
+ * Newton corrects it. A failed correction halves the step; a step never
+ * passes the end of the curve, crosses a fold (a sign change of det J) or
+ * leaves the domain (the exit is then located on the boundary).
+ */
+#include "trace/tracer.h"
+
+#include <math.h>
+
+#include "common/error.h"
+
+typedef enum step_outcome { STEP_ACCEPT, STEP_REJECT, STEP_EXIT } step_outcome;
+
+double pc_domain_margin(const double dom[4], double u, double v)
+{
+    const double wu = dom[1] - dom[0], wv = dom[3] - dom[2];
+    const double mu = fmin(u - dom[0], dom[1] - u) / (wu > 0.0 ? wu : 1.0);
+    const double mv = fmin(v - dom[2], dom[3] - v) / (wv > 0.0 ? wv : 1.0);
+    return fmin(mu, mv);
+}
+
+static int outside(const double dom[4], const double uv[2])
+{
+    return uv[0] < dom[0] || uv[0] > dom[1] || uv[1] < dom[2] || uv[1] > dom[3];
+}
+
+static double norm2(double a, double b)
+{
+    return sqrt(a * a + b * b);
+}
+
+/* (u, v) within two strides (parameter length of the step) of a side. */
+static int near_boundary(const double dom[4], const double uv[2], double stride)
+{
+    const double gap = fmin(fmin(uv[0] - dom[0], dom[1] - uv[0]),
+                            fmin(uv[1] - dom[2], dom[3] - uv[1]));
+    return gap <= 2.0 * stride;
+}
+
+static double clamp(double x, double lo, double hi)
+{
+    return x < lo ? lo : (x > hi ? hi : x);
+}
+
+static projcurve_status add_vertex(pc_tracer *tr, pc_branch *b, double t, double u, double v)
+{
+    const double p[3] = {t, u, v};
+    projcurve_status st = pc_branch_add_point(tr->ctx, b, 3, p);
+    if (st == PROJCURVE_OK) {
+        tr->n_points++;
+        tr->r->stats.points += 1.0;
+    }
+    return st;
+}
+
+/* Step length in t (positive) at the current point, before halvings. */
+static double nominal_step(const pc_tracer *tr, const pc_proj_point *cur)
+{
+    if (tr->param_step > 0.0)
+        return tr->param_step;
+    double speed = cur->speed;
+    if (!(speed > 0.0) || !isfinite(speed))
+        return tr->max_step;
+    const double h = tr->ds / speed; /* seed 000 eq. (3.7) */
+    return h < tr->max_step ? h : tr->max_step;
+}
+
+/* The fold test: det J changes sign (or vanishes) only across a fold. */
+static int crosses_fold(const pc_proj_point *a, const pc_proj_point *b)
+{
+    return (a->det > 0.0 && b->det < 0.0) || (a->det < 0.0 && b->det > 0.0);
+}
+
+static void record_error(pc_tracer *tr)
+{
+    const double e = tr->proj->guess_error ? *tr->proj->guess_error : 0.0;
+    tr->r->stats.error_sum += e;
+    tr->r->stats.error_count += 1.0;
+    if (e > tr->r->stats.error_max)
+        tr->r->stats.error_max = e;
+}
+
+/* Predicts and corrects one step from cur to the curve parameter t. On
+ * ACCEPT and EXIT, *next holds the new point (with its derivatives). */
+static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
+                             pc_proj_point *next)
+{
+    const pc_projector *proj = tr->proj;
+    const double h = t - cur->t;
+    double pred[2];
+    if (tr->method == PROJCURVE_METHOD_RK4) {
+        if (!pc_predict_rk4(proj, cur, h, pred))
+            return STEP_REJECT;
+    } else {
+        pc_predict_taylor(cur, h, pred);
+    }
+    const int left = outside(tr->dom, pred);
+    double uv[2] = {clamp(pred[0], tr->dom[0], tr->dom[1]),
+                    clamp(pred[1], tr->dom[2], tr->dom[3])};
+    int iterations = 0;
+    const int ok = proj->correct(proj, t, uv, &iterations);
+    tr->r->stats.newton_iterations += (double)iterations;
+    const double stride = norm2(pred[0] - cur->u, pred[1] - cur->v);
+    if (!ok || (left && pc_domain_margin(tr->dom, uv[0], uv[1]) <= PC_TRACE_BOUNDARY_TOL)) {
+        /* Near the boundary a failed correction most likely means the
+         * branch left between the points: locate the exit rather than halve
+         * the step (which would pile vertices up against the boundary). */
+        if (!left && !near_boundary(tr->dom, pred, stride))
+            return STEP_REJECT;
+        const int found = pc_locate_exit(tr, cur, h, next);
+        return found == 1 ? STEP_EXIT : (found == 0 ? STEP_ACCEPT : STEP_REJECT);
+    }
+    /* A corrector that moved far from the prediction has left for another
+     * sheet of the projection: cut the step instead. */
+    const double moved = norm2(uv[0] - pred[0], uv[1] - pred[1]);
+    const double floor = PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
+    if (moved > PC_TRACE_MAX_CORRECTION * stride + floor)
+        return STEP_REJECT;
+    record_error(tr);
+    if (!proj->derivatives(proj, t, uv[0], uv[1], next) || crosses_fold(cur, next))
+        return STEP_REJECT;
+    return STEP_ACCEPT;
+}
+
+/* Why a branch whose step cannot be made to succeed stops. */
+static projcurve_branch_end stall_reason(const pc_proj_point *cur)
+{
+    return fabs(cur->det) < PC_TRACE_DET_NEAR_FOLD ? PROJCURVE_END_SILHOUETTE
+                                                   : PROJCURVE_END_FAILED;
+}
+
+projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction, double t_stop,
+                              int add_seed, pc_branch *b, projcurve_branch_end *why)
+{
+    const pc_projector *proj = tr->proj;
+    const double sign = direction >= 0 ? 1.0 : -1.0;
+    projcurve_status st = PROJCURVE_OK;
+    if (add_seed) {
+        if (tr->n_points >= tr->max_points) {
+            tr->limit_hit = 1;
+            *why = PROJCURVE_END_LIMIT;
+            return PROJCURVE_OK;
+        }
+        st = add_vertex(tr, b, seed->t, seed->u, seed->v);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    pc_proj_point cur;
+    if (!proj->derivatives(proj, seed->t, seed->u, seed->v, &cur)) {
+        *why = stall_reason(&cur);
+        return PROJCURVE_OK;
+    }
+    double scale = 1.0; /* halvings after failed corrections, seed 000 s3.3 */
+    /* Each pass adds a vertex or halves the step; both are bounded (the
+     * vertex budget, and min_step), so this bound is never the one hit. */
+    const size_t max_passes = 4 * tr->max_points + 1000;
+    for (size_t pass = 0; pass < max_passes; ++pass) {
+        const double remaining = sign * (t_stop - cur.t);
+        if (remaining <= tr->min_step) {
+            *why = PROJCURVE_END_CURVE_END;
+            return PROJCURVE_OK;
+        }
+        if (fabs(cur.det) < PC_TRACE_DET_FOLD) {
+            *why = PROJCURVE_END_SILHOUETTE;
+            return PROJCURVE_OK;
+        }
+        double h = nominal_step(tr, &cur) * scale;
+        if (h < tr->min_step) {
+            *why = stall_reason(&cur);
+            return PROJCURVE_OK;
+        }
+        /* never step over the end of the curve: land exactly on it (a
+         * step within rounding of the end is stretched to it, so that the
+         * end is never missed by a sliver) */
+        const double t_next =
+            h >= remaining - PC_TRACE_END_SLACK * h ? t_stop : cur.t + sign * h;
+        tr->r->stats.steps += 1.0;
+        pc_proj_point next;
+        const step_outcome out = try_step(tr, &cur, t_next, &next);
+        if (out == STEP_REJECT) {
+            scale *= 0.5;
+            continue;
+        }
+        if (tr->n_points >= tr->max_points) {
+            tr->limit_hit = 1;
+            *why = PROJCURVE_END_LIMIT;
+            return PROJCURVE_OK;
+        }
+        st = add_vertex(tr, b, next.t, next.u, next.v);
+        if (st != PROJCURVE_OK)
+            return st;
+        if (out == STEP_EXIT) {
+            *why = PROJCURVE_END_BOUNDARY;
+            return PROJCURVE_OK;
+        }
+        cur = next;
+        scale = scale < 0.5 ? 2.0 * scale : 1.0;
+    }
+    *why = PROJCURVE_END_FAILED;
+    return PROJCURVE_OK;
+}

@@ -1,0 +1,79 @@
+/*
+ * Internals of the tracing engine shared by the files of trace/: the state
+ * of one tracing run, the single-branch tracer, the predictors and the
+ * boundary exit locator. Not used outside trace/.
+ */
+#ifndef PC_TRACE_TRACER_H
+#define PC_TRACE_TRACER_H
+
+#include <stddef.h>
+
+#include "trace/trace.h"
+
+/* A branch ends at a fold when |det| (normalised, see pc_proj_point) falls
+ * below this: Dir is then within ~1e-6 rad of the tangent plane. */
+#define PC_TRACE_DET_FOLD 1e-6
+/* When the step cannot be made to succeed, a |det| below this says the
+ * branch stalled at a fold rather than failed. */
+#define PC_TRACE_DET_NEAR_FOLD 1e-2
+/* A corrected point farther than this fraction of the predicted step from
+ * the prediction is taken as a jump to another sheet, and the step is cut. */
+#define PC_TRACE_MAX_CORRECTION 0.5
+/* Boundary exits are located until (u, v) is within this fraction of the
+ * domain's width from the boundary, then snapped onto it. */
+#define PC_TRACE_BOUNDARY_TOL 1e-12
+/* A step that would stop short of the end of the curve by less than this
+ * fraction of itself is stretched to reach it. */
+#define PC_TRACE_END_SLACK 1e-6
+/* Smallest step, as a fraction of the curve's domain. */
+#define PC_TRACE_MIN_STEP 1e-13
+
+typedef struct pc_tracer {
+    projcurve_context *ctx;
+    const pc_projector *proj;
+    projcurve_result *r;
+    int method;            /* PROJCURVE_METHOD_* */
+    double ds;             /* arc-length step, model units */
+    double param_step;     /* constant parameter step, 0 = arc-length step */
+    double max_step;       /* cap of an arc-length step in t */
+    double t_begin, t_end; /* curve domain */
+    double dom[4];         /* surface domain u0, u1, v0, v1 */
+    double min_step;       /* steps below this end the branch */
+    size_t max_points;     /* budget of vertices over all branches */
+    size_t n_points;       /* vertices added so far */
+    int limit_hit;         /* max_points stopped a branch */
+} pc_tracer;
+
+/* Traces one branch from the seed (a corrected point) towards t_stop
+ * (direction +1: forward, -1: backward), appending vertices (t, u, v) to b;
+ * the seed itself is appended first when add_seed. *why tells how it
+ * ended (CURVE_END: t_stop reached). Statuses: OK, NO_MEMORY. */
+projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction, double t_stop,
+                              int add_seed, pc_branch *b, projcurve_branch_end *why);
+
+/* Second-order Taylor predictor, seed 000 eq. (3.5): q(t + h). */
+void pc_predict_taylor(const pc_proj_point *pt, double h, double uv[2]);
+
+/* Classical RK4 on the first-order system q' = f(t, q) (seed 000 eq. (3.2),
+ * the method of its reference [16]). Returns 0 when f cannot be evaluated. */
+int pc_predict_rk4(const pc_projector *proj, const pc_proj_point *pt, double h, double uv[2]);
+
+/* Where the branch at `cur` leaves the domain within the step h (signed):
+ * returns 1 with *out the exit point, snapped exactly onto the boundary;
+ * 0 when the branch is still inside at the end of the search, *out then
+ * holds the farthest corrected point reached (t != cur->t); -1 when
+ * nothing better than cur was found. */
+int pc_locate_exit(pc_tracer *tr, const pc_proj_point *cur, double h, pc_proj_point *out);
+
+/* Distance of (u, v) from the nearest side of the domain, as a fraction of
+ * that side's width (0 on the boundary). */
+double pc_domain_margin(const double dom[4], double u, double v);
+
+/* Seed 000 s3.4 matching: each active point (a branch's current point)
+ * takes the nearest found point within ds (distance on S) not taken yet;
+ * matched[k] (n_found entries) is set to 1 for the found points taken, so
+ * that the others start new branches. */
+void pc_match_seeds(const projcurve_surface *s, const pc_seed *active, size_t n_active,
+                    const pc_seed *found, size_t n_found, double ds, unsigned char *matched);
+
+#endif /* PC_TRACE_TRACER_H */

@@ -1,0 +1,164 @@
+// Open CASCADE reads the IGES files libprojcurve writes.
+//
+// Writes (1) two surfaces and two curves and (2) a surface with a
+// projection result (one branch: pcurve 126, 3D curve 126, curve on surface
+// 142), then loads each with IGESControl_Reader: the load must succeed, the
+// model must hold exactly the entities written (by type), and the
+// transferred shapes must be non-null with faces/edges where expected.
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <IGESData_IGESEntity.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <TopAbs_ShapeEnum.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS_Shape.hxx>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+extern "C" {
+#include "check.h"
+#include "projcurve.h"
+#include "trace/result.h"
+}
+
+namespace {
+
+projcurve_context *ctx = nullptr;
+
+std::map<int, int> occt_entity_types(IGESControl_Reader &reader)
+{
+    std::map<int, int> count;
+    Handle(IGESData_IGESModel) model = reader.IGESModel();
+    for (Standard_Integer i = 1; i <= model->NbEntities(); ++i)
+        ++count[model->Entity(i)->TypeNumber()];
+    return count;
+}
+
+int count_shapes(const TopoDS_Shape &shape, TopAbs_ShapeEnum kind)
+{
+    int n = 0;
+    for (TopExp_Explorer e(shape, kind); e.More(); e.Next())
+        ++n;
+    return n;
+}
+
+// Loads path with OCCT and checks the entity counts by type and that
+// something was transferred (faces >= min_faces, edges >= min_edges).
+void check_file(const std::string &path, const std::map<int, int> &expected, int min_faces,
+                int min_edges)
+{
+    IGESControl_Reader reader;
+    const IFSelect_ReturnStatus st = reader.ReadFile(path.c_str());
+    CHECK(st == IFSelect_RetDone);
+    if (st != IFSelect_RetDone)
+        return;
+    const std::map<int, int> got = occt_entity_types(reader);
+    for (const auto &kv : expected) {
+        const auto it = got.find(kv.first);
+        const int n = it == got.end() ? 0 : it->second;
+        if (n != kv.second)
+            pc_test_fail_at(__FILE__, __LINE__, "%s: OCCT sees %d entities of type %d, wrote %d",
+                            path.c_str(), n, kv.first, kv.second);
+        ++pc_test_checks;
+    }
+    int total = 0;
+    for (const auto &kv : got)
+        total += kv.second;
+    int written = 0;
+    for (const auto &kv : expected)
+        written += kv.second;
+    CHECK(total == written);
+    reader.TransferRoots();
+    const TopoDS_Shape shape = reader.OneShape();
+    CHECK(!shape.IsNull());
+    if (shape.IsNull())
+        return;
+    const int faces = count_shapes(shape, TopAbs_FACE), edges = count_shapes(shape, TopAbs_EDGE);
+    std::printf("%s: %d entities, %d faces, %d edges\n", path.c_str(), total, faces, edges);
+    CHECK(faces >= min_faces);
+    CHECK(edges >= min_edges);
+}
+
+projcurve_surface *plane()
+{
+    const double ctrl[] = {0, 0, 0, 10, 0, 0, 0, 10, 1, 10, 10, 1};
+    const double k[] = {0, 0, 1, 1};
+    projcurve_surface *s = nullptr;
+    CHECK_OK(projcurve_surface_create_nurbs(ctx, 1, 1, 2, 2, ctrl, nullptr, k, k, &s));
+    return s;
+}
+
+projcurve_surface *quarter_cylinder()
+{
+    const double w = 0.70710678118654752;
+    const double ctrl[] = {3, 0, 0, 3, 0, 3, 0, 0, 3, 3, 5, 0, 3, 5, 3, 0, 5, 3};
+    const double weights[] = {1, w, 1, 1, w, 1};
+    const double ku[] = {0, 0, 0, 1, 1, 1}, kv[] = {0, 0, 1, 1};
+    projcurve_surface *s = nullptr;
+    CHECK_OK(projcurve_surface_create_nurbs(ctx, 2, 1, 3, 2, ctrl, weights, ku, kv, &s));
+    return s;
+}
+
+projcurve_curve *cubic()
+{
+    const double ctrl[] = {0, 0, 5, 3, 4, 6, 6, -1, 5, 9, 2, 7};
+    const double knots[] = {0, 0, 0, 0, 1, 1, 1, 1};
+    projcurve_curve *c = nullptr;
+    CHECK_OK(projcurve_curve_create_nurbs(ctx, 3, 4, ctrl, nullptr, knots, &c));
+    return c;
+}
+
+// One branch along v = 0.5 of the plane, composed as one line piece.
+projcurve_result *line_result()
+{
+    projcurve_result *r = nullptr;
+    pc_branch *b = nullptr;
+    CHECK_OK(pc_result_create(ctx, 3, &r));
+    CHECK_OK(pc_result_add_branch(ctx, r, &b));
+    for (int i = 0; i <= 8; ++i) {
+        const double t = i / 8.0, p[3] = {t, 0.1 + 0.8 * t, 0.5};
+        CHECK_OK(pc_branch_add_point(ctx, b, 3, p));
+    }
+    const double uv[4] = {0.1, 0.5, 0.9, 0.5}, ctrl[6] = {1, 5, 0.5, 9, 5, 0.5};
+    CHECK_OK(pc_branch_add_piece(ctx, b, 1, 0.0, 1.0, uv, ctrl, nullptr));
+    return r;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    const std::string dir = argc > 1 ? argv[1] : ".";
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    projcurve_surface *s1 = plane(), *s2 = quarter_cylinder();
+    projcurve_curve *c = cubic();
+
+    projcurve_iges_writer *w = nullptr;
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_OK(projcurve_iges_writer_add_surface(ctx, w, s1));
+    CHECK_OK(projcurve_iges_writer_add_surface(ctx, w, s2));
+    CHECK_OK(projcurve_iges_writer_add_curve(ctx, w, c));
+    const std::string geometry = dir + "/occt_geometry.igs";
+    CHECK_OK(projcurve_iges_writer_write(ctx, w, geometry.c_str()));
+    projcurve_iges_writer_destroy(w);
+    check_file(geometry, {{128, 2}, {126, 1}}, 2, 1);
+
+    projcurve_result *r = line_result();
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s1, r));
+    const std::string projected = dir + "/occt_result.igs";
+    CHECK_OK(projcurve_iges_writer_write(ctx, w, projected.c_str()));
+    projcurve_iges_writer_destroy(w);
+    // The 142 is the only root (it references the rest), so OCCT transfers
+    // it as an edge on the surface; the surface is there as entity 128.
+    check_file(projected, {{128, 1}, {126, 2}, {142, 1}}, 0, 1);
+
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s1);
+    projcurve_surface_destroy(s2);
+    projcurve_context_destroy(ctx);
+    return pc_test_finish("occt_iges_check");
+}

@@ -1,0 +1,72 @@
+/*
+ * Brute-force line / surface intersection for tests, independent of the
+ * library's Bezier clipping: a dense triangulation of the surface (blocks of
+ * cells with padded boxes to skip most triangles), a ray/triangle test per
+ * triangle, and a 3x3 Newton polish of S(u, v) = o + lambda dir from each
+ * triangle hit, using only a point-and-derivatives evaluator.
+ *
+ * It can miss a pair of hits of a line passing closer to a fold than the
+ * mesh's chord error; tests accept such a hit from the library only after
+ * checking it independently (pc_oracle_check_hit) and that it is grazing.
+ */
+#ifndef PC_TEST_RAY_ORACLE_H
+#define PC_TEST_RAY_ORACLE_H
+
+#include <stddef.h>
+
+/* S, Su, Sv at (u, v) into out[0..8]. */
+typedef void (*pc_oracle_eval_fn)(void *user, double u, double v, double out[9]);
+
+typedef struct pc_oracle_hit {
+    double u, v, lambda;
+    double cos_dir; /* |dir . n| / (|dir| |n|) at the hit */
+} pc_oracle_hit;
+
+typedef struct pc_oracle_mesh {
+    pc_oracle_eval_fn eval;
+    void *user;
+    double domain[4];
+    int cells_u, cells_v, block; /* cells per block side */
+    double *points;              /* (cells_u + 1) * (cells_v + 1) * 3 */
+    double *block_boxes;         /* 6 per block */
+    int blocks_u, blocks_v;
+    double *group_boxes;         /* 6 per group of blocks */
+    int groups_u, groups_v;
+    double scale;                /* diagonal of the points' box */
+} pc_oracle_mesh;
+
+/* Samples the surface on a cells_u x cells_v grid. Returns 0 on allocation
+ * failure. */
+int pc_oracle_mesh_build(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *user,
+                         const double domain[4], int cells_u, int cells_v);
+void pc_oracle_mesh_free(pc_oracle_mesh *mesh);
+
+/* Every hit of origin + lambda dir (lambda > 0 only if ray_only), polished
+ * and with copies merged; up to capacity are stored, the number found is
+ * returned. */
+size_t pc_oracle_line_hits(const pc_oracle_mesh *mesh, const double origin[3],
+                           const double dir[3], int ray_only, pc_oracle_hit *hits,
+                           size_t capacity);
+
+/* Checks a claimed hit independently: Newton from it must stay within
+ * param_tol and the polished point lie on the line to 1e-11 of the model
+ * scale. Fills *polished (may be NULL). Returns 1 if it is a hit. */
+int pc_oracle_check_hit(const pc_oracle_mesh *mesh, const double origin[3], const double dir[3],
+                        double u, double v, double param_tol, pc_oracle_hit *polished);
+
+/* Counts kept by pc_oracle_compare. */
+typedef struct pc_oracle_stats {
+    long lines, hits, oracle_hits, grazing_extra;
+} pc_oracle_stats;
+
+/* Compares the n hits of a line claimed by the library (hits[3k..3k+2] =
+ * u, v, lambda, sorted by lambda; flags[k]) with the oracle's, failing the
+ * test (pc_test_fail_at, with the line) when an oracle hit is not found
+ * exactly once, a claimed hit is not on the line or its lambda is wrong,
+ * the order is wrong, or a claimed hit unknown to the oracle is not grazing
+ * (|cos| >= 0.05, where the mesh cannot miss it). */
+void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const double dir[3],
+                       int ray_only, size_t n, const double *hits, const unsigned *flags,
+                       pc_oracle_stats *stats);
+
+#endif /* PC_TEST_RAY_ORACLE_H */

@@ -1,0 +1,33 @@
+/*
+ * An independent check of a directional projection result: dense brute
+ * force (the ray P(t) + lambda Dir, lambda > 0, intersected with S at n
+ * evenly spaced t through the public line/surface intersection) against
+ * the traced branches, and every traced vertex against the projection
+ * equation.
+ */
+#ifndef PC_TEST_TRACE_ORACLE_H
+#define PC_TEST_TRACE_ORACLE_H
+
+#include <stddef.h>
+
+#include "projcurve.h"
+
+typedef struct trace_oracle_report {
+    size_t samples;        /* t values sampled */
+    size_t hits;           /* ray hits found by brute force */
+    size_t covered;        /* hits within half a step of a branch at that t */
+    size_t uncovered_near; /* hits not covered, within two steps of a branch end */
+    size_t uncovered_far;  /* hits not covered elsewhere: a missed branch */
+    double worst_far_t;    /* t of one such hit */
+    double max_residual;   /* max over vertices of |Dir x (S - P)| (model units) */
+    size_t behind;         /* vertices with (S - P).Dir <= 0 */
+    size_t vertices;
+} trace_oracle_report;
+
+void trace_oracle_check(const projcurve_surface *s, const projcurve_curve *c, const double dir[3],
+                        const projcurve_result *r, size_t n_samples, trace_oracle_report *rep);
+
+/* Prints the report (for failing tests). */
+void trace_oracle_print(const char *name, const trace_oracle_report *rep);
+
+#endif /* PC_TEST_TRACE_ORACLE_H */

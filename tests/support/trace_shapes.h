@@ -1,0 +1,43 @@
+/*
+ * Surfaces and curves with known directional projections, for the tracing
+ * tests. Every builder returns NULL on failure (and the test then fails on
+ * its first CHECK of the handle).
+ */
+#ifndef PC_TEST_TRACE_SHAPES_H
+#define PC_TEST_TRACE_SHAPES_H
+
+#include <stddef.h>
+
+#include "projcurve.h"
+
+/* A clamped uniform B-spline curve of the given degree through n points
+ * (3 doubles each) as control points, domain [0, 1]. */
+projcurve_curve *shape_bspline_curve(int degree, size_t n, const double *pts);
+
+/* The plane O + u A + v B, (u, v) in [0, 1]^2 (bilinear patch). */
+projcurve_surface *shape_plane(const double o[3], const double a[3], const double b[3]);
+
+/* Half cylinder x^2 + z^2 = r^2, z >= 0, y in [0, len]: exact rational
+ * quadratic in u (two quarter circles, from x = r to x = -r), linear in v. */
+projcurve_surface *shape_half_cylinder(double r, double len);
+
+/* Sphere of radius r about the origin (pc_shape_sphere of shapes.h): u
+ * around the z axis, v the meridian from the south pole to the north pole
+ * (collapsed edges at v = 0 and v = 1). */
+projcurve_surface *shape_sphere(double r);
+
+/* Seed 000 s5 Example 1: the degree 5 x 1 Bezier sheet and its cubic
+ * B-spline test curve. */
+projcurve_surface *shape_example1_surface(void);
+projcurve_curve *shape_example1_curve(void);
+
+/* A C-folded sheet, extruded along y in [0, 100]: bottom z = 0 from x = 0
+ * to 100, a bend whose tip is near x = 110 (z = 10), top z = 20 from x = 100
+ * back to x = 20 (quadratic B-spline profile, linear in y). */
+projcurve_surface *shape_c_fold(void);
+
+/* A bicubic bumpy sheet over [0, 100]^2 (heights from a fixed seed, within
+ * +-amp), 8 x 8 control net, domain [0, 1]^2. */
+projcurve_surface *shape_bumpy(double amp, unsigned long long seed);
+
+#endif /* PC_TEST_TRACE_SHAPES_H */

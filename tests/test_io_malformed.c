@@ -1,0 +1,349 @@
+/*
+ * Bad input to the readers: truncated files, wrong column layout, bad
+ * pointers, absurd counts, non-numeric fields, deep nesting, megabytes of
+ * garbage and random mutations of real files. Every read must end with OK
+ * or a clear error (status + message naming the line or entity); crashes,
+ * hangs and leaks are caught by running this test under ASan/UBSan.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "projcurve.h"
+
+static projcurve_context *ctx;
+
+static char *slurp(const char *relative, size_t *len)
+{
+    FILE *fp = fopen(pc_test_shared_path(relative), "rb");
+    if (fp == NULL)
+        return NULL;
+    fseek(fp, 0, SEEK_END);
+    const long n = ftell(fp);
+    fseek(fp, 0, SEEK_SET);
+    char *buf = malloc((size_t)n + 1);
+    if (buf == NULL || fread(buf, 1, (size_t)n, fp) != (size_t)n) {
+        free(buf);
+        fclose(fp);
+        return NULL;
+    }
+    fclose(fp);
+    buf[n] = '\0';
+    *len = (size_t)n;
+    return buf;
+}
+
+/* Reads from memory; on failure checks that a message was left. */
+static projcurve_status read_mem(const char *data, size_t len, size_t *surfaces)
+{
+    projcurve_model *m = NULL;
+    projcurve_context_clear(ctx);
+    const projcurve_status st = projcurve_model_read_memory(ctx, data, len, &m);
+    if (st == PROJCURVE_OK) {
+        CHECK(m != NULL);
+        if (surfaces)
+            *surfaces = projcurve_model_surface_count(m);
+        projcurve_model_destroy(m);
+    } else {
+        CHECK(m == NULL);
+        CHECK(projcurve_context_message(ctx)[0] != '\0');
+    }
+    return st;
+}
+
+/* The read fails with `status` and a message containing `needle`. */
+static void expect_error(const char *data, size_t len, projcurve_status status, const char *needle,
+                         const char *what)
+{
+    const projcurve_status st = read_mem(data, len, NULL);
+    const char *msg = projcurve_context_message(ctx);
+    if (st != status || strstr(msg, needle) == NULL)
+        pc_test_fail_at(__FILE__, __LINE__, "%s: got %s \"%s\", expected %s with \"%s\"", what,
+                        projcurve_status_string(st), msg, projcurve_status_string(status), needle);
+    ++pc_test_checks;
+}
+
+/* Replaces the first occurrence of `from` (after offset `after`). */
+static char *replaced(const char *text, size_t len, const char *from, const char *to,
+                      size_t *out_len)
+{
+    const char *at = strstr(text, from);
+    if (at == NULL)
+        return NULL;
+    const size_t a = (size_t)(at - text), nf = strlen(from), nt = strlen(to);
+    char *out = malloc(len - nf + nt + 1);
+    memcpy(out, text, a);
+    memcpy(out + a, to, nt);
+    memcpy(out + a + nt, at + nf, len - a - nf);
+    *out_len = len - nf + nt;
+    out[*out_len] = '\0';
+    return out;
+}
+
+/* IGES records are fixed width: a longer replacement eats the blanks that
+ * follow `from`, a shorter one is padded with blanks. */
+static void check_replaced_record(const char *text, size_t len, const char *from, const char *to,
+                                  projcurve_status status, const char *needle, const char *what)
+{
+    char f[128], t[128];
+    const size_t nf = strlen(from), nt = strlen(to);
+    const size_t w = nf > nt ? nf : nt;
+    snprintf(f, sizeof f, "%s%*s", from, (int)(w - nf), "");
+    snprintf(t, sizeof t, "%s%*s", to, (int)(w - nt), "");
+    size_t n;
+    char *bad = replaced(text, len, f, t, &n);
+    CHECK(bad != NULL);
+    if (bad)
+        expect_error(bad, n, status, needle, what);
+    free(bad);
+}
+
+static void check_replaced(const char *text, size_t len, const char *from, const char *to,
+                           projcurve_status status, const char *needle, const char *what)
+{
+    size_t n;
+    char *bad = replaced(text, len, from, to, &n);
+    CHECK(bad != NULL);
+    if (bad)
+        expect_error(bad, n, status, needle, what);
+    free(bad);
+}
+
+static void iges_cases(void)
+{
+    size_t len;
+    char *text = slurp("cases/song_yong_example1.igs", &len);
+    if (text == NULL)
+        pc_test_skip("cases/song_yong_example1.igs is missing");
+    size_t surfaces = 0;
+    CHECK_OK(read_mem(text, len, &surfaces));
+    CHECK(surfaces == 1);
+
+    /* Truncated anywhere: an error or (at a record boundary) a shorter model. */
+    for (size_t cut = 0; cut < len; cut += 61)
+        (void)read_mem(text, cut, NULL);
+    expect_error(text, 2000, PROJCURVE_ERR_PARSE, "IGES", "truncated in the P section");
+
+    /* Wrong column layout: every record shifted right by one column. */
+    {
+        char *shifted = malloc(2 * len);
+        size_t n = 0;
+        int at_line_start = 1;
+        for (size_t i = 0; i < len; ++i) {
+            if (at_line_start)
+                shifted[n++] = ' ';
+            shifted[n++] = text[i];
+            at_line_start = text[i] == '\n';
+        }
+        expect_error(shifted, n, PROJCURVE_ERR_PARSE, "line 1", "shifted columns");
+        free(shifted);
+    }
+    /* A section letter that is not one. */
+    check_replaced_record(text, len, "G0000002", "X0000002", PROJCURVE_ERR_PARSE, "line 3",
+                   "bad section letter");
+    /* Directory entry 1 points past the parameter section. */
+    check_replaced_record(text, len, "     128       1       0", "     128     999       0",
+                   PROJCURVE_ERR_PARSE, "DE 1", "parameter pointer past the end");
+    /* Parameter line count absurd. */
+    check_replaced_record(text, len, "     128       0       0      35", "     128       0       0 9999999",
+                   PROJCURVE_ERR_PARSE, "DE 1", "absurd parameter line count");
+    /* Absurd counts inside the entity: K1 = 99999999 control points. */
+    check_replaced_record(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,", "128,99999999,1,5,1,0,0,1,0,0,0.0000000000000000E+00,", PROJCURVE_ERR_PARSE, "DE 1",
+                   "absurd K1");
+    check_replaced_record(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,", "128,5,1,-5,1,0,0,1,0,0,0.0000000000000000E+00,", PROJCURVE_ERR_PARSE, "degree M1",
+                   "negative degree");
+    /* Non-numeric parameter. */
+    check_replaced_record(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,",
+                   "128,5,1,5,1,0,0,1,0,0,0.00000000000abcdef0E+00,", PROJCURVE_ERR_PARSE,
+                   "not a number", "non-numeric knot");
+    /* Non-numeric directory field. */
+    check_replaced_record(text, len, "     128       1       0", "     1x8       1       0",
+                   PROJCURVE_ERR_PARSE, "directory field 1", "non-numeric DE field");
+    /* Entity type in the P section disagrees with the directory. */
+    check_replaced_record(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,", "126,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,", PROJCURVE_ERR_PARSE, "entity type",
+                   "type mismatch");
+    /* Transformation pointer to a non-124 entity. */
+    check_replaced_record(text, len, "     128       1       0       0       0       0       0",
+                   "     128       1       0       0       0       0       3",
+                   PROJCURVE_ERR_PARSE, "not 124", "transform pointer to a curve");
+    /* Transformation pointer that is even (not a DE start). */
+    check_replaced_record(text, len, "     128       1       0       0       0       0       0",
+                   "     128       1       0       0       0       0       2",
+                   PROJCURVE_ERR_PARSE, "pointer 2", "even DE pointer");
+    /* Weights of zero reach the surface validation, named by entity. */
+    free(text);
+}
+
+static void mutate(const char *relative, size_t rounds, unsigned long long seed)
+{
+    size_t len;
+    char *text = slurp(relative, &len);
+    if (text == NULL)
+        return;
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, seed);
+    char *work = malloc(len + 1);
+    static const char alphabet[] = "0123456789,;.-+EeDH#()'$* \n/=ABCXYZ<>\"";
+    for (size_t r = 0; r < rounds; ++r) {
+        memcpy(work, text, len + 1);
+        const int edits = 1 + (int)pc_test_rng_uniform(&rng, 0.0, 8.0);
+        for (int e = 0; e < edits; ++e) {
+            const size_t at = (size_t)pc_test_rng_uniform(&rng, 0.0, (double)len);
+            work[at] = alphabet[(size_t)pc_test_rng_uniform(&rng, 0.0, sizeof alphabet - 1.0)];
+        }
+        const size_t n = (size_t)pc_test_rng_uniform(&rng, (double)len * 0.5, (double)len + 1.0);
+        (void)read_mem(work, n > len ? len : n, NULL);
+    }
+    free(work);
+    free(text);
+}
+
+static void garbage(void)
+{
+    const size_t len = 3u << 20;
+    char *junk = malloc(len);
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 42);
+    for (size_t i = 0; i < len; ++i)
+        junk[i] = (char)(int)pc_test_rng_uniform(&rng, 0.0, 256.0);
+    expect_error(junk, len, PROJCURVE_ERR_PARSE, "unrecognised", "random bytes");
+    /* The same behind each format's signature. */
+    memcpy(junk, "ISO-10303-21;\nHEADER;ENDSEC;\nDATA;\n", 35);
+    CHECK(read_mem(junk, len, NULL) != PROJCURVE_OK);
+    memcpy(junk, "<xml><Geometry type=\"TensorBSpline2\">", 37);
+    CHECK(read_mem(junk, len, NULL) != PROJCURVE_OK);
+    memcpy(junk, "32\n", 3);
+    CHECK(read_mem(junk, len, NULL) != PROJCURVE_OK);
+    char *iges = malloc(len);
+    for (size_t i = 0; i < len; ++i)
+        iges[i] = (i % 81 == 80) ? '\n' : (i % 81 == 72) ? "SGDPT"[(i / 81 / 4000) % 5] : junk[i];
+    CHECK(read_mem(iges, len, NULL) != PROJCURVE_OK);
+    free(iges);
+    /* Megabytes of valid-looking tokens. */
+    for (size_t i = 0; i < len; ++i)
+        junk[i] = "<Geometry "[i % 10];
+    CHECK(read_mem(junk, len, NULL) != PROJCURVE_OK);
+    memcpy(junk, "ISO-10303-21;\nDATA;\n#1=A", 24);
+    for (size_t i = 24; i < len; ++i)
+        junk[i] = '(';
+    expect_error(junk, len, PROJCURVE_ERR_PARSE, "#1", "deep nesting");
+    free(junk);
+    expect_error("", 0, PROJCURVE_ERR_PARSE, "unrecognised", "empty input");
+}
+
+static const char step_text[] =
+    "ISO-10303-21;\nHEADER;\nFILE_NAME('a;b','',(''),(''),'','','');\nENDSEC;\nDATA;\n"
+    "#1=CARTESIAN_POINT('',(0.,0.,0.));\n#2=CARTESIAN_POINT('',(1.,0.,0.));\n"
+    "#3=CARTESIAN_POINT('',(0.,1.,0.));\n#4=CARTESIAN_POINT('',(1.,1.,1.));\n"
+    "#5=B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#1,#3),(#2,#4)),.UNSPECIFIED.,.F.,.F.,.F.,"
+    "(2,2),(2,2),(0.,1.),(0.,1.),.UNSPECIFIED.);\n"
+    "#6=B_SPLINE_CURVE_WITH_KNOTS('',1,(#1,#4),.UNSPECIFIED.,.F.,.F.,(2,2),(0.,2.),.UNSPECIFIED.);\n"
+    "ENDSEC;\nEND-ISO-10303-21;\n";
+
+static void step_cases(void)
+{
+    const size_t len = sizeof step_text - 1;
+    size_t surfaces = 0;
+    CHECK_OK(read_mem(step_text, len, &surfaces));
+    CHECK(surfaces == 1);
+    for (size_t cut = 0; cut < len; cut += 7)
+        (void)read_mem(step_text, cut, NULL);
+    check_replaced(step_text, len, "ENDSEC;\nEND", "END", PROJCURVE_ERR_PARSE, "ENDSEC",
+                   "no ENDSEC");
+    check_replaced(step_text, len, "((#1,#3),(#2,#4))", "((#1,#3),(#2,#99))", PROJCURVE_ERR_PARSE,
+                   "#99", "undefined reference");
+    check_replaced(step_text, len, "(2,2),(2,2),(0.,1.)", "(3,2),(2,2),(0.,1.)", PROJCURVE_ERR_PARSE,
+                   "#5", "multiplicities");
+    check_replaced(step_text, len, "(2,2),(0.,2.)", "(1,1,2),(0.,2.)", PROJCURVE_ERR_PARSE, "#6",
+                   "unpaired knots");
+    check_replaced(step_text, len, "(#1,#4),.UNSP", "(#1,#4,),.UNSP", PROJCURVE_ERR_PARSE, "#6",
+                   "empty list item");
+    check_replaced(step_text, len, "#4=CARTESIAN_POINT('',(1.,1.,1.));",
+                   "#4=CARTESIAN_POINT('',(1.,1.,1.x));", PROJCURVE_ERR_PARSE, "#4", "bad number");
+    check_replaced(step_text, len, "#4=CARTESIAN_POINT", "#3=CARTESIAN_POINT", PROJCURVE_ERR_PARSE,
+                   "twice", "duplicate instance");
+    check_replaced(step_text, len, "('',1,1,((", "('',99,1,((", PROJCURVE_ERR_PARSE, "degree",
+                   "absurd degree");
+}
+
+static void teapot_cases(void)
+{
+    static const char small[] = "1\n1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16\n16\n"
+                                "0,0,0\n1,0,0\n2,0,0\n3,0,0\n0,1,0\n1,1,0\n2,1,0\n3,1,0\n"
+                                "0,2,0\n1,2,0\n2,2,0\n3,2,0\n0,3,0\n1,3,0\n2,3,0\n3,3,1\n";
+    const size_t len = sizeof small - 1;
+    size_t surfaces = 0;
+    CHECK_OK(read_mem(small, len, &surfaces));
+    CHECK(surfaces == 1);
+    check_replaced(small, len, "15,16\n", "15,17\n", PROJCURVE_ERR_PARSE, "vertex index 17",
+                   "index past the vertices");
+    check_replaced(small, len, "16\n0,0,0", "99999999\n0,0,0", PROJCURVE_ERR_PARSE, "line 3",
+                   "absurd vertex count");
+    check_replaced(small, len, "1\n1,2", "9999999\n1,2", PROJCURVE_ERR_PARSE, "line 1",
+                   "absurd patch count");
+    check_replaced(small, len, "3,3,1\n", "3,3,z\n", PROJCURVE_ERR_PARSE, "line 19",
+                   "non-numeric coordinate");
+    for (size_t cut = 0; cut < len; cut += 3)
+        (void)read_mem(small, cut, NULL);
+}
+
+static void gismo_cases(void)
+{
+    static const char xml[] =
+        "<xml>\n<Geometry type=\"TensorBSpline2\">\n<Basis type=\"TensorBSplineBasis2\">\n"
+        "<Basis type=\"BSplineBasis\" index=\"0\"><KnotVector degree=\"1\">0 0 1 1</KnotVector>"
+        "</Basis>\n<Basis type=\"BSplineBasis\" index=\"1\"><KnotVector degree=\"1\">0 0 1 1"
+        "</KnotVector></Basis>\n</Basis>\n<coefs geoDim=\"3\">0 0 0\n1 0 0\n0 1 0\n1 1 1\n</coefs>\n"
+        "</Geometry>\n</xml>\n";
+    const size_t len = sizeof xml - 1;
+    size_t surfaces = 0;
+    CHECK_OK(read_mem(xml, len, &surfaces));
+    CHECK(surfaces == 1);
+    check_replaced(xml, len, "1 1 1\n</coefs>", "1 1 x\n</coefs>", PROJCURVE_ERR_PARSE, "line 10",
+                   "non-numeric coefficient");
+    check_replaced(xml, len, "1 1 1\n</coefs>", "</coefs>", PROJCURVE_ERR_PARSE, "coefficients",
+                   "missing control point");
+    check_replaced(xml, len, "degree=\"1\">0 0 1 1</KnotVector></Basis>\n<Basis",
+                   "degree=\"99\">0 0 1 1</KnotVector></Basis>\n<Basis", PROJCURVE_ERR_PARSE,
+                   "degree", "absurd degree");
+    for (size_t cut = 0; cut < len; cut += 5)
+        (void)read_mem(xml, cut, NULL);
+}
+
+static void api_misuse(void)
+{
+    projcurve_model *m = NULL;
+    CHECK_STATUS(projcurve_model_read_file(ctx, NULL, &m), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_STATUS(projcurve_model_read_file(ctx, "x.igs", NULL), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_STATUS(projcurve_model_read_memory(ctx, NULL, 3, &m), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_STATUS(projcurve_model_read_file(ctx, "/nonexistent/file.igs", &m), PROJCURVE_ERR_IO);
+    CHECK(strstr(projcurve_context_message(ctx), "/nonexistent/file.igs") != NULL);
+    CHECK_STATUS(projcurve_model_read_file(NULL, "/nonexistent/file.igs", &m), PROJCURVE_ERR_IO);
+    CHECK(m == NULL);
+    CHECK(projcurve_model_surface_count(NULL) == 0);
+    CHECK(projcurve_model_curve_count(NULL) == 0);
+    CHECK(projcurve_model_skipped_count(NULL) == 0);
+    CHECK(projcurve_model_surface(NULL, 0) == NULL);
+    CHECK(projcurve_model_curve(NULL, 0) == NULL);
+    CHECK(projcurve_model_skipped(NULL, 0) == NULL);
+    projcurve_model_destroy(NULL);
+}
+
+int main(void)
+{
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    api_misuse();
+    step_cases();
+    teapot_cases();
+    gismo_cases();
+    garbage();
+    mutate("cases/song_yong_example1.igs", 400, 1);
+    mutate("cases/nurbs_half_cylinder_down.igs", 200, 2);
+    mutate("data/real/test-joinsurf_01.stp", 150, 3);
+    mutate("data/real/horn.xml", 100, 4);
+    mutate("data/real/teapot_newell_spd.txt", 200, 5);
+    iges_cases();
+    projcurve_context_destroy(ctx);
+    return pc_test_finish("test_io_malformed");
+}

@@ -1,0 +1,187 @@
+/*
+ * Every file of ../shared/data/real loads, with the surface counts, degrees,
+ * net sizes and rational flags that ../shared/data/real/SOURCES.md states
+ * (an independent description of the files), and every case of
+ * ../shared/cases loads with one surface and one curve.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "check.h"
+#include "projcurve.h"
+
+typedef struct real_file {
+    const char *name;
+    size_t surfaces;     /* SOURCES.md */
+    size_t rational;     /* surfaces with varying weights, SOURCES.md (-1: not stated) */
+} real_file;
+
+static const real_file files[] = {
+    {"sunglasses_lens.igs", 9, 0},
+    {"bladex_upper.iges", 1, 0},
+    {"hammer.iges", 45, 27},
+    {"bearing.iges", 213, 0},
+    {"linkrods.step", 18, 16},
+    {"test-joinsurf_01.stp", 2, 0},
+    {"test-joinsurf_04.stp", 2, 0},
+    {"test_pipe_out_true.step", 6, 4},
+    {"car_shell1.xml", 8, 0},
+    {"horn.xml", 1, 0},
+    {"shroud_kaplan.xml", 2, 0},
+    {"egg.xml", 1, 1},
+    {"teapot_newell_spd.txt", 32, 0},
+};
+
+static projcurve_model *load(projcurve_context *ctx, const char *relative)
+{
+    projcurve_model *m = NULL;
+    const char *path = pc_test_shared_path(relative);
+    const projcurve_status st = projcurve_model_read_file(ctx, path, &m);
+    if (st != PROJCURVE_OK)
+        pc_test_fail_at(__FILE__, __LINE__, "%s: %s: %s", relative, projcurve_status_string(st),
+                        projcurve_context_message(ctx));
+    return m;
+}
+
+/* Surface i has the given degrees, net and span counts. */
+static void check_shape(projcurve_context *ctx, const projcurve_model *m, size_t i, int du, int dv,
+                        size_t nu, size_t nv, size_t su, size_t sv)
+{
+    int a, b, rat;
+    size_t n_u, n_v, s_u, s_v;
+    CHECK_OK(projcurve_surface_info(ctx, projcurve_model_surface(m, i), &a, &b, &n_u, &n_v, &s_u,
+                                    &s_v, &rat));
+    CHECK(a == du && b == dv);
+    CHECK(n_u == nu && n_v == nv);
+    CHECK(s_u == su && s_v == sv);
+    if (!(a == du && b == dv && n_u == nu && n_v == nv && s_u == su && s_v == sv))
+        fprintf(stderr, "  surface %zu: degree (%d,%d) net %zux%zu spans %zux%zu\n", i, a, b, n_u,
+                n_v, s_u, s_v);
+}
+
+static void check_counts(projcurve_context *ctx)
+{
+    for (size_t f = 0; f < sizeof files / sizeof *files; ++f) {
+        char rel[256];
+        snprintf(rel, sizeof rel, "data/real/%s", files[f].name);
+        projcurve_model *m = load(ctx, rel);
+        if (m == NULL)
+            continue;
+        const size_t n = projcurve_model_surface_count(m);
+        if (n != files[f].surfaces)
+            pc_test_fail_at(__FILE__, __LINE__, "%s: %zu surfaces, SOURCES.md says %zu",
+                            files[f].name, n, files[f].surfaces);
+        size_t rational = 0;
+        for (size_t i = 0; i < n; ++i) {
+            int r = 0;
+            CHECK_OK(projcurve_surface_info(ctx, projcurve_model_surface(m, i), NULL, NULL, NULL,
+                                            NULL, NULL, NULL, &r));
+            rational += (size_t)r;
+        }
+        if (rational != files[f].rational)
+            pc_test_fail_at(__FILE__, __LINE__, "%s: %zu rational surfaces, SOURCES.md says %zu",
+                            files[f].name, rational, files[f].rational);
+        printf("%-26s %4zu surfaces (%zu rational), %4zu curves, %4zu skipped\n", files[f].name, n,
+               rational, projcurve_model_curve_count(m), projcurve_model_skipped_count(m));
+        projcurve_model_destroy(m);
+    }
+}
+
+/* Shapes stated in SOURCES.md for single-surface files and samples. */
+static void check_shapes(projcurve_context *ctx)
+{
+    projcurve_model *m = load(ctx, "data/real/bladex_upper.iges");
+    if (m) {
+        check_shape(ctx, m, 0, 3, 2, 526, 13, 523, 11);
+        projcurve_model_destroy(m);
+    }
+    m = load(ctx, "data/real/sunglasses_lens.igs");
+    if (m) {
+        for (size_t i = 0; i < projcurve_model_surface_count(m); ++i)
+            check_shape(ctx, m, i, 3, 3, 16, 16, 13, 13);
+        projcurve_model_destroy(m);
+    }
+    m = load(ctx, "data/real/test-joinsurf_04.stp");
+    if (m) {
+        check_shape(ctx, m, 0, 3, 3, 88, 88, 85, 85);
+        check_shape(ctx, m, 1, 3, 3, 88, 88, 85, 85);
+        projcurve_model_destroy(m);
+    }
+    m = load(ctx, "data/real/horn.xml");
+    if (m) {
+        check_shape(ctx, m, 0, 3, 3, 24, 8, 21, 5);
+        projcurve_model_destroy(m);
+    }
+    m = load(ctx, "data/real/egg.xml");
+    if (m) {
+        check_shape(ctx, m, 0, 2, 3, 9, 20, 4, 17);
+        projcurve_model_destroy(m);
+    }
+    m = load(ctx, "data/real/teapot_newell_spd.txt");
+    if (m) {
+        check_shape(ctx, m, 0, 3, 3, 4, 4, 1, 1);
+        /* Rim patch 1 starts at vertex 1 = (1.4, 0, 2.4) (the file's first vertex). */
+        double p[3];
+        CHECK_OK(projcurve_surface_eval(ctx, projcurve_model_surface(m, 0), 0.0, 0.0, 0, p));
+        CHECK_NEAR(p[0], 1.4, 1e-15);
+        CHECK_NEAR(p[1], 0.0, 1e-15);
+        CHECK_NEAR(p[2], 2.4, 1e-15);
+        projcurve_model_destroy(m);
+    }
+}
+
+/* linkrods.step: degrees (6,10) x 6, (6,8) x 6, (6,3) x 4, (3,1) x 2. */
+static void check_linkrods_degrees(projcurve_context *ctx)
+{
+    projcurve_model *m = load(ctx, "data/real/linkrods.step");
+    if (m == NULL)
+        return;
+    int n610 = 0, n68 = 0, n63 = 0, n31 = 0;
+    for (size_t i = 0; i < projcurve_model_surface_count(m); ++i) {
+        int a, b;
+        CHECK_OK(projcurve_surface_info(ctx, projcurve_model_surface(m, i), &a, &b, NULL, NULL,
+                                        NULL, NULL, NULL));
+        n610 += (a == 6 && b == 10);
+        n68 += (a == 6 && b == 8);
+        n63 += (a == 6 && b == 3);
+        n31 += (a == 3 && b == 1);
+    }
+    CHECK(n610 == 6 && n68 == 6 && n63 == 4 && n31 == 2);
+    projcurve_model_destroy(m);
+}
+
+static void check_cases(projcurve_context *ctx)
+{
+    static const char *const cases[] = {
+        "song_yong_example1",       "song_yong_example1_paperdir", "bumpy_bicubic_8x8_down",
+        "bumpy_boundary_exit_reenter", "deg5_quintic_9x8_down",   "nurbs_half_cylinder_down",
+        "fold_c_sheet_jump",        "ortho_bumpy_bicubic_hover",   "ortho_nurbs_half_cylinder"};
+    for (size_t i = 0; i < sizeof cases / sizeof *cases; ++i) {
+        char rel[256];
+        snprintf(rel, sizeof rel, "cases/%s.igs", cases[i]);
+        projcurve_model *m = load(ctx, rel);
+        if (m == NULL)
+            continue;
+        CHECK(projcurve_model_surface_count(m) == 1);
+        CHECK(projcurve_model_curve_count(m) == 1);
+        CHECK(projcurve_model_skipped_count(m) == 0);
+        projcurve_model_destroy(m);
+    }
+}
+
+int main(void)
+{
+    FILE *probe = fopen(pc_test_shared_path("data/real/SOURCES.md"), "r");
+    if (probe == NULL)
+        pc_test_skip("../shared/data/real is not available");
+    fclose(probe);
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    check_counts(ctx);
+    check_shapes(ctx);
+    check_linkrods_degrees(ctx);
+    check_cases(ctx);
+    projcurve_context_destroy(ctx);
+    return pc_test_finish("test_io_real");
+}

@@ -1,0 +1,175 @@
+/*
+ * projcurve_project_directional on bad or awkward input: NULL arguments,
+ * zero and non-finite directions, a curve that misses the surface (an empty
+ * result, not an error), a degenerate patch (the collapsed pole edges of a
+ * sphere), the point limit (a partial result), a failing curve callback.
+ * Each gives its documented status, and nothing hangs.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "check.h"
+#include "trace_oracle.h"
+#include "trace_shapes.h"
+
+static projcurve_options *trace_only(void)
+{
+    projcurve_options *o = NULL;
+    projcurve_options_create(NULL, &o);
+    projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, 0);
+    return o;
+}
+
+static void test_arguments(const projcurve_surface *s, const projcurve_curve *c)
+{
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    projcurve_options *o = trace_only();
+    const double d[3] = {0, 0, -1};
+    projcurve_result *sentinel = (projcurve_result *)&sentinel, *r = sentinel;
+    CHECK_STATUS(projcurve_project_directional(ctx, NULL, c, d, o, &r), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_STATUS(projcurve_project_directional(ctx, s, NULL, d, o, &r), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, NULL, o, &r), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, d, o, NULL), PROJCURVE_ERR_NULL_ARGUMENT);
+    const double zero[3] = {0, 0, 0}, tiny[3] = {0, 0, -1e-310};
+    const double nan3[3] = {0, NAN, -1}, inf3[3] = {INFINITY, 0, -1};
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, zero, o, &r), PROJCURVE_ERR_ZERO_DIRECTION);
+    CHECK(projcurve_context_status(ctx) == PROJCURVE_ERR_ZERO_DIRECTION);
+    printf("message: %s\n", projcurve_context_message(ctx));
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, nan3, o, &r), PROJCURVE_ERR_NOT_FINITE);
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, inf3, o, &r), PROJCURVE_ERR_NOT_FINITE);
+    CHECK(r == sentinel); /* outputs untouched on failure */
+    /* a denormal direction is still a direction */
+    CHECK_OK(projcurve_project_directional(ctx, s, c, tiny, o, &r));
+    CHECK(r != sentinel && projcurve_result_branch_count(r) == 1);
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_context_destroy(ctx);
+}
+
+static void test_miss(const projcurve_surface *s)
+{
+    const double pts[6] = {200, 200, 50, 300, 250, 50};
+    projcurve_curve *c = shape_bspline_curve(1, 2, pts);
+    projcurve_options *o = trace_only();
+    const double d[3] = {0, 0, -1}, up[3] = {0, 0, 1};
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, s, c, d, o, &r));
+    CHECK(r != NULL && projcurve_result_branch_count(r) == 0);
+    projcurve_result_destroy(r);
+    /* a curve above the surface projected upwards: the hits are behind */
+    const double above[6] = {20, 20, 50, 80, 80, 50};
+    projcurve_curve *c2 = shape_bspline_curve(1, 2, above);
+    r = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, s, c2, up, o, &r));
+    CHECK(r != NULL && projcurve_result_branch_count(r) == 0);
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(c2);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+}
+
+/* Over the pole of a sphere, where the u-edge collapses (Su = 0): the
+ * projection through the pole must end or pass cleanly, every vertex on
+ * the projection. */
+static void test_degenerate_patch(void)
+{
+    projcurve_surface *s = shape_sphere(10.0);
+    const double pts[6] = {-5, 0, 20, 5, 0, 20};
+    projcurve_curve *c = shape_bspline_curve(1, 2, pts);
+    projcurve_options *o = trace_only();
+    const double d[3] = {0, 0, -1};
+    projcurve_result *r = NULL;
+    const projcurve_status st = projcurve_project_directional(NULL, s, c, d, o, &r);
+    CHECK(st == PROJCURVE_OK);
+    trace_oracle_report rep;
+    trace_oracle_check(s, c, d, r, 2000, &rep);
+    trace_oracle_print("through the pole", &rep);
+    CHECK(rep.max_residual <= 1e-9);
+    /* two sheets (upper, lower); each runs into its pole, which is the
+     * domain boundary v = 1 (v = 0), and a branch leaves it on the other
+     * side, along the seam u = 0 (where the hits under u = 1 coincide and
+     * are dropped): four branches */
+    CHECK(projcurve_result_branch_count(r) == 4);
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+}
+
+static void test_limit(void)
+{
+    projcurve_surface *s = shape_example1_surface();
+    projcurve_curve *c = shape_example1_curve();
+    projcurve_options *o = trace_only();
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_POINTS, 16));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_PARAM_STEP, 1e-3));
+    const double d[3] = {-1, 0, 0};
+    projcurve_result *r = NULL;
+    CHECK_STATUS(projcurve_project_directional(NULL, s, c, d, o, &r), PROJCURVE_ERR_LIMIT_REACHED);
+    CHECK(r != NULL && projcurve_result_branch_count(r) == 1);
+    projcurve_branch_end end;
+    size_t n = 0;
+    double range[2];
+    CHECK_OK(projcurve_result_branch_info(NULL, r, 0, range, NULL, &end, &n, NULL));
+    CHECK(end == PROJCURVE_END_LIMIT);
+    CHECK(n == 16);
+    CHECK_NEAR(range[1], 15e-3, 1e-15);
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+}
+
+/* A straight line as a callback: P(t) = A + t (B - A). It fails when
+ * *(int *)user says so and t > 0.5. */
+static int line_fn(void *user, double t, double out[9])
+{
+    const int *fail = user;
+    if (*fail && t > 0.5)
+        return 1;
+    const double a[3] = {20, 30, 40}, b[3] = {80, 60, 40};
+    for (int k = 0; k < 3; ++k) {
+        out[k] = a[k] + t * (b[k] - a[k]);
+        out[3 + k] = b[k] - a[k];
+        out[6 + k] = 0.0;
+    }
+    return 0;
+}
+
+static void test_callback(void)
+{
+    projcurve_surface *s = shape_bumpy(8.0, 5);
+    projcurve_options *o = trace_only();
+    const double d[3] = {0, 0, -1};
+    int fail = 0;
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_callback(NULL, line_fn, &fail, 0.0, 1.0, &c));
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, s, c, d, o, &r));
+    CHECK(projcurve_result_branch_count(r) == 1);
+    projcurve_result_destroy(r);
+    fail = 1;
+    r = NULL;
+    CHECK_STATUS(projcurve_project_directional(NULL, s, c, d, o, &r), PROJCURVE_ERR_CALLBACK);
+    CHECK(r == NULL);
+    projcurve_curve_destroy(c);
+    projcurve_options_destroy(o);
+    projcurve_surface_destroy(s);
+}
+
+int main(void)
+{
+    projcurve_surface *s = shape_bumpy(8.0, 1);
+    const double pts[6] = {20, 30, 40, 80, 60, 40};
+    projcurve_curve *c = shape_bspline_curve(1, 2, pts);
+    CHECK(s != NULL && c != NULL);
+    test_arguments(s, c);
+    test_miss(s);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+    test_degenerate_patch();
+    test_limit();
+    test_callback();
+    return pc_test_finish("test_trace_bad_input");
+}
