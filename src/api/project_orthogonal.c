@@ -64,8 +64,6 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
         status = PROJCURVE_OK;
     if (status == PROJCURVE_OK)
         status = pc_ortho_split_at_centres(ctx, &proj, r);
-    if (status == PROJCURVE_OK)
-        status = pc_ortho_extend_to_centres(ctx, &proj, r);
     if (status == PROJCURVE_OK) {
         name_singular_ends(r);
         r->stats.tol_distance = distance_tolerance(&o, surface->size);

@@ -9,12 +9,6 @@
  * curve domain (as the engine's smallest step), or after this many halvings. */
 #define CENTRE_T_TOL_REL 1e-12
 #define CENTRE_MAX_BISECTIONS 60
-/* Attempts when pushing an end towards a centre (each success advances,
- * each failure halves the step: 60 halvings reach the tolerance). */
-#define CENTRE_MAX_PUSHES 200
-/* A corrected point farther from the end than this multiple of the
- * predicted motion went to another foot point. */
-#define CENTRE_MAX_MOTION 4.0
 
 typedef struct vertex {
     double t, u, v;
@@ -109,83 +103,4 @@ projcurve_status pc_ortho_split_at_centres(projcurve_context *ctx, const pc_proj
         }
     }
     return PROJCURVE_OK;
-}
-
-/* Pushes the end vertex e of a branch in direction dir (+1 forward, -1
- * backward in t) while the corrector converges with the same Morse index;
- * *moved is set when *e changed. */
-static projcurve_status push_end(projcurve_context *ctx, const pc_projector *proj,
-                                 double t_tol, double h, vertex *e, int *moved)
-{
-    const pc_nurbs_surface *s = &proj->surface->nurbs;
-    *moved = 0;
-    for (int it = 0; it < CENTRE_MAX_PUSHES && fabs(h) > t_tol; ++it) {
-        const double t_new = e->t + h;
-        pc_proj_point d;
-        if (t_new < proj->curve->t0 || t_new > proj->curve->t1 ||
-            !proj->derivatives(proj, e->t, e->u, e->v, &d)) {
-            h *= 0.5;
-            continue;
-        }
-        double uv[2] = {e->u + h * d.du, e->v + h * d.dv};
-        vertex n = {t_new, 0, 0, 0};
-        if (proj->correct(proj, t_new, uv, NULL)) {
-            n.u = uv[0];
-            n.v = uv[1];
-            const projcurve_status status = index_at(ctx, proj, &n);
-            if (status != PROJCURVE_OK)
-                return status;
-            pc_vec3 a, b;
-            pc_nurbs_surface_eval(s, e->u, e->v, 0, NULL, NULL, &a);
-            pc_nurbs_surface_eval(s, n.u, n.v, 0, NULL, NULL, &b);
-            const double allowed = CENTRE_MAX_MOTION * fabs(h) * d.speed + proj->newton_tol;
-            if (n.index == e->index && vec3_dist(a, b) <= allowed) {
-                *e = n;
-                *moved = 1;
-                continue;
-            }
-        }
-        h *= 0.5;
-    }
-    return PROJCURVE_OK;
-}
-
-static int at_centre_end(projcurve_branch_end end)
-{
-    return end == PROJCURVE_END_SILHOUETTE || end == PROJCURVE_END_CURVATURE_CENTRE;
-}
-
-/* Pushes one end of branch k (last vertex when dir > 0, first otherwise). */
-static projcurve_status extend_end(projcurve_context *ctx, const pc_projector *proj,
-                                   double t_tol, pc_branch *b, int dir)
-{
-    if (b->n_points < 2)
-        return PROJCURVE_OK;
-    const size_t i_end = dir > 0 ? b->n_points - 1 : 0, i_next = dir > 0 ? i_end - 1 : 1;
-    const double *p = b->points + 3 * i_end;
-    vertex e = {p[0], p[1], p[2], 0};
-    projcurve_status status = index_at(ctx, proj, &e);
-    const double h = fabs(p[0] - b->points[3 * i_next]) * (dir > 0 ? 1.0 : -1.0);
-    int moved = 0;
-    if (status == PROJCURVE_OK)
-        status = push_end(ctx, proj, t_tol, h, &e, &moved);
-    if (status != PROJCURVE_OK || !moved)
-        return status;
-    const double v[3] = {e.t, e.u, e.v};
-    return dir > 0 ? pc_branch_add_point(ctx, b, 3, v) : pc_branch_insert_point(ctx, b, 3, 0, v);
-}
-
-projcurve_status pc_ortho_extend_to_centres(projcurve_context *ctx, const pc_projector *proj,
-                                            projcurve_result *r)
-{
-    const double t_tol = CENTRE_T_TOL_REL * (proj->curve->t1 - proj->curve->t0);
-    projcurve_status status = PROJCURVE_OK;
-    for (size_t k = 0; k < r->n_branches && status == PROJCURVE_OK; ++k) {
-        pc_branch *b = &r->branches[k];
-        if (at_centre_end(b->end))
-            status = extend_end(ctx, proj, t_tol, b, 1);
-        if (status == PROJCURVE_OK && b->start == PROJCURVE_START_SILHOUETTE)
-            status = extend_end(ctx, proj, t_tol, b, -1);
-    }
-    return status;
 }

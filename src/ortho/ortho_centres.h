@@ -20,15 +20,4 @@
 projcurve_status pc_ortho_split_at_centres(projcurve_context *ctx, const pc_projector *proj,
                                            projcurve_result *r);
 
-/* Moves the ends of branches that end (or start) at a centre of curvature
- * (engine code PROJCURVE_END/START_SILHOUETTE, or set by the split) as
- * close to the centre as the corrector allows: the engine stops where
- * |det| < 1e-6, which is ~1e-5 of the domain before a transversal crossing
- * and ~1e-3 before an umbilic one. Each such end gets one more vertex, at
- * most 1e-12 of the domain from where the Morse index changes (or from
- * where the corrector stops converging at a fold). Statuses: OK, NO_MEMORY,
- * CALLBACK. */
-projcurve_status pc_ortho_extend_to_centres(projcurve_context *ctx, const pc_projector *proj,
-                                            projcurve_result *r);
-
 #endif /* PC_ORTHO_CENTRES_H */
