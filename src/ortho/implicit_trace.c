@@ -187,6 +187,7 @@ static projcurve_status step(projcurve_context *ctx, trace_run *run, pc_implicit
              * statistics (the analogue of seed 000 eq. (3.8)). */
             const double rel = a.err / run->imp.model_size;
             run->stats->error_sum += rel;
+            run->stats->error_count += 1.0;
             if (rel > run->stats->error_max)
                 run->stats->error_max = rel;
             /* Grow back only after a first-try success: near a centre of
