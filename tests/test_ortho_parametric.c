@@ -421,10 +421,11 @@ static void test_cylinder_torus_plane(void)
 /* Branches that reach a centre of curvature end there, reported as such:
  * a line through the axis of a cylinder (det K changes sign) and a circle
  * through the centre of a sphere (umbilic: det K touches zero). */
-/* The engine ends a branch where |det K| / (|Su||Sv|)^2 < 1e-6
- * (trace/tracer.h): P is then within ~1e-6 R of the centre where det K
- * vanishes linearly (cylinder axis) and ~1e-3 R where it vanishes
- * quadratically (sphere centre); t_tol says how far that is in t. */
+/* A branch stops where |det K| / (|Su||Sv|)^2 < 1e-6 (the engine's fold
+ * threshold, also kept by the split of ortho_centres.c): P is then ~1e-6 R
+ * from the centre where det K vanishes linearly (cylinder axis: ~2e-6 in t
+ * here) and ~1e-3 R where it vanishes quadratically (sphere centre, an
+ * umbilic: ~3e-3 in t here); t_tol allows for that. */
 static void expect_centre_end(const char *name, const projcurve_result *r, double t_centre,
                               double t_tol)
 {
@@ -453,7 +454,7 @@ static void test_centres(void)
     projcurve_result *r = NULL;
     CHECK_OK(projcurve_project_orthogonal(NULL, cyl, curve, NULL, &r));
     if (r)
-        expect_centre_end("cylinder axis", r, 2.0, 1e-4);
+        expect_centre_end("cylinder axis", r, 2.0, 1e-5);
     projcurve_result_destroy(r);
     projcurve_curve_destroy(curve);
     projcurve_surface_destroy(cyl);
@@ -468,7 +469,7 @@ static void test_centres(void)
     r = NULL;
     CHECK_OK(projcurve_project_orthogonal(NULL, sph, curve, NULL, &r));
     if (r)
-        expect_centre_end("sphere centre", r, M_PI, 1e-3);
+        expect_centre_end("sphere centre", r, M_PI, 5e-3);
     projcurve_result_destroy(r);
     projcurve_curve_destroy(curve);
     projcurve_surface_destroy(sph);
