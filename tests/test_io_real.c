@@ -131,24 +131,66 @@ static void check_shapes(projcurve_context *ctx)
     }
 }
 
-/* linkrods.step: degrees (6,10) x 6, (6,8) x 6, (6,3) x 4, (3,1) x 2. */
+/* linkrods.step: degrees (6,10) x 6 (the largest with 7 x 286 poles and
+ * 1 x 30 spans), (6,8) x 6, (6,3) x 4, (3,1) x 2. The pole counts per
+ * direction tell whether STEP's u-outer point lists were stored u fastest. */
 static void check_linkrods_degrees(projcurve_context *ctx)
 {
     projcurve_model *m = load(ctx, "data/real/linkrods.step");
     if (m == NULL)
         return;
-    int n610 = 0, n68 = 0, n63 = 0, n31 = 0;
+    int n610 = 0, n68 = 0, n63 = 0, n31 = 0, largest = 0;
     for (size_t i = 0; i < projcurve_model_surface_count(m); ++i) {
         int a, b;
-        CHECK_OK(projcurve_surface_info(ctx, projcurve_model_surface(m, i), &a, &b, NULL, NULL,
-                                        NULL, NULL, NULL));
+        size_t nu, nv, su, sv;
+        CHECK_OK(projcurve_surface_info(ctx, projcurve_model_surface(m, i), &a, &b, &nu, &nv,
+                                        &su, &sv, NULL));
         n610 += (a == 6 && b == 10);
         n68 += (a == 6 && b == 8);
         n63 += (a == 6 && b == 3);
         n31 += (a == 3 && b == 1);
+        if (a == 6)
+            CHECK(nu == 7 && su == 1);
+        largest += (a == 6 && b == 10 && nu == 7 && nv == 286 && su == 1 && sv == 30);
     }
     CHECK(n610 == 6 && n68 == 6 && n63 == 4 && n31 == 2);
+    CHECK(largest > 0);
     projcurve_model_destroy(m);
+}
+
+/* test_pipe_out_true.step: 4 rational (1,2) surfaces with 31 x 32 poles and
+ * 30 x 30 spans, 2 bilinear 31 x 31. car_shell1.xml: nets 19x22, 28x22,
+ * 18x68 and 31x41, each twice. */
+static void check_nets(projcurve_context *ctx)
+{
+    projcurve_model *m = load(ctx, "data/real/test_pipe_out_true.step");
+    if (m) {
+        int rational12 = 0, bilinear = 0;
+        for (size_t i = 0; i < projcurve_model_surface_count(m); ++i) {
+            int a, b, r;
+            size_t nu, nv, su, sv;
+            CHECK_OK(projcurve_surface_info(ctx, projcurve_model_surface(m, i), &a, &b, &nu, &nv,
+                                            &su, &sv, &r));
+            rational12 += (a == 1 && b == 2 && r && nu == 31 && nv == 32 && su == 30 && sv == 30);
+            bilinear += (a == 1 && b == 1 && nu == 31 && nv == 31);
+        }
+        CHECK(rational12 == 4 && bilinear == 2);
+        projcurve_model_destroy(m);
+    }
+    m = load(ctx, "data/real/car_shell1.xml");
+    if (m) {
+        static const size_t nets[4][2] = {{19, 22}, {28, 22}, {18, 68}, {31, 41}};
+        int found[4] = {0, 0, 0, 0};
+        for (size_t i = 0; i < projcurve_model_surface_count(m); ++i) {
+            size_t nu, nv;
+            CHECK_OK(projcurve_surface_info(ctx, projcurve_model_surface(m, i), NULL, NULL, &nu,
+                                            &nv, NULL, NULL, NULL));
+            for (int k = 0; k < 4; ++k)
+                found[k] += (nu == nets[k][0] && nv == nets[k][1]);
+        }
+        CHECK(found[0] == 2 && found[1] == 2 && found[2] == 2 && found[3] == 2);
+        projcurve_model_destroy(m);
+    }
 }
 
 static void check_cases(projcurve_context *ctx)
@@ -181,6 +223,7 @@ int main(void)
     check_counts(ctx);
     check_shapes(ctx);
     check_linkrods_degrees(ctx);
+    check_nets(ctx);
     check_cases(ctx);
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_real");

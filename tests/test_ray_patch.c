@@ -127,13 +127,14 @@ static size_t line_hits(const test_patch *const *patches, int n_patches, const d
     }
     const double scale = box_diagonal(box);
     pc_ray_frame frame;
-    pc_ray_frame_init(&frame, vec3_load(o), vec3_load(d), scale, ray_only);
+    pc_ray_frame_init(&frame, vec3_load(o), vec3_load(d), scale, vec3_norm(vec3_load(o)) + scale,
+                      ray_only);
     hits->count = 0;
     CHECK(pc_ray_patch_work_size(patches[0]->patch.deg_u, patches[0]->patch.deg_v) <=
           sizeof g_work / sizeof g_work[0]);
     for (int k = 0; k < n_patches; ++k)
         CHECK_OK(pc_ray_patch_hits(NULL, &frame, &patches[k]->patch, g_work, hits));
-    pc_hit_list_finish(hits, domain, vec3_norm(vec3_load(d)), scale);
+    pc_hit_list_finish(hits, domain, vec3_norm(vec3_load(d)), scale, NULL);
     return hits->count;
 }
 

@@ -44,13 +44,17 @@ typedef struct shape {
     void (*exact)(const struct shape *sh, double t, pc_vec3 q[3]);
     /* exact (u, v) at t, for the traced polyline given to the refinement */
     void (*exact_uv)(const struct shape *sh, double t, double uv[2]);
+    int orthogonal; /* 0: projection along -z */
 } shape;
 
-/* Projection along -z with the test's own projector. */
+/* The test's own projector: along -z, or orthogonal. */
 static void make_projector(const shape *sh, pc_oracle_dir *d, pc_projector *proj)
 {
     const double down[3] = {0.0, 0.0, -1.0};
-    pc_oracle_projector(sh->surface, sh->curve, down, d, proj);
+    if (sh->orthogonal)
+        pc_oracle_projector_orthogonal(sh->surface, sh->curve, proj);
+    else
+        pc_oracle_projector(sh->surface, sh->curve, down, d, proj);
 }
 
 /* Height field: x = 10 u, y = 8 v, z = h(u, v); the curve flies at z = 20. */
@@ -187,19 +191,23 @@ static void cyl_exact(const shape *sh, double t, pc_vec3 q[3])
     q[2] = vec3(x2, c[7], z2);
 }
 
-/* u of a point at angle a (from +x towards +z) on the rational arcs: on each
- * quarter arc with weights (1, sqrt(1/2), 1), tan(a'/2) = s / ((1 - s) sqrt2 + s)
- * inverted; an initial guess for the test projector's Newton. */
-static void cyl_exact_uv(const shape *sh, double t, double uv[2])
+/* (u, v) of the point at angle a (from +x towards +z) and height y on the
+ * half cylinder: on each quarter arc with weights (1, sqrt(1/2), 1),
+ * tan(a'/2) = s / ((1 - s) sqrt2 + s), inverted. */
+static void cyl_uv_of(double a, double y, double uv[2])
 {
-    double c[9];
-    cyl_curve(t, c);
-    const double a = atan2(sqrt(CYL_R * CYL_R - c[0] * c[0]), c[0]);
     const double local = a <= PI / 2 ? a : a - PI / 2;
     const double k = tan(local / 2) * sqrt(2.0);
     const double s = k / (1.0 + k - tan(local / 2));
     uv[0] = a <= PI / 2 ? 0.5 * s : 0.5 + 0.5 * s;
-    uv[1] = (c[1] + 5.0) / 10.0;
+    uv[1] = (y + 5.0) / 10.0;
+}
+
+static void cyl_exact_uv(const shape *sh, double t, double uv[2])
+{
+    double c[9];
+    cyl_curve(t, c);
+    cyl_uv_of(atan2(sqrt(CYL_R * CYL_R - c[0] * c[0]), c[0]), c[1], uv);
     pc_projector proj;
     pc_oracle_dir d;
     make_projector(sh, &d, &proj);
@@ -232,6 +240,65 @@ static int make_cylinder(shape *sh)
         PROJCURVE_OK)
         return 0;
     return projcurve_curve_create_callback(NULL, cyl_curve_fn, NULL, 0.0, 1.0, &sh->curve) ==
+           PROJCURVE_OK;
+}
+
+/* Orthogonal projection onto the same half cylinder of a curve winding
+ * around it at radius 5 to 7: the foot point is the radial projection
+ * Q = (R x / rho, y, R z / rho), rho = |(x, z)|. */
+static void ortho_curve(double t, double out[9])
+{
+    const double th = 0.3 + 2.5 * t, th1 = 2.5, rad = 6.0 + sin(5.0 * t);
+    const double rad1 = 5.0 * cos(5.0 * t), rad2 = -25.0 * sin(5.0 * t);
+    const double c = cos(th), s = sin(th);
+    const double v[9] = {rad * c, -4.0 + 8.0 * t, rad * s,
+                         rad1 * c - rad * s * th1, 8.0, rad1 * s + rad * c * th1,
+                         rad2 * c - 2.0 * rad1 * s * th1 - rad * c * th1 * th1, 0.0,
+                         rad2 * s + 2.0 * rad1 * c * th1 - rad * s * th1 * th1};
+    memcpy(out, v, sizeof v);
+}
+
+static int ortho_curve_fn(void *user, double t, double out[9])
+{
+    (void)user;
+    ortho_curve(t, out);
+    return 0;
+}
+
+static void ortho_exact(const shape *sh, double t, pc_vec3 q[3])
+{
+    (void)sh;
+    double c[9];
+    ortho_curve(t, c);
+    const double rho = hypot(c[0], c[2]), rho1 = (c[0] * c[3] + c[2] * c[5]) / rho;
+    q[0] = vec3(CYL_R * c[0] / rho, c[1], CYL_R * c[2] / rho);
+    q[1] = vec3(CYL_R * (c[3] * rho - c[0] * rho1) / (rho * rho), c[4],
+                CYL_R * (c[5] * rho - c[2] * rho1) / (rho * rho));
+    q[2] = vec3(0.0, 0.0, 0.0); /* the oracle's Newton runs as Gauss-Newton */
+}
+
+static void ortho_exact_uv(const shape *sh, double t, double uv[2])
+{
+    double c[9];
+    ortho_curve(t, c);
+    cyl_uv_of(atan2(c[2], c[0]), c[1], uv);
+    pc_projector proj;
+    pc_oracle_dir d;
+    make_projector(sh, &d, &proj);
+    proj.correct(&proj, t, uv, NULL);
+}
+
+static int make_ortho_cylinder(shape *sh)
+{
+    if (!make_cylinder(sh))
+        return 0;
+    projcurve_curve_destroy(sh->curve);
+    sh->curve = NULL;
+    sh->name = "orthogonal, half cylinder";
+    sh->exact = ortho_exact;
+    sh->exact_uv = ortho_exact_uv;
+    sh->orthogonal = 1;
+    return projcurve_curve_create_callback(NULL, ortho_curve_fn, NULL, 0.0, 1.0, &sh->curve) ==
            PROJCURVE_OK;
 }
 
@@ -581,11 +648,11 @@ static void test_creased_surface(void)
 
 int main(void)
 {
-    shape shapes[2];
+    shape shapes[3];
     if (!make_height_field(&shapes[0], 3, 9, 7, "bicubic height field") ||
-        !make_cylinder(&shapes[1]))
+        !make_cylinder(&shapes[1]) || !make_ortho_cylinder(&shapes[2]))
         pc_test_skip("surface or curve creation is not available");
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < 3; ++k) {
         test_tolerances(&shapes[k]);
         test_descending(&shapes[k]);
         test_automatic_tolerance(&shapes[k]);
@@ -596,7 +663,7 @@ int main(void)
     test_failing_corrector(&shapes[1]);
     test_degenerate_branches(&shapes[0]);
     test_creased_surface();
-    for (int k = 0; k < 2; ++k)
+    for (int k = 0; k < 3; ++k)
         free_shape(&shapes[k]);
     return pc_test_finish("test_refine");
 }

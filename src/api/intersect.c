@@ -53,7 +53,7 @@ PROJCURVE_API projcurve_status projcurve_surface_intersect_line(projcurve_contex
             hits[3 * k + 1] = list.items[k].v;
             hits[3 * k + 2] = list.items[k].lambda;
             if (flags != NULL)
-                flags[k] = list.items[k].flags;
+                flags[k] = list.items[k].flags & (PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY);
         }
         *count = list.count;
     }

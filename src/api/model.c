@@ -86,11 +86,13 @@ projcurve_status projcurve_model_read_file(projcurve_context *ctx, const char *p
             buf = p;
             cap = fresh;
         }
+        errno = 0;
         const size_t got = fread(buf + len, 1, cap - len, fp);
         len += got;
         if (got == 0) {
             if (ferror(fp))
-                st = pc_fail(ctx, PROJCURVE_ERR_IO, "error reading %s", path);
+                st = pc_fail(ctx, PROJCURVE_ERR_IO, "error reading %s: %s", path,
+                             strerror(errno));
             break;
         }
     }

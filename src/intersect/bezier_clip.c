@@ -254,6 +254,15 @@ pc_clip_outcome pc_bezier_clip_step(double *net, int m, int n, double zero_tol, 
     return clip_step(net, m, n, zero_tol, box);
 }
 
+void pc_bezier_clip_restrict(double *net, int m, int n, const double box[4])
+{
+    const net_view vs = view_along(m, n, 0), vt = view_along(m, n, 1);
+    if (box[0] > 0.0 || box[1] < 1.0)
+        restrict_net(net, &vs, box[0], box[1]);
+    if (box[2] > 0.0 || box[3] < 1.0)
+        restrict_net(net, &vt, box[2], box[3]);
+}
+
 void pc_bezier_clip_split(double *net, double *other_net, int m, int n, int dir, double box[4],
                           double other_box[4])
 {

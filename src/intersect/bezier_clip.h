@@ -32,6 +32,9 @@ typedef enum pc_clip_outcome {
  * root on the box's edge is not clipped away by the sign of a rounding. */
 pc_clip_outcome pc_bezier_clip_step(double *net, int m, int n, double zero_tol, double box[4]);
 
+/* Restricts a net over [0, 1]^2 to box = {s0, s1, t0, t1} (de Casteljau). */
+void pc_bezier_clip_restrict(double *net, int m, int n, const double box[4]);
+
 /* Halves the box in direction dir (0: s, 1: t): net/box keep the lower
  * half, other_net/other_box receive the upper half. */
 void pc_bezier_clip_split(double *net, double *other_net, int m, int n, int dir, double box[4],

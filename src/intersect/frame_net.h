@@ -38,6 +38,16 @@ void pc_frame_net_point(const pc_frame_net *net, double s, double t, pc_frame_ro
  * |J(a) - J(b)|_F <= L |a - b|, and *jac_max >= |J|_F everywhere. */
 void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, double *jac_max);
 
+/* Sides of the patch (bit 0: t = 0, bit 1: t = 1, bit 2: s = 0, bit 3:
+ * s = 1) whose control points all coincide within tol (a pole of the
+ * parametrisation, e.g. of a sphere or a cone) at a point within tol of the
+ * line (X = Y = 0). */
+unsigned pc_frame_net_poles_on_line(const pc_frame_net *net, double tol);
+
+/* Whether all control points coincide within tol (a patch that is one
+ * point). */
+int pc_frame_net_is_point(const pc_frame_net *net, double tol);
+
 /* Newton on (X, Y) = 0 from (s, t). Returns 1 when the step fell below the
  * step tolerance within the iteration bound, 0 when the Jacobian was
  * singular, the iterate left the patch or the bound was hit; out holds the

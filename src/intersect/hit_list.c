@@ -89,17 +89,25 @@ typedef struct dedup_tolerances {
     double du_tangent, dv_tangent, dlambda_tangent; /* when either is grazing */
 } dedup_tolerances;
 
-static int same_hit(const pc_hit *a, const pc_hit *b, const dedup_tolerances *tol)
+static int same_hit(const pc_hit *a, const pc_hit *b, const dedup_tolerances *tol,
+                    const pc_graze_test *graze)
 {
+    /* Poles: one point whatever the parameter along the collapsed edge. */
+    if ((a->flags & b->flags & PC_HIT_POLE) && fabs(a->lambda - b->lambda) <= tol->dlambda)
+        return 1;
     const int tangent = ((a->flags | b->flags) & PROJCURVE_HIT_TANGENT) != 0;
     const double du = tangent ? tol->du_tangent : tol->du;
     const double dv = tangent ? tol->dv_tangent : tol->dv;
     const double dl = tangent ? tol->dlambda_tangent : tol->dlambda;
-    return fabs(a->u - b->u) <= du && fabs(a->v - b->v) <= dv && fabs(a->lambda - b->lambda) <= dl;
+    if (!(fabs(a->lambda - b->lambda) <= dl))
+        return 0;
+    if (fabs(a->u - b->u) <= du && fabs(a->v - b->v) <= dv)
+        return 1;
+    return tangent && graze != NULL && graze->same(graze->user, a, b);
 }
 
 void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_norm,
-                        double scale)
+                        double scale, const pc_graze_test *graze)
 {
     const double span_u = domain[1] - domain[0], span_v = domain[3] - domain[2];
     if (list->count > 1)
@@ -120,7 +128,7 @@ void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_no
             pc_hit *k = &list->items[j];
             if (h.lambda - k->lambda > tol.dlambda_tangent)
                 break;
-            if (same_hit(k, &h, &tol)) {
+            if (same_hit(k, &h, &tol, graze)) {
                 /* Keep the copy nearest the line: for a grazing hit the
                  * copies differ by up to ~sqrt(tolerance) along it. */
                 const unsigned flags = k->flags | h.flags;

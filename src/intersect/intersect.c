@@ -22,14 +22,14 @@ typedef struct line_query {
     projcurve_status status;
 } line_query;
 
-/* The scale of the coordinates involved: the model's size, where it is,
- * and how far the origin is from it (rounding in the frame's distances
- * grows with all three). */
-static double query_scale(const projcurve_surface *s, pc_vec3 origin)
+/* The magnitude of the coordinates involved: where the model is and how
+ * far the origin is from it (rounding in the frame's distances grows with
+ * both). */
+static double query_magnitude(const projcurve_surface *s, pc_vec3 origin)
 {
     const pc_vec3 center = vec3(0.5 * (s->box[0] + s->box[3]), 0.5 * (s->box[1] + s->box[4]),
                                 0.5 * (s->box[2] + s->box[5]));
-    return s->size + vec3_norm(center) + vec3_dist(origin, center);
+    return vec3_norm(center) + vec3_dist(origin, center);
 }
 
 static projcurve_status prepare(projcurve_context *ctx, const projcurve_surface *s,
@@ -44,13 +44,38 @@ static projcurve_status prepare(projcurve_context *ctx, const projcurve_surface 
     const projcurve_status st = pc_hit_list_reserve_work(ctx, hits, work);
     if (st != PROJCURVE_OK)
         return st;
-    pc_ray_frame_init(frame, origin, dir, query_scale(s, origin), ray_only);
+    pc_ray_frame_init(frame, origin, dir, s->size, query_magnitude(s, origin), ray_only);
     return PROJCURVE_OK;
 }
 
-static void finish(const projcurve_surface *s, pc_vec3 origin, pc_vec3 dir, pc_hit_list *hits)
+/* Two grazing hits are one touching point when the surface halfway
+ * between them (in parameters) is as close to the line as a hit: a double
+ * root is only known to ~sqrt(tolerance) along the line, so copies found
+ * from neighbouring boxes or patches can lie well apart, but the surface
+ * between them hugs the line. Two separate touching points do not. */
+typedef struct graze_context {
+    const projcurve_surface *surface;
+    const pc_ray_frame *frame;
+} graze_context;
+
+static int same_graze(const void *user, const pc_hit *a, const pc_hit *b)
 {
-    pc_hit_list_finish(hits, s->nurbs.domain, pc_vec3_length_robust(dir), query_scale(s, origin));
+    const graze_context *g = user;
+    pc_vec3 p;
+    pc_nurbs_surface_eval(&g->surface->nurbs, 0.5 * (a->u + b->u), 0.5 * (a->v + b->v), 0, NULL,
+                          NULL, &p);
+    const pc_vec3 w = vec3_sub(p, g->frame->origin);
+    const double off = vec3_norm(vec3_axpy(w, -vec3_dot(w, g->frame->d), g->frame->d));
+    return off <= 2.0 * g->frame->tol_residual;
+}
+
+static void finish(const projcurve_surface *s, const pc_ray_frame *frame, pc_vec3 dir,
+                   pc_hit_list *hits)
+{
+    const graze_context g = {s, frame};
+    const pc_graze_test graze = {same_graze, &g};
+    pc_hit_list_finish(hits, s->nurbs.domain, pc_vec3_length_robust(dir),
+                       s->size + query_magnitude(s, frame->origin), &graze);
 }
 
 static int visit_patch(void *user, size_t patch_index)
@@ -76,7 +101,7 @@ projcurve_status pc_intersect_line(projcurve_context *ctx, const projcurve_surfa
         hits->count = 0;
         return q.status;
     }
-    finish(s, origin, dir, hits);
+    finish(s, &frame, dir, hits);
     return PROJCURVE_OK;
 }
 
@@ -102,6 +127,6 @@ projcurve_status pc_intersect_line_patches(projcurve_context *ctx, const projcur
             return st;
         }
     }
-    finish(s, origin, dir, hits);
+    finish(s, &frame, dir, hits);
     return PROJCURVE_OK;
 }

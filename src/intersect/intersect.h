@@ -11,10 +11,15 @@
 #include "api/handles.h"
 #include "common/vec.h"
 
+/* Internal flag (never in the public flags): the hit is a pole, a point
+ * where a whole patch edge collapses, so the parameter along that edge is
+ * arbitrary (the middle of the patch's edge is reported). */
+#define PC_HIT_POLE 0x100u
+
 typedef struct pc_hit {
     double u, v, lambda;
     double residual; /* distance of S(u, v) to the line */
-    unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY */
+    unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY | PC_HIT_POLE */
 } pc_hit;
 
 /* A growable list of hits owned by the caller (pc_hit_list_free). Start it
@@ -34,8 +39,9 @@ void pc_hit_list_free(pc_hit_list *list);
  * ray_only, only lambda > 0. dir need not be unit length but must be finite
  * and non-zero (the caller validates). Each hit satisfies the line equation
  * to ~1e-12 of the model size. Hits that coincide (shared patch edges and
- * corners) are reported once. Statuses: OK, NO_MEMORY (OVERFLOW for degrees
- * out of range, which a valid surface never has). The list's scratch is
+ * corners, poles shared by several patches) are reported once. Statuses:
+ * OK, NO_MEMORY (OVERFLOW for degrees out of range, which a valid surface
+ * never has). The list's scratch is
  * reused: calling again with the same list allocates nothing new. */
 projcurve_status pc_intersect_line(projcurve_context *ctx, const projcurve_surface *s,
                                    pc_vec3 origin, pc_vec3 dir, int ray_only,

@@ -9,13 +9,15 @@
 #include "intersect/bezier_clip.h"
 #include "intersect/frame_net.h"
 
-/* A hit's distance to the line may be at most this fraction of the scale
- * given to pc_ray_frame_init (the size and position of the model): Newton
- * reaches ~1e-16 of it, and an exactly tangent line gives a least-squares
- * minimum at rounding level; a line that misses by less counts as tangent. */
+/* A hit's distance to the line may be at most this fraction of the model
+ * size, plus PC_HIT_ROUNDING_ULPS ulps of the coordinates' magnitude (where
+ * the model is and how far the origin is from it): Newton reaches ~1e-16
+ * of them, and an exactly tangent line gives a least-squares minimum at
+ * rounding level; a line that misses by less counts as tangent. */
 #define PC_HIT_RESIDUAL_REL 1e-12
+#define PC_HIT_ROUNDING_ULPS 64.0
 /* Control values in the ray frame carry rounding errors of a few ulps of
- * the coordinates' scale; clipping treats values this small as zero. */
+ * the coordinates' magnitude; clipping treats values this small as zero. */
 #define PC_CLIP_ZERO_REL (16.0 * DBL_EPSILON)
 /* |d . n| below this (n the unit normal) makes a hit a grazing one: there
  * the Jacobian of (d1, d2) is ~this small relative to |Su x Sv| and the
@@ -34,12 +36,21 @@
  * rejected: the neighbouring patch then reports it. Accepted roots are
  * clamped into the patch. */
 #define PC_PARAM_SLACK 1e-9
+/* Where a pole lies on the line, the band of this width (local
+ * parameters) along the collapsed edge is left out of the clipping: every
+ * box touching the edge holds a root (the pole) and could not be
+ * discarded. Points of the band are within ~1e-4 of the patch's size of
+ * the pole; the line meets them only if it is the pole's hit itself. */
+#define PC_POLE_BAND 1e-4
+/* The normal at a pole is taken this far inside the patch. */
+#define PC_POLE_NORMAL_OFFSET 1e-6
+
 /* After a failed Newton try on a box, the next waits until the box has
  * shrunk by this factor: a try costs about as much as a clipping round. */
 #define PC_NEWTON_RETRY_FACTOR 0.01
 
-void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double scale,
-                       int ray_only)
+void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double size,
+                       double magnitude, int ray_only)
 {
     const double norm = pc_vec3_length_robust(dir);
     frame->origin = origin;
@@ -51,8 +62,8 @@ void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double 
     frame->origin_e1 = vec3_dot(frame->e1, origin);
     frame->origin_e2 = vec3_dot(frame->e2, origin);
     frame->origin_d = vec3_dot(frame->d, origin);
-    frame->tol_residual = PC_HIT_RESIDUAL_REL * scale;
-    frame->tol_zero = PC_CLIP_ZERO_REL * scale;
+    frame->tol_residual = PC_HIT_RESIDUAL_REL * size + PC_HIT_ROUNDING_ULPS * DBL_EPSILON * magnitude;
+    frame->tol_zero = PC_CLIP_ZERO_REL * (size + magnitude);
     frame->ray_only = ray_only;
 }
 
@@ -129,7 +140,8 @@ typedef struct patch_search {
 } patch_search;
 
 /* Records a root found in patch-local parameters if it is a hit. */
-static projcurve_status record_root(const patch_search *ps, const pc_frame_root *r, int forced_tangent)
+static projcurve_status record_root_flagged(const patch_search *ps, const pc_frame_root *r,
+                                            int forced_tangent, unsigned extra_flags)
 {
     const pc_ray_frame *f = ps->frame;
     if (!(r->residual <= f->tol_residual))
@@ -147,7 +159,13 @@ static projcurve_status record_root(const patch_search *ps, const pc_frame_root 
     hit.v = t >= 1.0 ? p->v1 : p->v0 + t * (p->v1 - p->v0);
     hit.residual = r->residual;
     hit.flags = (forced_tangent || r->cos_dir < PC_HIT_TANGENT_COS) ? PROJCURVE_HIT_TANGENT : 0u;
+    hit.flags |= extra_flags;
     return pc_hit_list_push(ps->ctx, ps->hits, hit);
+}
+
+static projcurve_status record_root(const patch_search *ps, const pc_frame_root *r, int forced_tangent)
+{
+    return record_root_flagged(ps, r, forced_tangent, 0u);
 }
 
 /* A box that clipping shrank below PC_CLIP_WIDTH_TOL: Newton from its
@@ -215,6 +233,41 @@ static int split_direction(const double box[4])
     return (box[3] - box[2]) > (box[1] - box[0]) ? 1 : 0;
 }
 
+/* The hit at a pole on side `side` (as pc_frame_net_poles_on_line) of the
+ * patch: reported at the middle of the collapsed edge, flagged PC_HIT_POLE,
+ * grazing or not by the normal just inside the patch. */
+static projcurve_status record_pole(const patch_search *ps, int side)
+{
+    static const double mid[4][2] = {{0.5, 0.0}, {0.5, 1.0}, {0.0, 0.5}, {1.0, 0.5}};
+    static const double inward[4][2] = {{0.0, 1.0}, {0.0, -1.0}, {1.0, 0.0}, {-1.0, 0.0}};
+    pc_frame_root r, inside;
+    pc_frame_net_point(&ps->net, mid[side][0], mid[side][1], &r);
+    pc_frame_net_point(&ps->net, mid[side][0] + PC_POLE_NORMAL_OFFSET * inward[side][0],
+                       mid[side][1] + PC_POLE_NORMAL_OFFSET * inward[side][1], &inside);
+    r.cos_dir = inside.cos_dir;
+    return record_root_flagged(ps, &r, 0, PC_HIT_POLE);
+}
+
+/* The part of the patch the clipping searches: all of it, less a band
+ * along each collapsed edge whose pole lies on the line (recorded here). */
+static projcurve_status start_box(const patch_search *ps, double box[4], unsigned *poles)
+{
+    box[0] = box[2] = 0.0;
+    box[1] = box[3] = 1.0;
+    *poles = pc_frame_net_poles_on_line(&ps->net, ps->frame->tol_residual);
+    for (int side = 0; side < 4; ++side) {
+        if (!(*poles & (1u << side)))
+            continue;
+        const projcurve_status st = record_pole(ps, side);
+        if (st != PROJCURVE_OK)
+            return st;
+        /* side 0: t = 0 -> box[2]; 1: t = 1 -> box[3]; 2: s = 0 -> box[0]; 3: s = 1 -> box[1] */
+        static const int bound[4] = {2, 3, 0, 1};
+        box[bound[side]] += (side % 2 == 0) ? PC_POLE_BAND : -PC_POLE_BAND;
+    }
+    return PROJCURVE_OK;
+}
+
 /* Depth-first Bezier clipping over a bounded stack of planar nets. */
 static projcurve_status clip_patch(const patch_search *ps, double *slots)
 {
@@ -228,14 +281,22 @@ static projcurve_status clip_patch(const patch_search *ps, double *slots)
         slots[2 * k] = ps->net.q[4 * k];
         slots[2 * k + 1] = ps->net.q[4 * k + 1];
     }
-    boxes[0][0] = boxes[0][2] = 0.0;
-    boxes[0][1] = boxes[0][3] = 1.0;
+    unsigned poles = 0;
+    const projcurve_status pole_status = start_box(ps, boxes[0], &poles);
+    if (pole_status != PROJCURVE_OK)
+        return pole_status;
+    if (poles != 0) {
+        if (!(boxes[0][0] < boxes[0][1] && boxes[0][2] < boxes[0][3]) ||
+            pc_frame_net_is_point(&ps->net, ps->frame->tol_residual))
+            return PROJCURVE_OK; /* the whole patch collapses to the pole */
+        pc_bezier_clip_restrict(slots, m, n, boxes[0]);
+    }
     depth[0] = 0;
     next_try[0] = 1.0;
     int top = 0;
     /* A patch flat enough for Newton to be certified on the whole of it
      * (small patches of a fine surface) needs no clipping at all. */
-    if (newton_may_certify(ps, 1.0)) {
+    if (poles == 0 && newton_may_certify(ps, 1.0)) {
         projcurve_status st = PROJCURVE_OK;
         if (try_certified_newton(ps, boxes[0], &st))
             return st;

@@ -31,10 +31,12 @@ typedef struct pc_ray_frame {
 /* |a| without overflow or underflow of the squares (a finite). */
 double pc_vec3_length_robust(pc_vec3 a);
 
-/* The frame of the line o + lambda * dir (dir finite and non-zero) with the
- * residual tolerance for hits; `scale` is the size of the model. */
-void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double scale,
-                       int ray_only);
+/* The frame of the line o + lambda * dir (dir finite and non-zero) with
+ * the tolerances for hits: `size` is the model's size, `magnitude` that of
+ * the coordinates involved (|centre| + |o - centre| of the model's box),
+ * which bounds their rounding errors. */
+void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double size,
+                       double magnitude, int ray_only);
 
 /* Number of doubles of scratch that pc_ray_patch_hits needs for a patch of
  * degrees (deg_u, deg_v); 0 when the size overflows. */
@@ -54,11 +56,19 @@ projcurve_status pc_hit_list_push(projcurve_context *ctx, pc_hit_list *list, pc_
 /* Makes sure list->work holds at least n doubles. Statuses: OK, NO_MEMORY. */
 projcurve_status pc_hit_list_reserve_work(projcurve_context *ctx, pc_hit_list *list, size_t n);
 
+/* Decides whether two grazing hits near each other on the line are one
+ * touching point (the surface between them stays on the line). */
+typedef struct pc_graze_test {
+    int (*same)(const void *user, const pc_hit *a, const pc_hit *b);
+    const void *user;
+} pc_graze_test;
+
 /* Sorts the hits by lambda, merges the ones that are the same point of the
  * surface found twice (shared edges and corners, neighbouring clipping
- * boxes) and flags hits on the boundary of the domain {u0, u1, v0, v1}.
- * dir_norm = |dir|; scale is the model size. */
+ * boxes, poles; grazing copies also when graze says so) and flags hits on
+ * the boundary of the domain {u0, u1, v0, v1}. dir_norm = |dir|; scale is
+ * the model's size plus its coordinates' magnitude. graze may be NULL. */
 void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_norm,
-                        double scale);
+                        double scale, const pc_graze_test *graze);
 
 #endif /* PC_INTERSECT_RAY_PATCH_H */

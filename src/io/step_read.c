@@ -679,7 +679,7 @@ projcurve_status pc_step_read_geometry(pc_step_file *f, projcurve_model *model)
         const size_t n = simple_name(f, inst, name);
         if (n == 0 || interesting(name)) {
             st = read_instance(&r, inst, name);
-        } else {
+        } else if (!is_trim_basis(&r, inst->id)) {
             for (size_t k = 0; k < sizeof listed_types / sizeof *listed_types; ++k)
                 if (strcmp(name, listed_types[k]) == 0) {
                     st = pc_model_add_skipped(f->ctx, model, "STEP #%ld %s%s", inst->id, name,

@@ -19,7 +19,7 @@ if [[ -n $foreign ]]; then
     printf '  %s\n' $foreign
     exit 1
 fi
-if ! printf '%s\n' "$symbols" | grep -qx projcurve_status_string; then
+if ! grep -qx projcurve_status_string <<<"$symbols"; then
     echo "FAIL: projcurve_status_string is not exported"
     exit 1
 fi

@@ -47,7 +47,7 @@ if command -v pkg-config >/dev/null; then
     "$work/pc_c"
     "$work/pc_cpp"
     # The programs must run against the installed library, not the build tree.
-    ldd "$work/pc_c" | grep -q "$prefix" || { echo "FAIL: pc_c not linked to $prefix"; exit 1; }
+    grep -q "$prefix" <<<"$(ldd "$work/pc_c")" || { echo "FAIL: pc_c not linked to $prefix"; exit 1; }
     echo "pkg-config consumers: OK"
 else
     echo "pkg-config not found: skipping the pkg-config consumers"
@@ -62,9 +62,9 @@ fi
 "$work/consumer/consumer_c"
 "$work/consumer/consumer_cpp"
 "$work/consumer/consumer_c_static"
-ldd "$work/consumer/consumer_c" | grep -q "$prefix" ||
+grep -q "$prefix" <<<"$(ldd "$work/consumer/consumer_c")" ||
     { echo "FAIL: consumer_c not linked to $prefix"; exit 1; }
-if ldd "$work/consumer/consumer_c_static" | grep -q libprojcurve; then
+if grep -q libprojcurve <<<"$(ldd "$work/consumer/consumer_c_static")"; then
     echo "FAIL: consumer_c_static depends on the shared library"; exit 1
 fi
 echo "find_package consumers: OK"

@@ -9,8 +9,12 @@
 #include <string.h>
 
 #define PI 3.14159265358979323846
-#define DENSE_PER_PIECE 16
-#define DENSE_EXACT 4000
+/* Samples per piece: the deviation of a piece is a smooth bump, so the
+ * largest of 9 samples is within 2% of its maximum (a parabola peaking
+ * between two samples), well inside the 10% margin a controlled piece keeps;
+ * the exact curve is sampled as densely again along the whole branch. */
+#define DENSE_PER_PIECE 8
+#define DENSE_EXACT 3000
 #define ORACLE_MAX_ITER 50
 
 static void surface_eval(const projcurve_surface *s, double u, double v, int n, pc_vec3 *out)
@@ -115,6 +119,84 @@ void pc_oracle_projector(const projcurve_surface *s, const projcurve_curve *c, c
     proj->derivatives = oracle_derivatives;
     proj->residual = oracle_residual;
     proj->data = d;
+}
+
+/* Orthogonal projection (DESIGN.md, seed 003 eq. 5-6): F = [(S - P).Su;
+ * (S - P).Sv] = 0, K = [g_ij + (S - P).S_ij], q' = K^-1 [P'.Su; P'.Sv]. */
+static void ortho_system(const pc_vec3 s[6], pc_vec3 p, double k[4])
+{
+    const pc_vec3 d = vec3_sub(s[0], p);
+    k[0] = vec3_dot(s[1], s[1]) + vec3_dot(d, s[3]);
+    k[1] = vec3_dot(s[1], s[2]) + vec3_dot(d, s[4]);
+    k[2] = k[1];
+    k[3] = vec3_dot(s[2], s[2]) + vec3_dot(d, s[5]);
+}
+
+static int ortho_correct(const pc_projector *self, double t, double uv[2], int *iterations)
+{
+    pc_vec3 p[3];
+    curve_eval(self->curve, t, p);
+    for (int it = 0; it < self->newton_max_iter; ++it) {
+        pc_vec3 s[6];
+        surface_eval(self->surface, uv[0], uv[1], 2, s);
+        const pc_vec3 d = vec3_sub(s[0], p[0]);
+        const double r[2] = {-vec3_dot(d, s[1]), -vec3_dot(d, s[2])};
+        if (iterations)
+            *iterations = it;
+        /* residual in model units: the tangential part of S - P */
+        if (hypot(r[0] / vec3_norm(s[1]), r[1] / vec3_norm(s[2])) <= self->newton_tol)
+            return 1;
+        double k[4], delta[2];
+        ortho_system(s, p[0], k);
+        if (!mat2_solve(k[0], k[1], k[2], k[3], r, delta))
+            return 0;
+        uv[0] += delta[0];
+        uv[1] += delta[1];
+        clamp_domain(self->surface, uv);
+    }
+    return 0;
+}
+
+static int ortho_derivatives(const pc_projector *self, double t, double u, double v,
+                             pc_proj_point *out)
+{
+    pc_vec3 p[3], s[6];
+    curve_eval(self->curve, t, p);
+    surface_eval(self->surface, u, v, 2, s);
+    double k[4], q1[2];
+    ortho_system(s, p[0], k);
+    const double r[2] = {vec3_dot(p[1], s[1]), vec3_dot(p[1], s[2])};
+    if (!mat2_solve(k[0], k[1], k[2], k[3], r, q1))
+        return 0;
+    memset(out, 0, sizeof *out);
+    out->t = t, out->u = u, out->v = v;
+    out->du = q1[0], out->dv = q1[1];
+    out->s = s[0];
+    out->p = p[0];
+    return 1;
+}
+
+static double ortho_residual(const pc_projector *self, double t, double u, double v)
+{
+    pc_vec3 p[3], s[3];
+    curve_eval(self->curve, t, p);
+    surface_eval(self->surface, u, v, 1, s);
+    const pc_vec3 d = vec3_sub(s[0], p[0]);
+    return hypot(vec3_dot(d, s[1]) / vec3_norm(s[1]), vec3_dot(d, s[2]) / vec3_norm(s[2]));
+}
+
+void pc_oracle_projector_orthogonal(const projcurve_surface *s, const projcurve_curve *c,
+                                    pc_projector *proj)
+{
+    memset(proj, 0, sizeof *proj);
+    proj->surface = s;
+    proj->curve = c;
+    proj->model_size = s->size;
+    proj->newton_tol = 1e-12 * s->size;
+    proj->newton_max_iter = 30;
+    proj->correct = ortho_correct;
+    proj->derivatives = ortho_derivatives;
+    proj->residual = ortho_residual;
 }
 
 /* Piece point and derivative at s by Bernstein sums (rational): the power
@@ -271,3 +353,70 @@ pc_oracle_measure pc_oracle_measure_branch(const pc_branch *b, pc_oracle_exact_f
     return m;
 }
 
+
+/* The exact projection along a branch: Q(t) from the oracle's corrector
+ * seeded by the branch's pcurve, Q'(t) = Su u' + Sv v'. */
+typedef struct branch_exact {
+    const pc_projector *proj;
+    const pc_branch *branch;
+    int *failures; /* corrector failures, counted */
+} branch_exact;
+
+static void pcurve_guess(const pc_branch *b, double t, double uv[2])
+{
+    const double *p = b->points;
+    const size_t n = b->n_points;
+    const double dir = p[3 * (n - 1)] >= p[0] ? 1.0 : -1.0;
+    size_t lo = 0, hi = n - 1; /* bisection for the segment holding t */
+    while (hi - lo > 1) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (dir * (p[3 * mid] - t) <= 0.0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    const double *a = p + 3 * lo, *c = p + 3 * hi;
+    const double w = c[0] != a[0] ? (t - a[0]) / (c[0] - a[0]) : 0.0;
+    uv[0] = a[1] + w * (c[1] - a[1]);
+    uv[1] = a[2] + w * (c[2] - a[2]);
+}
+
+static void exact_on_branch(const void *user, double t, pc_vec3 q[3])
+{
+    const branch_exact *e = user;
+    double uv[2];
+    pcurve_guess(e->branch, t, uv);
+    pc_proj_point pt;
+    if (!e->proj->correct(e->proj, t, uv, NULL) ||
+        !e->proj->derivatives(e->proj, t, uv[0], uv[1], &pt)) {
+        ++*e->failures;
+        q[0] = vec3(NAN, NAN, NAN);
+        return;
+    }
+    double s[18];
+    projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 1, s);
+    q[0] = vec3_load(s);
+    q[1] = vec3_add(vec3_scale(vec3_load(s + 3), pt.du), vec3_scale(vec3_load(s + 6), pt.dv));
+    q[2] = vec3(0.0, 0.0, 0.0);
+}
+
+void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *proj,
+                              const pc_patch_grid *grid, pc_oracle_summary *out)
+{
+    memset(out, 0, sizeof *out);
+    for (size_t i = 0; i < r->n_branches; ++i) {
+        const pc_branch *b = &r->branches[i];
+        if (b->n_pieces == 0) {
+            ++out->branches_without_pieces;
+            continue;
+        }
+        const branch_exact e = {proj, b, &out->failures};
+        const pc_oracle_measure m = pc_oracle_measure_branch(b, exact_on_branch, &e, grid);
+        out->worst.hausdorff = fmax(out->worst.hausdorff, m.hausdorff);
+        out->worst.max_angle = fmax(out->worst.max_angle, m.max_angle);
+        out->worst.max_gap = fmax(out->worst.max_gap, m.max_gap);
+        out->worst.max_end_err = fmax(out->worst.max_end_err, m.max_end_err);
+        out->worst.off_patch += m.off_patch;
+        out->pieces += b->n_pieces;
+    }
+}

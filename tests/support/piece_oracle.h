@@ -2,7 +2,8 @@
  * Test oracles for projection results, independent of the library's
  * refinement code:
  *  - a directional projector written from DESIGN.md's equations (Newton on
- *    [e1.(S - P); e2.(S - P)] = 0 through the public evaluation API);
+ *    [e1.(S - P); e2.(S - P)] = 0 through the public evaluation API), and an
+ *    orthogonal one (Newton on [(S - P).Su; (S - P).Sv] = 0);
  *  - measurements of a branch's composed pieces against an exact projection
  *    curve given point by point: the Hausdorff distance both ways on dense
  *    samples (each output sample projected onto the exact curve by Newton on
@@ -25,6 +26,10 @@ typedef struct pc_oracle_dir {
 void pc_oracle_projector(const projcurve_surface *s, const projcurve_curve *c, const double dir[3],
                          pc_oracle_dir *d, pc_projector *proj);
 
+/* An orthogonal projector (foot points of P(t) on S; only q' is given). */
+void pc_oracle_projector_orthogonal(const projcurve_surface *s, const projcurve_curve *c,
+                                    pc_projector *proj);
+
 /* The exact projection curve at t: q[0] = Q(t), q[1] = Q'(t), q[2] = Q''(t)
  * (q[2] may be left zero: Newton then runs as Gauss-Newton). */
 typedef void (*pc_oracle_exact_fn)(const void *user, double t, pc_vec3 q[3]);
@@ -41,6 +46,21 @@ typedef struct pc_oracle_measure {
  * grid may be NULL (then off_patch is not checked). */
 pc_oracle_measure pc_oracle_measure_branch(const pc_branch *b, pc_oracle_exact_fn exact,
                                            const void *user, const pc_patch_grid *grid);
+
+/* Every branch of a result measured against the projection that the oracle
+ * projector proj defines: the exact point at t is proj's own Newton solution
+ * started from the branch's pcurve, Q' = Su u' + Sv v' from its q'.
+ * `worst` holds the largest of each measure over the branches (off_patch:
+ * their sum); failures counts exact points the oracle could not compute. */
+typedef struct pc_oracle_summary {
+    pc_oracle_measure worst;
+    size_t pieces;
+    int failures;
+    int branches_without_pieces;
+} pc_oracle_summary;
+
+void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *proj,
+                              const pc_patch_grid *grid, pc_oracle_summary *out);
 
 /* Point (and derivative, dx may be NULL) of a piece at s by Bernstein sums. */
 void pc_oracle_piece_eval(const pc_piece *pc, double s, pc_vec3 *x, pc_vec3 *dx);

@@ -1,0 +1,108 @@
+/*
+ * The projcurve command: shared declarations of its parts.
+ *
+ * Exit codes: CLI_EXIT_OK, CLI_EXIT_PROJECTION (a projection call failed),
+ * CLI_EXIT_USAGE (bad usage or input that cannot be read).
+ */
+#ifndef PC_CLI_H
+#define PC_CLI_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "projcurve.h"
+
+enum { CLI_EXIT_OK = 0, CLI_EXIT_PROJECTION = 1, CLI_EXIT_USAGE = 2 };
+
+/* ---- argument helpers (args.c) ---- */
+/* "X,Y,Z" -> v; 0 on a malformed or non-finite value. */
+int cli_parse_vec3(const char *text, double v[3]);
+/* A finite real; 0 on failure. */
+int cli_parse_double(const char *text, double *v);
+/* 1 when arg is -h or --help. */
+int cli_is_help(const char *arg);
+/* Prints "projcurve: message" to stderr and returns CLI_EXIT_USAGE. */
+int cli_usage_error(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+/* Creates directory path if it does not exist; 0 on failure. */
+int cli_make_dir(const char *path);
+/* Milliseconds from a monotonic-enough clock. */
+double cli_now_ms(void);
+
+/* ---- inputs (inputs.c) ---- */
+typedef struct cli_inputs {
+    projcurve_model **models;
+    size_t n_models;
+    const projcurve_surface **surfaces; /* every surface of every model, in order */
+    size_t n_surfaces;
+    const projcurve_curve **curves;
+    size_t n_curves;
+} cli_inputs;
+
+/* Reads the files; on failure prints why and returns CLI_EXIT_USAGE. */
+int cli_inputs_load(projcurve_context *ctx, char **paths, size_t n, cli_inputs *in);
+void cli_inputs_free(cli_inputs *in);
+
+/* ---- projection runs (run.c) ---- */
+typedef struct cli_pair {
+    size_t surface, curve;       /* indices into the inputs */
+    projcurve_status status;
+    projcurve_result *result;    /* NULL if the call failed without one */
+} cli_pair;
+
+typedef struct cli_job {
+    const projcurve_surface *const *surfaces;
+    size_t n_surfaces;
+    const projcurve_curve *const *curves;
+    size_t n_curves;
+    int orthogonal;
+    double dir[3];
+    const projcurve_options *opts;
+    cli_pair *pairs; /* n_surfaces * n_curves after cli_run */
+    size_t n_pairs;
+    double time_ms;  /* total projection time */
+    size_t failures; /* calls that failed */
+} cli_job;
+
+/* Projects every curve onto every surface; failures are reported on stderr
+ * and counted. Returns 0 only when memory runs out. */
+int cli_run(projcurve_context *ctx, cli_job *job);
+void cli_job_free(cli_job *job);
+
+/* Quality of one branch: residual = largest violation of the projection
+ * condition at the traced points (distance of S(u,v) from the line through
+ * P(t) along Dir, or the tangential part of S(u,v) - P(t) for orthogonal);
+ * deviation = largest distance between the composed curve and S(u,v) at
+ * the traced points (negative when not composed). */
+typedef struct cli_branch_quality {
+    double residual, deviation;
+} cli_branch_quality;
+void cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
+                        size_t branch, cli_branch_quality *q);
+
+const char *cli_start_name(projcurve_branch_start s);
+const char *cli_end_name(projcurve_branch_end e);
+
+/* ---- outputs ---- */
+int cli_write_iges(projcurve_context *ctx, const cli_job *job, const char *path);
+int cli_write_json(projcurve_context *ctx, const cli_job *job, const char *path);
+int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title,
+                  const char *path);
+/* The short summary printed by project and demo. */
+void cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out);
+
+/* ---- commands ---- */
+int cli_cmd_info(int argc, char **argv);
+int cli_cmd_project(int argc, char **argv);
+int cli_cmd_demo(int argc, char **argv);
+
+/* ---- demo shapes (demo_shapes.c) ---- */
+/* Seed 000 s5, Example 1: a degree (5, 1) sheet and a cubic curve. */
+int cli_demo_example1(projcurve_context *ctx, projcurve_surface **s, projcurve_curve **c);
+/* A bicubic wave surface and a cubic curve above it (Dir = -z). */
+int cli_demo_freeform(projcurve_context *ctx, projcurve_surface **s, projcurve_curve **c);
+
+#endif /* PC_CLI_H */

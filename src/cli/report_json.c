@@ -1,0 +1,106 @@
+/*
+ * JSON report:
+ *   {"time_ms": T, "branches": [{"surface": i, "curve": j, "t_range": [a, b],
+ *    "pieces": n, "degree": d, "control_points": m, "start": "...",
+ *    "end": "...", "points": k, "residual": r, "deviation": e}, ...],
+ *    "failures": f}
+ * surface and curve index the inputs in file order; degree and
+ * control_points describe the branch joined into one B-spline (0 when it
+ * was not composed); residual and deviation are described in cli.h
+ * (deviation is null when not composed).
+ */
+#include <math.h>
+
+#include "cli.h"
+
+static void json_number(FILE *f, double v)
+{
+    if (isfinite(v))
+        fprintf(f, "%.17g", v);
+    else
+        fputs("null", f);
+}
+
+static void branch_json(projcurve_context *ctx, const cli_job *job, const cli_pair *p, size_t b,
+                        FILE *f)
+{
+    double t[2] = {0.0, 0.0};
+    projcurve_branch_start start = PROJCURVE_START_CURVE_START;
+    projcurve_branch_end end = PROJCURVE_END_CURVE_END;
+    size_t n_points = 0, n_pieces = 0, n_ctrl = 0;
+    int degree = 0;
+    projcurve_result_branch_info(ctx, p->result, b, t, &start, &end, &n_points, &n_pieces);
+    projcurve_curve *c = NULL;
+    if (projcurve_result_branch_curve(ctx, p->result, b, &c) == PROJCURVE_OK)
+        projcurve_curve_nurbs_info(ctx, c, &degree, &n_ctrl, NULL, NULL);
+    projcurve_curve_destroy(c);
+    cli_branch_quality q;
+    cli_branch_measure(ctx, job, p, b, &q);
+    fprintf(f, "    {\"surface\": %zu, \"curve\": %zu, \"t_range\": [", p->surface, p->curve);
+    json_number(f, t[0]);
+    fputs(", ", f);
+    json_number(f, t[1]);
+    fprintf(f,
+            "], \"pieces\": %zu, \"degree\": %d, \"control_points\": %zu, \"start\": \"%s\", "
+            "\"end\": \"%s\", \"points\": %zu, \"residual\": ",
+            n_pieces, degree, n_ctrl, cli_start_name(start), cli_end_name(end), n_points);
+    json_number(f, q.residual);
+    fputs(", \"deviation\": ", f);
+    if (q.deviation >= 0.0)
+        json_number(f, q.deviation);
+    else
+        fputs("null", f);
+    fputc('}', f);
+}
+
+int cli_write_json(projcurve_context *ctx, const cli_job *job, const char *path)
+{
+    FILE *f = fopen(path, "w");
+    if (f == NULL) {
+        fprintf(stderr, "projcurve: cannot create %s\n", path);
+        return 0;
+    }
+    fputs("{\"time_ms\": ", f);
+    json_number(f, job->time_ms);
+    fputs(", \"branches\": [", f);
+    int first = 1;
+    for (size_t i = 0; i < job->n_pairs; ++i) {
+        const cli_pair *p = &job->pairs[i];
+        const size_t n = projcurve_result_branch_count(p->result);
+        for (size_t b = 0; b < n; ++b) {
+            fputs(first ? "\n" : ",\n", f);
+            branch_json(ctx, job, p, b, f);
+            first = 0;
+        }
+    }
+    fprintf(f, "%s], \"failures\": %zu}\n", first ? "" : "\n  ", job->failures);
+    const int ok = fclose(f) == 0;
+    if (!ok)
+        fprintf(stderr, "projcurve: error writing %s\n", path);
+    return ok;
+}
+
+void cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out)
+{
+    size_t branches = 0, pieces = 0;
+    double residual = 0.0, deviation = 0.0;
+    for (size_t i = 0; i < job->n_pairs; ++i) {
+        const cli_pair *p = &job->pairs[i];
+        const size_t n = projcurve_result_branch_count(p->result);
+        for (size_t b = 0; b < n; ++b) {
+            size_t np = 0;
+            projcurve_result_branch_info(ctx, p->result, b, NULL, NULL, NULL, NULL, &np);
+            cli_branch_quality q;
+            cli_branch_measure(ctx, job, p, b, &q);
+            pieces += np;
+            residual = fmax(residual, q.residual);
+            deviation = fmax(deviation, q.deviation);
+        }
+        branches += n;
+    }
+    fprintf(out,
+            "%zu curve(s) x %zu surface(s): %zu branch(es), %zu piece(s), %.1f ms; "
+            "max residual %.3g, max deviation %.3g%s\n",
+            job->n_curves, job->n_surfaces, branches, pieces, job->time_ms, residual, deviation,
+            job->failures ? " (some projections failed)" : "");
+}

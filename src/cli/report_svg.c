@@ -1,0 +1,336 @@
+/*
+ * SVG picture of a projection: on the left a three-quarter view of the
+ * surfaces (iso-parameter lines), the input curves, a few projection rays
+ * and every branch in its own colour; on the right the (u, v) domain with
+ * the branches' pcurves (each surface's domain mapped to the unit square).
+ * The file is self-contained SVG 1.1: no scripts, fonts or links.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+#define SVG_WIDTH 1120.0
+#define SVG_HEIGHT 600.0
+#define VIEW_X0 20.0   /* 3D panel */
+#define VIEW_X1 660.0
+#define VIEW_Y0 60.0
+#define VIEW_Y1 520.0
+#define UV_X0 700.0    /* (u, v) panel, a square */
+#define UV_SIZE 400.0
+#define UV_Y0 90.0
+#define AZIMUTH_DEG (-30.0)
+#define ELEVATION_DEG 25.0
+#define ISO_LINES 9        /* per direction and surface */
+#define ISO_SAMPLES 48
+#define CURVE_SAMPLES 240
+#define RAYS_PER_PAIR 7
+#define MAX_SURFACES_DRAWN 64
+#define DEG_TO_RAD (3.14159265358979323846 / 180.0)
+
+static const char *const palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e",
+                                      "#17becf", "#e377c2", "#8c564b", "#bcbd22", "#7f7f7f"};
+#define PALETTE_SIZE (sizeof palette / sizeof *palette)
+
+typedef struct view {
+    double right[3], up[3];
+    double box[4]; /* xmin, ymin, xmax, ymax of projected points */
+    double scale, ox, oy;
+    int emitting;  /* 0: measuring the box, 1: writing */
+    FILE *f;
+    size_t open_points; /* points written in the current polyline */
+} view;
+
+static void project(const view *v, const double p[3], double *x, double *y)
+{
+    *x = p[0] * v->right[0] + p[1] * v->right[1] + p[2] * v->right[2];
+    *y = p[0] * v->up[0] + p[1] * v->up[1] + p[2] * v->up[2];
+}
+
+static void begin_line(view *v, const char *colour, double width, const char *extra)
+{
+    v->open_points = 0;
+    if (v->emitting)
+        fprintf(v->f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"%.2f\"%s points=\"",
+                colour, width, extra);
+}
+
+static void point(view *v, const double p[3])
+{
+    double x, y;
+    project(v, p, &x, &y);
+    if (!isfinite(x) || !isfinite(y))
+        return;
+    if (!v->emitting) {
+        v->box[0] = fmin(v->box[0], x);
+        v->box[1] = fmin(v->box[1], y);
+        v->box[2] = fmax(v->box[2], x);
+        v->box[3] = fmax(v->box[3], y);
+        return;
+    }
+    fprintf(v->f, "%s%.2f,%.2f", v->open_points ? " " : "", v->ox + v->scale * x,
+            v->oy - v->scale * y);
+    ++v->open_points;
+}
+
+static void end_line(view *v)
+{
+    if (v->emitting)
+        fputs("\"/>\n", v->f);
+}
+
+static void draw_surface(projcurve_context *ctx, view *v, const projcurve_surface *s)
+{
+    double d[4];
+    if (projcurve_surface_domain(ctx, s, d) != PROJCURVE_OK)
+        return;
+    for (int dir = 0; dir < 2; ++dir)
+        for (int i = 0; i < ISO_LINES; ++i) {
+            const double a = (double)i / (ISO_LINES - 1);
+            begin_line(v, "#9aa5b1", 0.6, "");
+            for (int k = 0; k < ISO_SAMPLES; ++k) {
+                const double b = (double)k / (ISO_SAMPLES - 1);
+                const double u = d[0] + (d[1] - d[0]) * (dir ? b : a);
+                const double w = d[2] + (d[3] - d[2]) * (dir ? a : b);
+                double p[3];
+                if (projcurve_surface_eval(ctx, s, u, w, 0, p) == PROJCURVE_OK)
+                    point(v, p);
+            }
+            end_line(v);
+        }
+}
+
+static void draw_curve(projcurve_context *ctx, view *v, const projcurve_curve *c,
+                       const char *colour, double width)
+{
+    double t0, t1;
+    if (projcurve_curve_domain(ctx, c, &t0, &t1) != PROJCURVE_OK)
+        return;
+    begin_line(v, colour, width, " stroke-linejoin=\"round\"");
+    for (int k = 0; k < CURVE_SAMPLES; ++k) {
+        double p[3];
+        if (projcurve_curve_eval(ctx, c, t0 + (t1 - t0) * k / (CURVE_SAMPLES - 1), 0, p) ==
+            PROJCURVE_OK)
+            point(v, p);
+    }
+    end_line(v);
+}
+
+/* The traced (t, u, v) points of a branch (malloc'ed), or NULL. */
+static double *branch_points(projcurve_context *ctx, const projcurve_result *r, size_t b,
+                             size_t *n)
+{
+    double probe[3];
+    *n = 0;
+    if (projcurve_result_branch_points(ctx, r, b, 0, probe, n) != PROJCURVE_OK || *n == 0)
+        return NULL;
+    double *tuv = malloc(3 * *n * sizeof *tuv);
+    if (tuv && projcurve_result_branch_points(ctx, r, b, *n, tuv, n) != PROJCURVE_OK) {
+        free(tuv);
+        return NULL;
+    }
+    return tuv;
+}
+
+static void draw_branch(projcurve_context *ctx, view *v, const cli_job *job, const cli_pair *p,
+                        size_t b, const char *colour)
+{
+    projcurve_curve *c = NULL;
+    if (projcurve_result_branch_curve(ctx, p->result, b, &c) == PROJCURVE_OK) {
+        draw_curve(ctx, v, c, colour, 2.4);
+        projcurve_curve_destroy(c);
+        return;
+    }
+    size_t n;
+    double *tuv = branch_points(ctx, p->result, b, &n);
+    if (tuv == NULL)
+        return;
+    begin_line(v, colour, 2.4, "");
+    for (size_t i = 0; i < n; ++i) {
+        double q[3];
+        if (projcurve_surface_eval(ctx, job->surfaces[p->surface], tuv[3 * i + 1], tuv[3 * i + 2],
+                                   0, q) == PROJCURVE_OK)
+            point(v, q);
+    }
+    end_line(v);
+    free(tuv);
+}
+
+/* A few segments P(t) -> S(u, v), spread over the pair's branches. */
+static void draw_rays(projcurve_context *ctx, view *v, const cli_job *job, const cli_pair *p)
+{
+    const size_t nb = projcurve_result_branch_count(p->result);
+    for (size_t b = 0; b < nb; ++b) {
+        size_t n;
+        double *tuv = branch_points(ctx, p->result, b, &n);
+        if (tuv == NULL)
+            continue;
+        const size_t rays = RAYS_PER_PAIR / nb + 1;
+        const double t_first = tuv[0], t_last = tuv[3 * (n - 1)];
+        for (size_t r = 0; r < rays; ++r) {
+            /* the traced point nearest to evenly spread curve parameters */
+            const double t = t_first + (t_last - t_first) * ((double)r + 0.5) / (double)rays;
+            size_t i = 0;
+            for (size_t j = 1; j < n; ++j)
+                if (fabs(tuv[3 * j] - t) < fabs(tuv[3 * i] - t))
+                    i = j;
+            double a[3], q[3];
+            if (projcurve_curve_eval(ctx, job->curves[p->curve], tuv[3 * i], 0, a) !=
+                    PROJCURVE_OK ||
+                projcurve_surface_eval(ctx, job->surfaces[p->surface], tuv[3 * i + 1],
+                                       tuv[3 * i + 2], 0, q) != PROJCURVE_OK)
+                continue;
+            begin_line(v, "#666666", 0.8, " stroke-dasharray=\"4 3\"");
+            point(v, a);
+            point(v, q);
+            end_line(v);
+        }
+        free(tuv);
+    }
+}
+
+static void draw_scene(projcurve_context *ctx, view *v, const cli_job *job)
+{
+    const size_t ns = job->n_surfaces < MAX_SURFACES_DRAWN ? job->n_surfaces : MAX_SURFACES_DRAWN;
+    for (size_t s = 0; s < ns; ++s)
+        draw_surface(ctx, v, job->surfaces[s]);
+    for (size_t i = 0; i < job->n_pairs; ++i)
+        if (job->pairs[i].result)
+            draw_rays(ctx, v, job, &job->pairs[i]);
+    for (size_t c = 0; c < job->n_curves; ++c)
+        draw_curve(ctx, v, job->curves[c], "#222222", 1.6);
+    size_t k = 0;
+    for (size_t i = 0; i < job->n_pairs; ++i) {
+        const cli_pair *p = &job->pairs[i];
+        for (size_t b = 0; b < projcurve_result_branch_count(p->result); ++b, ++k)
+            draw_branch(ctx, v, job, p, b, palette[k % PALETTE_SIZE]);
+    }
+}
+
+static void uv_panel(projcurve_context *ctx, FILE *f, const cli_job *job)
+{
+    fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"#f7f7f7\" "
+               "stroke=\"#333333\" stroke-width=\"1\"/>\n",
+            UV_X0, UV_Y0, UV_SIZE, UV_SIZE);
+    for (int i = 1; i < ISO_LINES - 1; ++i) {
+        const double a = UV_SIZE * i / (ISO_LINES - 1);
+        fprintf(f,
+                "<path d=\"M%.1f %.1fV%.1fM%.1f %.1fH%.1f\" stroke=\"#dddddd\" "
+                "stroke-width=\"0.6\" fill=\"none\"/>\n",
+                UV_X0 + a, UV_Y0, UV_Y0 + UV_SIZE, UV_X0, UV_Y0 + a, UV_X0 + UV_SIZE);
+    }
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"14\" text-anchor=\"middle\">u</text>\n",
+            UV_X0 + UV_SIZE / 2, UV_Y0 + UV_SIZE + 22);
+    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"14\">v</text>\n", UV_X0 - 16,
+            UV_Y0 + UV_SIZE / 2);
+    size_t k = 0;
+    for (size_t i = 0; i < job->n_pairs; ++i) {
+        const cli_pair *p = &job->pairs[i];
+        double d[4];
+        if (projcurve_surface_domain(ctx, job->surfaces[p->surface], d) != PROJCURVE_OK)
+            continue;
+        for (size_t b = 0; b < projcurve_result_branch_count(p->result); ++b, ++k) {
+            size_t n;
+            double *tuv = branch_points(ctx, p->result, b, &n);
+            if (tuv == NULL)
+                continue;
+            fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"",
+                    palette[k % PALETTE_SIZE]);
+            for (size_t j = 0; j < n; ++j) {
+                const double x = (tuv[3 * j + 1] - d[0]) / (d[1] - d[0]);
+                const double y = (tuv[3 * j + 2] - d[2]) / (d[3] - d[2]);
+                fprintf(f, "%s%.2f,%.2f", j ? " " : "", UV_X0 + UV_SIZE * x,
+                        UV_Y0 + UV_SIZE * (1.0 - y));
+            }
+            fputs("\"/>\n", f);
+            free(tuv);
+        }
+    }
+}
+
+static void escaped(FILE *f, const char *s)
+{
+    for (; *s; ++s) {
+        switch (*s) {
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '&': fputs("&amp;", f); break;
+        case '"': fputs("&quot;", f); break;
+        default:
+            if ((unsigned char)*s >= 32 && (unsigned char)*s < 127)
+                fputc(*s, f);
+        }
+    }
+}
+
+static void legend(projcurve_context *ctx, FILE *f, const cli_job *job)
+{
+    size_t k = 0;
+    double y = VIEW_Y1 + 24;
+    for (size_t i = 0; i < job->n_pairs && y < SVG_HEIGHT - 8; ++i) {
+        const cli_pair *p = &job->pairs[i];
+        for (size_t b = 0; b < projcurve_result_branch_count(p->result) && y < SVG_HEIGHT - 8;
+             ++b, ++k, y += 16) {
+            projcurve_branch_start s = PROJCURVE_START_CURVE_START;
+            projcurve_branch_end e = PROJCURVE_END_CURVE_END;
+            projcurve_result_branch_info(ctx, p->result, b, NULL, &s, &e, NULL, NULL);
+            fprintf(f,
+                    "<rect x=\"%.1f\" y=\"%.1f\" width=\"18\" height=\"4\" fill=\"%s\"/>"
+                    "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">branch %zu: curve %zu on "
+                    "surface %zu, %s to %s</text>\n",
+                    VIEW_X0, y - 4, palette[k % PALETTE_SIZE], VIEW_X0 + 24, y, k, p->curve,
+                    p->surface, cli_start_name(s), cli_end_name(e));
+        }
+    }
+    if (k == 0)
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">no branch: the curve does not "
+                   "project onto the surface</text>\n",
+                VIEW_X0, VIEW_Y1 + 24);
+}
+
+int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title, const char *path)
+{
+    FILE *f = fopen(path, "w");
+    if (f == NULL) {
+        fprintf(stderr, "projcurve: cannot create %s\n", path);
+        return 0;
+    }
+    const double az = AZIMUTH_DEG * DEG_TO_RAD, el = ELEVATION_DEG * DEG_TO_RAD;
+    view v = {.right = {-sin(az), cos(az), 0.0},
+              .up = {-sin(el) * cos(az), -sin(el) * sin(az), cos(el)},
+              .box = {INFINITY, INFINITY, -INFINITY, -INFINITY},
+              .f = f};
+    draw_scene(ctx, &v, job); /* measure */
+    const double w = v.box[2] - v.box[0], h = v.box[3] - v.box[1];
+    v.scale = (w > 0.0 || h > 0.0) ? fmin((VIEW_X1 - VIEW_X0) / fmax(w, 1e-300),
+                                          (VIEW_Y1 - VIEW_Y0) / fmax(h, 1e-300))
+                                   : 1.0;
+    if (!isfinite(v.scale))
+        v.scale = 1.0;
+    v.ox = (VIEW_X0 + VIEW_X1) / 2 - v.scale * (v.box[0] + v.box[2]) / 2;
+    v.oy = (VIEW_Y0 + VIEW_Y1) / 2 + v.scale * (v.box[1] + v.box[3]) / 2;
+    if (!isfinite(v.ox) || !isfinite(v.oy))
+        v.ox = v.oy = 0.0;
+    fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"%.0f\" "
+               "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n<title>",
+            SVG_WIDTH, SVG_HEIGHT, SVG_WIDTH, SVG_HEIGHT);
+    escaped(f, title);
+    fprintf(f, "</title>\n<rect width=\"100%%\" height=\"100%%\" fill=\"#ffffff\"/>\n"
+               "<text x=\"%.1f\" y=\"30\" font-size=\"18\">",
+            VIEW_X0);
+    escaped(f, title);
+    fprintf(f, "</text>\n<text x=\"%.1f\" y=\"%.1f\" font-size=\"13\">parameter domain (u, v)"
+               "</text>\n",
+            UV_X0, UV_Y0 - 12);
+    v.emitting = 1;
+    draw_scene(ctx, &v, job);
+    uv_panel(ctx, f, job);
+    legend(ctx, f, job);
+    fputs("</svg>\n", f);
+    const int ok = fclose(f) == 0;
+    if (!ok)
+        fprintf(stderr, "projcurve: error writing %s\n", path);
+    return ok;
+}

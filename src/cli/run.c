@@ -1,0 +1,148 @@
+#include <math.h>
+#include <stdlib.h>
+
+#include "cli.h"
+
+int cli_run(projcurve_context *ctx, cli_job *job)
+{
+    job->n_pairs = job->n_surfaces * job->n_curves;
+    job->pairs = calloc(job->n_pairs ? job->n_pairs : 1, sizeof *job->pairs);
+    if (job->pairs == NULL)
+        return 0;
+    job->time_ms = 0.0;
+    job->failures = 0;
+    size_t k = 0;
+    for (size_t c = 0; c < job->n_curves; ++c)
+        for (size_t s = 0; s < job->n_surfaces; ++s, ++k) {
+            cli_pair *p = &job->pairs[k];
+            p->surface = s;
+            p->curve = c;
+            const double t0 = cli_now_ms();
+            p->status = job->orthogonal
+                            ? projcurve_project_orthogonal(ctx, job->surfaces[s], job->curves[c],
+                                                           job->opts, &p->result)
+                            : projcurve_project_directional(ctx, job->surfaces[s],
+                                                            job->curves[c], job->dir, job->opts,
+                                                            &p->result);
+            job->time_ms += cli_now_ms() - t0;
+            if (p->status != PROJCURVE_OK) {
+                fprintf(stderr, "projcurve: curve %zu onto surface %zu: %s: %s\n", c, s,
+                        projcurve_status_string(p->status), projcurve_context_message(ctx));
+                /* A partial result (size limit) is kept and reported. */
+                if (p->status != PROJCURVE_ERR_LIMIT_REACHED)
+                    p->result = NULL;
+                ++job->failures;
+            }
+        }
+    return 1;
+}
+
+void cli_job_free(cli_job *job)
+{
+    for (size_t i = 0; i < job->n_pairs; ++i)
+        projcurve_result_destroy(job->pairs[i].result);
+    free(job->pairs);
+    job->pairs = NULL;
+    job->n_pairs = 0;
+}
+
+static double norm3(const double v[3])
+{
+    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* The violation of the projection condition at one traced point. */
+static double residual_at(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
+                          const double tuv[3])
+{
+    double s[9], p[3];
+    if (projcurve_surface_eval(ctx, job->surfaces[pair->surface], tuv[1], tuv[2], 1, s) !=
+            PROJCURVE_OK ||
+        projcurve_curve_eval(ctx, job->curves[pair->curve], tuv[0], 0, p) != PROJCURVE_OK)
+        return INFINITY;
+    const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
+    double c[3];
+    if (!job->orthogonal) {
+        /* distance of S from the line P + lambda Dir */
+        cross3(d, job->dir, c);
+        return norm3(c) / norm3(job->dir);
+    }
+    /* tangential part of S - P: its components along Su and Sv */
+    double n[3];
+    cross3(s + 3, s + 6, n);
+    const double nn = norm3(n);
+    if (!(nn > 0.0))
+        return INFINITY;
+    const double dn = (d[0] * n[0] + d[1] * n[1] + d[2] * n[2]) / (nn * nn);
+    const double tang[3] = {d[0] - dn * n[0], d[1] - dn * n[1], d[2] - dn * n[2]};
+    return norm3(tang);
+}
+
+void cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
+                        size_t branch, cli_branch_quality *q)
+{
+    q->residual = 0.0;
+    q->deviation = -1.0;
+    size_t n = 0;
+    double probe[3];
+    if (projcurve_result_branch_points(ctx, pair->result, branch, 0, probe, &n) != PROJCURVE_OK ||
+        n == 0)
+        return;
+    double *tuv = malloc(3 * n * sizeof *tuv);
+    if (tuv == NULL)
+        return;
+    projcurve_curve *composed = NULL;
+    if (projcurve_result_branch_curve(ctx, pair->result, branch, &composed) == PROJCURVE_OK)
+        q->deviation = 0.0;
+    size_t got = 0;
+    if (projcurve_result_branch_points(ctx, pair->result, branch, n, tuv, &got) == PROJCURVE_OK) {
+        double t0 = 0.0, t1 = 0.0;
+        if (composed)
+            projcurve_curve_domain(ctx, composed, &t0, &t1);
+        for (size_t i = 0; i < got; ++i) {
+            const double *v = tuv + 3 * i;
+            q->residual = fmax(q->residual, residual_at(ctx, job, pair, v));
+            double s[3], c[3];
+            if (composed && v[0] >= t0 && v[0] <= t1 &&
+                projcurve_surface_eval(ctx, job->surfaces[pair->surface], v[1], v[2], 0, s) ==
+                    PROJCURVE_OK &&
+                projcurve_curve_eval(ctx, composed, v[0], 0, c) == PROJCURVE_OK) {
+                const double d[3] = {s[0] - c[0], s[1] - c[1], s[2] - c[2]};
+                q->deviation = fmax(q->deviation, norm3(d));
+            }
+        }
+    }
+    projcurve_curve_destroy(composed);
+    free(tuv);
+}
+
+const char *cli_start_name(projcurve_branch_start s)
+{
+    switch (s) {
+    case PROJCURVE_START_CURVE_START: return "curve_start";
+    case PROJCURVE_START_JUMP: return "jump";
+    case PROJCURVE_START_BOUNDARY: return "boundary";
+    case PROJCURVE_START_SILHOUETTE: return "silhouette";
+    }
+    return "unknown";
+}
+
+const char *cli_end_name(projcurve_branch_end e)
+{
+    switch (e) {
+    case PROJCURVE_END_CURVE_END: return "curve_end";
+    case PROJCURVE_END_BOUNDARY: return "boundary";
+    case PROJCURVE_END_SILHOUETTE: return "silhouette";
+    case PROJCURVE_END_CURVATURE_CENTRE: return "curvature_centre";
+    case PROJCURVE_END_LIMIT: return "limit";
+    case PROJCURVE_END_FAILED: return "failed";
+    }
+    return "unknown";
+}
