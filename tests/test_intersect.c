@@ -419,6 +419,65 @@ static void test_far_sphere(void)
     projcurve_surface_destroy(s);
 }
 
+/* A cone x^2 + y^2 = (1 - z)^2, z in [0, 1], as a revolved segment whose top
+ * edge collapses to the apex (0, 0, 1): a line through the apex meets the
+ * cone there only, once. A "surface" that is one point is met once too. */
+static void test_cone_apex(void)
+{
+    static const double circle[9][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0},
+                                        {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
+    static const double knots_u[12] = {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1};
+    static const double knots_v[4] = {0, 0, 1, 1};
+    double ctrl[54], weights[18];
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 9; ++i) {
+            double *p = ctrl + 3 * (j * 9 + i);
+            p[0] = j == 0 ? circle[i][0] : 0.0;
+            p[1] = j == 0 ? circle[i][1] : 0.0;
+            p[2] = (double)j;
+            weights[j * 9 + i] = i % 2 ? sqrt(0.5) : 1.0;
+        }
+    projcurve_surface *s = NULL;
+    CHECK_OK(projcurve_surface_create_nurbs(NULL, 2, 1, 9, 2, ctrl, weights, knots_u, knots_v, &s));
+    pc_hit_list hits = {0};
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 8);
+    for (int k = 0; k < 300; ++k) {
+        double d[3];
+        random_direction(&rng, d);
+        const double o[3] = {-1.3 * d[0], -1.3 * d[1], 1.0 - 1.3 * d[2]};
+        const size_t n = hits_of(s, o, d, 0, &hits);
+        /* |dz| = |d_xy| puts the line on the cone: keep clear of it. */
+        if (fabs(fabs(d[2]) - hypot(d[0], d[1])) < 1e-3)
+            continue;
+        CHECK(n == 1);
+        if (n == 1) {
+            CHECK_NEAR(hits.items[0].lambda, 1.3, 1e-9);
+            CHECK_NEAR(hits.items[0].v, 1.0, 1e-12);
+            CHECK(hits.items[0].flags & PROJCURVE_HIT_BOUNDARY);
+        } else {
+            printf("  cone apex along (%.17g, %.17g, %.17g): %zu hits\n", d[0], d[1], d[2], n);
+        }
+    }
+    projcurve_surface_destroy(s);
+    /* Every control point the same: the surface is the point (1, 2, 3). */
+    for (int k = 0; k < 18; ++k) {
+        ctrl[3 * k] = 1.0;
+        ctrl[3 * k + 1] = 2.0;
+        ctrl[3 * k + 2] = 3.0;
+    }
+    if (projcurve_surface_create_nurbs(NULL, 2, 1, 9, 2, ctrl, weights, knots_u, knots_v, &s) ==
+        PROJCURVE_OK) {
+        const double o[3] = {0, 0, 0}, d[3] = {1, 2, 3}, away[3] = {1, 2, 3.5};
+        CHECK(hits_of(s, o, d, 0, &hits) == 1);
+        if (hits.count == 1)
+            CHECK_NEAR(hits.items[0].lambda, 1.0, 1e-12);
+        CHECK(hits_of(s, away, d, 0, &hits) == 0);
+        projcurve_surface_destroy(s);
+    }
+    pc_hit_list_free(&hits);
+}
+
 /* ---- torus ------------------------------------------------------------------------ */
 
 static double torus_residual(const double p[3], double big_r, double small_r)
@@ -614,6 +673,7 @@ int main(void)
     test_plane();
     test_sphere();
     test_far_sphere();
+    test_cone_apex();
     test_torus();
     test_bumpy();
     test_folded();

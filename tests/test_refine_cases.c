@@ -52,52 +52,6 @@ static size_t read_manifest(manifest_case *cases, size_t capacity)
     return n;
 }
 
-/* The exact projection along a branch: Q(t) from the oracle's corrector
- * seeded by the branch's pcurve, Q'(t) = Su u' + Sv v'. */
-typedef struct branch_exact {
-    const pc_projector *proj;
-    const pc_branch *branch;
-    int *failures; /* corrector failures, counted */
-} branch_exact;
-
-static void pcurve_guess(const pc_branch *b, double t, double uv[2])
-{
-    const double *p = b->points;
-    const size_t n = b->n_points;
-    const double dir = p[3 * (n - 1)] >= p[0] ? 1.0 : -1.0;
-    size_t lo = 0, hi = n - 1; /* bisection for the segment holding t */
-    while (hi - lo > 1) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (dir * (p[3 * mid] - t) <= 0.0)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    const double *a = p + 3 * lo, *c = p + 3 * hi;
-    const double w = c[0] != a[0] ? (t - a[0]) / (c[0] - a[0]) : 0.0;
-    uv[0] = a[1] + w * (c[1] - a[1]);
-    uv[1] = a[2] + w * (c[2] - a[2]);
-}
-
-static void exact_on_branch(const void *user, double t, pc_vec3 q[3])
-{
-    const branch_exact *e = user;
-    double uv[2];
-    pcurve_guess(e->branch, t, uv);
-    pc_proj_point pt;
-    if (!e->proj->correct(e->proj, t, uv, NULL) ||
-        !e->proj->derivatives(e->proj, t, uv[0], uv[1], &pt)) {
-        ++*e->failures;
-        q[0] = vec3(NAN, NAN, NAN);
-        return;
-    }
-    double s[18];
-    projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 1, s);
-    q[0] = vec3_load(s);
-    q[1] = vec3_add(vec3_scale(vec3_load(s + 3), pt.du), vec3_scale(vec3_load(s + 6), pt.dv));
-    q[2] = vec3(0.0, 0.0, 0.0);
-}
-
 static void check_case(const manifest_case *c, const projcurve_surface *s,
                        const projcurve_curve *curve, double rel_eps, double angle)
 {
@@ -119,30 +73,19 @@ static void check_case(const manifest_case *c, const projcurve_surface *s,
     CHECK((long)r->n_branches == c->expected_branches);
     pc_oracle_dir d;
     pc_projector proj;
-    if (c->orthogonal)
-        pc_oracle_projector_orthogonal(s, curve, &proj);
-    else
-        pc_oracle_projector(s, curve, c->dir, &d, &proj);
-    size_t pieces = 0;
-    double worst = 0.0, worst_angle = 0.0;
-    for (size_t i = 0; i < r->n_branches; ++i) {
-        const pc_branch *b = &r->branches[i];
-        CHECK(b->n_pieces > 0);
-        if (b->n_pieces == 0)
-            continue;
-        int failures = 0;
-        const branch_exact e = {&proj, b, &failures};
-        const pc_oracle_measure m = pc_oracle_measure_branch(b, exact_on_branch, &e, &s->grid);
-        CHECK(failures == 0);
-        CHECK(m.hausdorff <= rel_eps * s->size);
-        CHECK(m.max_angle <= angle * (1.0 + 1e-9));
-        CHECK(m.max_gap <= 1e-12 * s->size);
-        CHECK(m.max_end_err <= 1e-9 * s->size);
-        CHECK(m.off_patch == 0);
-        pieces += b->n_pieces;
-        worst = fmax(worst, m.hausdorff / (rel_eps * s->size));
-        worst_angle = fmax(worst_angle, m.max_angle);
-    }
+    pc_oracle_projector(s, curve, c->dir, &d, &proj);
+    pc_oracle_summary sum;
+    pc_oracle_measure_result(r, &proj, &s->grid, &sum);
+    CHECK(sum.branches_without_pieces == 0);
+    CHECK(sum.failures == 0);
+    CHECK(sum.worst.hausdorff <= rel_eps * s->size);
+    CHECK(sum.worst.max_angle <= angle * (1.0 + 1e-9));
+    CHECK(sum.worst.max_gap <= 1e-12 * s->size);
+    CHECK(sum.worst.max_end_err <= 1e-9 * s->size);
+    CHECK(sum.worst.off_patch == 0);
+    const size_t pieces = sum.pieces;
+    const double worst = sum.worst.hausdorff / (rel_eps * s->size);
+    const double worst_angle = sum.worst.max_angle;
     printf("%-28s eps_D %.0e eps_T %4.1f: %zu branches, %5zu pieces, Hausdorff %.2f eps_D, "
            "joints <= %.3f deg\n",
            c->name, rel_eps, angle, r->n_branches, pieces, worst, worst_angle);

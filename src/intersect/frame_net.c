@@ -60,8 +60,10 @@ static PC_ALWAYS_INLINE void bernstein_with_derivative(int n, double x, double *
     b[n] = saved;
 }
 
-static PC_ALWAYS_INLINE void eval_net(const double *q, int m, int n, double s, double t,
-                                     double d[4], double ds[4], double dt[4])
+/* The first `channels` coordinates (2: X, Y; 4: all) of the net at (s, t)
+ * and their partial derivatives. */
+static PC_ALWAYS_INLINE void eval_net(const double *q, int m, int n, int channels, double s,
+                                     double t, double *d, double *ds, double *dt)
 {
     double bu[PROJCURVE_MAX_DEGREE + 1], dbu[PROJCURVE_MAX_DEGREE + 1];
     double bv[PROJCURVE_MAX_DEGREE + 1], dbv[PROJCURVE_MAX_DEGREE + 1];
@@ -72,18 +74,18 @@ static PC_ALWAYS_INLINE void eval_net(const double *q, int m, int n, double s, d
         const double *row = q + 4 * (size_t)j * (size_t)(m + 1);
         double r[4] = {0, 0, 0, 0}, rs[4] = {0, 0, 0, 0};
         for (int i = 0; i <= m; ++i) {
-            for (int c = 0; c < 4; ++c) {
+            for (int c = 0; c < channels; ++c) {
                 r[c] += bu[i] * row[4 * i + c];
                 rs[c] += dbu[i] * row[4 * i + c];
             }
         }
-        for (int c = 0; c < 4; ++c) {
+        for (int c = 0; c < channels; ++c) {
             acc[c] += bv[j] * r[c];
             acc_s[c] += bv[j] * rs[c];
             acc_t[c] += dbv[j] * r[c];
         }
     }
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 0; c < channels; ++c) {
         d[c] = acc[c];
         if (ds) ds[c] = acc_s[c];
         if (dt) dt[c] = acc_t[c];
@@ -95,11 +97,24 @@ void pc_frame_net_eval(const pc_frame_net *net, double s, double t, double d[4],
 {
     const int m = net->deg_u, n = net->deg_v;
     if (m == 3 && n == 3)
-        eval_net(net->q, 3, 3, s, t, d, ds, dt);
+        eval_net(net->q, 3, 3, 4, s, t, d, ds, dt);
     else if (m == 2 && n == 2)
-        eval_net(net->q, 2, 2, s, t, d, ds, dt);
+        eval_net(net->q, 2, 2, 4, s, t, d, ds, dt);
     else
-        eval_net(net->q, m, n, s, t, d, ds, dt);
+        eval_net(net->q, m, n, 4, s, t, d, ds, dt);
+}
+
+/* (X, Y) and their derivatives only: what Newton and least squares need. */
+static void eval_xy(const pc_frame_net *net, double s, double t, double d[2], double ds[2],
+                    double dt[2])
+{
+    const int m = net->deg_u, n = net->deg_v;
+    if (m == 3 && n == 3)
+        eval_net(net->q, 3, 3, 2, s, t, d, ds, dt);
+    else if (m == 2 && n == 2)
+        eval_net(net->q, 2, 2, 2, s, t, d, ds, dt);
+    else
+        eval_net(net->q, m, n, 2, s, t, d, ds, dt);
 }
 
 void pc_frame_net_point(const pc_frame_net *net, double s, double t, pc_frame_root *out)
@@ -127,55 +142,62 @@ void pc_frame_net_point(const pc_frame_net *net, double s, double t, pc_frame_ro
     out->cos_dir = nn > 0.0 ? fabs(normal.z) / nn : 0.0;
 }
 
-/* Largest |a - 2 b + c| (a planar norm) over consecutive triples, or of
- * |a - b - c + d| over the cells, of the (X, Y) values of the net. */
-static double second_difference(const pc_frame_net *net, int di, int dj, int ei, int ej)
+static inline double max2(double a, double b) { return a > b ? a : b; }
+
+/* Squared planar length of a - b (first two coordinates). */
+static inline double diff2(const double *a, const double *b)
 {
-    const int m = net->deg_u, n = net->deg_v;
-    double best = 0.0;
-    for (int j = 0; j + dj + ej <= n; ++j) {
-        for (int i = 0; i + di + ei <= m; ++i) {
-            const double *a = net->q + 4 * ((size_t)j * (size_t)(m + 1) + (size_t)i);
-            const double *b = a + 4 * (di + dj * (m + 1));
-            const double *c = a + 4 * (ei + ej * (m + 1));
-            const double *d = a + 4 * (di + ei + (dj + ej) * (m + 1));
-            const double x = d[0] - b[0] - c[0] + a[0], y = d[1] - b[1] - c[1] + a[1];
-            const double len = sqrt(x * x + y * y);
-            if (len > best)
-                best = len;
-        }
-    }
-    return best;
+    const double x = a[0] - b[0], y = a[1] - b[1];
+    return x * x + y * y;
 }
 
-/* Largest |b - a| over neighbours (i, j), (i + di, j + dj) of the net. */
-static double first_difference(const pc_frame_net *net, int di, int dj)
+static PC_ALWAYS_INLINE void jacobian_bounds(const pc_frame_net *net, int m, int n,
+                                            double *lipschitz, double *jac_max)
 {
-    const int m = net->deg_u, n = net->deg_v;
-    double best = 0.0;
-    for (int j = 0; j + dj <= n; ++j) {
-        for (int i = 0; i + di <= m; ++i) {
-            const double *a = net->q + 4 * ((size_t)j * (size_t)(m + 1) + (size_t)i);
-            const double *b = a + 4 * (di + dj * (m + 1));
-            const double x = b[0] - a[0], y = b[1] - a[1];
-            const double len = sqrt(x * x + y * y);
-            if (len > best)
-                best = len;
+    const size_t row = (size_t)(m + 1);
+    /* Largest squared first differences (s, t) and second differences (ss,
+     * st, tt) of the (X, Y) net, in one pass. */
+    double s1 = 0.0, t1 = 0.0, ss = 0.0, st = 0.0, tt = 0.0;
+    for (int j = 0; j <= n; ++j) {
+        for (int i = 0; i <= m; ++i) {
+            const double *a = net->q + 4 * ((size_t)j * row + (size_t)i);
+            if (i < m)
+                s1 = max2(s1, diff2(a + 4, a));
+            if (j < n)
+                t1 = max2(t1, diff2(a + 4 * row, a));
+            if (i + 1 < m) {
+                const double x = a[8] - 2.0 * a[4] + a[0], y = a[9] - 2.0 * a[5] + a[1];
+                ss = max2(ss, x * x + y * y);
+            }
+            if (j + 1 < n) {
+                const double *b = a + 4 * row, *c = a + 8 * row;
+                const double x = c[0] - 2.0 * b[0] + a[0], y = c[1] - 2.0 * b[1] + a[1];
+                tt = max2(tt, x * x + y * y);
+            }
+            if (i < m && j < n) {
+                const double *b = a + 4, *c = a + 4 * row, *d = a + 4 * row + 4;
+                const double x = d[0] - b[0] - c[0] + a[0], y = d[1] - b[1] - c[1] + a[1];
+                st = max2(st, x * x + y * y);
+            }
         }
     }
-    return best;
+    /* Derivative bounds: |Q_s| <= m max|D_s Q|, |Q_ss| <= m (m - 1) max|D_ss Q|,
+     * |Q_st| <= m n max|D_st Q|, ... (hull of the hodograph nets). */
+    const double qss = m * (m - 1) * sqrt(ss), qst = m * n * sqrt(st), qtt = n * (n - 1) * sqrt(tt);
+    *lipschitz = sqrt(qss * qss + 2.0 * qst * qst + qtt * qtt);
+    const double qs = m * sqrt(s1), qt = n * sqrt(t1);
+    *jac_max = sqrt(qs * qs + qt * qt);
 }
 
 void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, double *jac_max)
 {
     const int m = net->deg_u, n = net->deg_v;
-    /* Q_ss from steps (1,0),(1,0); Q_st from (1,0),(0,1); Q_tt from (0,1),(0,1). */
-    const double ss = m >= 2 ? m * (m - 1) * second_difference(net, 1, 0, 1, 0) : 0.0;
-    const double st = m * n * second_difference(net, 1, 0, 0, 1);
-    const double tt = n >= 2 ? n * (n - 1) * second_difference(net, 0, 1, 0, 1) : 0.0;
-    *lipschitz = sqrt(ss * ss + 2.0 * st * st + tt * tt);
-    const double qs = m * first_difference(net, 1, 0), qt = n * first_difference(net, 0, 1);
-    *jac_max = sqrt(qs * qs + qt * qt);
+    if (m == 3 && n == 3)
+        jacobian_bounds(net, 3, 3, lipschitz, jac_max);
+    else if (m == 2 && n == 2)
+        jacobian_bounds(net, 2, 2, lipschitz, jac_max);
+    else
+        jacobian_bounds(net, m, n, lipschitz, jac_max);
 }
 
 /* Whether the n + 1 control points from q with the given stride (in
@@ -187,6 +209,21 @@ static int edge_is_pole_on_line(const double *q, size_t stride, int n, double to
         return 0;
     for (int k = 1; k <= n; ++k) {
         const double *p = q + 4 * (size_t)k * stride;
+        const double dx = p[0] / p[3] - x0, dy = p[1] / p[3] - y0, dz = p[2] / p[3] - z0;
+        if (!(sqrt(dx * dx + dy * dy + dz * dz) <= tol))
+            return 0;
+    }
+    return 1;
+}
+
+/* Whether the np control points coincide within tol. */
+int pc_frame_net_is_point(const pc_frame_net *net, double tol)
+{
+    const size_t np = (size_t)(net->deg_u + 1) * (size_t)(net->deg_v + 1);
+    const double *q = net->q;
+    const double x0 = q[0] / q[3], y0 = q[1] / q[3], z0 = q[2] / q[3];
+    for (size_t k = 1; k < np; ++k) {
+        const double *p = q + 4 * k;
         const double dx = p[0] / p[3] - x0, dy = p[1] / p[3] - y0, dz = p[2] / p[3] - z0;
         if (!(sqrt(dx * dx + dy * dy + dz * dz) <= tol))
             return 0;
@@ -214,8 +251,8 @@ int pc_frame_net_newton(const pc_frame_net *net, double s, double t, pc_frame_ro
 {
     int converged = 0;
     for (int it = 0; it < PC_NEWTON_MAX_ITER; ++it) {
-        double d[4], ds[4], dt[4];
-        pc_frame_net_eval(net, s, t, d, ds, dt);
+        double d[2], ds[2], dt[2];
+        eval_xy(net, s, t, d, ds, dt);
         /* The zeros of (X, Y) = W (d1, d2) are those of (d1, d2) since W > 0;
          * at a zero, the Jacobian of (X, Y) is W times that of (d1, d2). */
         const double rhs[2] = {-d[0], -d[1]};

@@ -44,6 +44,10 @@ void pc_frame_net_jacobian_bounds(const pc_frame_net *net, double *lipschitz, do
  * line (X = Y = 0). */
 unsigned pc_frame_net_poles_on_line(const pc_frame_net *net, double tol);
 
+/* Whether all control points coincide within tol (a patch that is one
+ * point). */
+int pc_frame_net_is_point(const pc_frame_net *net, double tol);
+
 /* Newton on (X, Y) = 0 from (s, t). Returns 1 when the step fell below the
  * step tolerance within the iteration bound, 0 when the Jacobian was
  * singular, the iterate left the patch or the bound was hit; out holds the

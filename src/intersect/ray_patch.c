@@ -286,7 +286,8 @@ static projcurve_status clip_patch(const patch_search *ps, double *slots)
     if (pole_status != PROJCURVE_OK)
         return pole_status;
     if (poles != 0) {
-        if (!(boxes[0][0] < boxes[0][1] && boxes[0][2] < boxes[0][3]))
+        if (!(boxes[0][0] < boxes[0][1] && boxes[0][2] < boxes[0][3]) ||
+            pc_frame_net_is_point(&ps->net, ps->frame->tol_residual))
             return PROJCURVE_OK; /* the whole patch collapses to the pole */
         pc_bezier_clip_restrict(slots, m, n, boxes[0]);
     }

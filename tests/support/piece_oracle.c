@@ -353,3 +353,70 @@ pc_oracle_measure pc_oracle_measure_branch(const pc_branch *b, pc_oracle_exact_f
     return m;
 }
 
+
+/* The exact projection along a branch: Q(t) from the oracle's corrector
+ * seeded by the branch's pcurve, Q'(t) = Su u' + Sv v'. */
+typedef struct branch_exact {
+    const pc_projector *proj;
+    const pc_branch *branch;
+    int *failures; /* corrector failures, counted */
+} branch_exact;
+
+static void pcurve_guess(const pc_branch *b, double t, double uv[2])
+{
+    const double *p = b->points;
+    const size_t n = b->n_points;
+    const double dir = p[3 * (n - 1)] >= p[0] ? 1.0 : -1.0;
+    size_t lo = 0, hi = n - 1; /* bisection for the segment holding t */
+    while (hi - lo > 1) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (dir * (p[3 * mid] - t) <= 0.0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    const double *a = p + 3 * lo, *c = p + 3 * hi;
+    const double w = c[0] != a[0] ? (t - a[0]) / (c[0] - a[0]) : 0.0;
+    uv[0] = a[1] + w * (c[1] - a[1]);
+    uv[1] = a[2] + w * (c[2] - a[2]);
+}
+
+static void exact_on_branch(const void *user, double t, pc_vec3 q[3])
+{
+    const branch_exact *e = user;
+    double uv[2];
+    pcurve_guess(e->branch, t, uv);
+    pc_proj_point pt;
+    if (!e->proj->correct(e->proj, t, uv, NULL) ||
+        !e->proj->derivatives(e->proj, t, uv[0], uv[1], &pt)) {
+        ++*e->failures;
+        q[0] = vec3(NAN, NAN, NAN);
+        return;
+    }
+    double s[18];
+    projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 1, s);
+    q[0] = vec3_load(s);
+    q[1] = vec3_add(vec3_scale(vec3_load(s + 3), pt.du), vec3_scale(vec3_load(s + 6), pt.dv));
+    q[2] = vec3(0.0, 0.0, 0.0);
+}
+
+void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *proj,
+                              const pc_patch_grid *grid, pc_oracle_summary *out)
+{
+    memset(out, 0, sizeof *out);
+    for (size_t i = 0; i < r->n_branches; ++i) {
+        const pc_branch *b = &r->branches[i];
+        if (b->n_pieces == 0) {
+            ++out->branches_without_pieces;
+            continue;
+        }
+        const branch_exact e = {proj, b, &out->failures};
+        const pc_oracle_measure m = pc_oracle_measure_branch(b, exact_on_branch, &e, grid);
+        out->worst.hausdorff = fmax(out->worst.hausdorff, m.hausdorff);
+        out->worst.max_angle = fmax(out->worst.max_angle, m.max_angle);
+        out->worst.max_gap = fmax(out->worst.max_gap, m.max_gap);
+        out->worst.max_end_err = fmax(out->worst.max_end_err, m.max_end_err);
+        out->worst.off_patch += m.off_patch;
+        out->pieces += b->n_pieces;
+    }
+}

@@ -47,6 +47,21 @@ typedef struct pc_oracle_measure {
 pc_oracle_measure pc_oracle_measure_branch(const pc_branch *b, pc_oracle_exact_fn exact,
                                            const void *user, const pc_patch_grid *grid);
 
+/* Every branch of a result measured against the projection that the oracle
+ * projector proj defines: the exact point at t is proj's own Newton solution
+ * started from the branch's pcurve, Q' = Su u' + Sv v' from its q'.
+ * `worst` holds the largest of each measure over the branches (off_patch:
+ * their sum); failures counts exact points the oracle could not compute. */
+typedef struct pc_oracle_summary {
+    pc_oracle_measure worst;
+    size_t pieces;
+    int failures;
+    int branches_without_pieces;
+} pc_oracle_summary;
+
+void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *proj,
+                              const pc_patch_grid *grid, pc_oracle_summary *out);
+
 /* Point (and derivative, dx may be NULL) of a piece at s by Bernstein sums. */
 void pc_oracle_piece_eval(const pc_piece *pc, double s, pc_vec3 *x, pc_vec3 *dx);
 

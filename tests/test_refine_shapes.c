@@ -1,0 +1,101 @@
+/*
+ * Tolerance control end to end on the shapes of the tracing tests
+ * (tests/support/trace_shapes): a plane seen along a slanted direction, the
+ * exact rational half cylinder, a sphere whose two branches are born and end
+ * on the silhouette (Dir tangent to S, det J -> 0), a rational bumpy sheet,
+ * the paper's Example 1 and the C-folded sheet past the tip of its bend. For
+ * eps_D = 1e-2, 1e-4, 1e-6 of the model size at eps_T = 1 degree, and 1e-3 at
+ * 10 degrees, every branch is measured by the oracles of
+ * tests/support/piece_oracle (the exact projection by the oracle's own
+ * Newton): Hausdorff distance both ways <= eps_D, joints <= eps_T, joins,
+ * piece ends on the projection, one patch per piece.
+ */
+#include <math.h>
+#include <stdio.h>
+
+#include "check.h"
+#include "piece_oracle.h"
+#include "shapes.h"
+#include "trace_shapes.h"
+
+typedef struct shape_case {
+    const char *name;
+    projcurve_surface *surface;
+    projcurve_curve *curve;
+    double dir[3];
+    size_t branches;
+} shape_case;
+
+static void run(const shape_case *c, double rel_eps, double angle)
+{
+    const projcurve_surface *s = c->surface;
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, rel_eps * s->size));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_ANGLE_DEG, angle));
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, s, c->curve, c->dir, o, &r));
+    projcurve_options_destroy(o);
+    if (r == NULL)
+        return;
+    CHECK(projcurve_result_branch_count(r) == c->branches);
+    pc_oracle_dir d;
+    pc_projector proj;
+    pc_oracle_projector(s, c->curve, c->dir, &d, &proj);
+    pc_oracle_summary sum;
+    pc_oracle_measure_result(r, &proj, &s->grid, &sum);
+    printf("%-22s eps_D %.0e eps_T %4.1f: %zu branches, %4zu pieces, Hausdorff %.2f eps_D, "
+           "joints <= %.3f deg\n",
+           c->name, rel_eps, angle, projcurve_result_branch_count(r), sum.pieces,
+           sum.worst.hausdorff / (rel_eps * s->size), sum.worst.max_angle);
+    CHECK(sum.branches_without_pieces == 0);
+    CHECK(sum.failures == 0);
+    CHECK(sum.worst.hausdorff <= rel_eps * s->size);
+    CHECK(sum.worst.max_angle <= angle * (1.0 + 1e-9));
+    CHECK(sum.worst.max_gap <= 1e-12 * s->size);
+    CHECK(sum.worst.max_end_err <= 1e-9 * s->size);
+    CHECK(sum.worst.off_patch == 0);
+    projcurve_result_destroy(r);
+}
+
+int main(void)
+{
+    const double plane_o[3] = {0, 0, 0}, plane_a[3] = {10, 0, 1}, plane_b[3] = {0, 10, 2};
+    const double plane_curve[18] = {2, 2, 30, 4, 3, 31, 5, 6, 29, 6, 4, 30, 7, 7, 32, 8, 8, 30};
+    const double cyl_curve[18] = {-25, 10, 50, -10, 30, 55, 0, 40, 45,
+                                  10, 60, 50, 20, 70, 52, 25, 90, 50};
+    const double sphere_line[6] = {-15, 3, 20, 15, 3, 20};
+    const double bumpy_curve[15] = {0.1, 0.2, 1, 0.3, 0.8, 1.2, 0.5, 0.3,
+                                    0.9, 0.7, 0.9, 1.1, 0.85, 0.6, 1};
+    const double fold_line[6] = {-10, 50, 40, 125, 50, 40};
+    pc_shape_surface bumpy = pc_shape_bumpy(2024, 5, 5, 0.15, 1);
+
+    shape_case cases[] = {
+        {"plane", shape_plane(plane_o, plane_a, plane_b), shape_bspline_curve(3, 6, plane_curve),
+         {0.05, -0.05, -1}, 1},
+        {"half cylinder", shape_half_cylinder(30.0, 100.0), shape_bspline_curve(3, 6, cyl_curve),
+         {0, 0, -1}, 1},
+        {"sphere silhouettes", shape_sphere(10.0), shape_bspline_curve(1, 2, sphere_line),
+         {0, 0, -1}, 2},
+        {"rational bumpy", pc_shape_surface_create(&bumpy), shape_bspline_curve(3, 5, bumpy_curve),
+         {0.05, 0.02, -1}, 1},
+        {"example 1", shape_example1_surface(), shape_example1_curve(), {-1, 0, 0}, 1},
+        {"c-fold past the tip", shape_c_fold(), shape_bspline_curve(1, 2, fold_line), {0, 0, -1},
+         2},
+    };
+    pc_shape_surface_free(&bumpy);
+    static const double rel_eps[] = {1e-2, 1e-4, 1e-6};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        CHECK(cases[k].surface != NULL && cases[k].curve != NULL);
+        if (cases[k].surface == NULL || cases[k].curve == NULL)
+            continue;
+        for (size_t e = 0; e < sizeof rel_eps / sizeof rel_eps[0]; ++e)
+            run(&cases[k], rel_eps[e], 1.0);
+        run(&cases[k], 1e-3, 10.0);
+    }
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
+        projcurve_surface_destroy(cases[k].surface);
+        projcurve_curve_destroy(cases[k].curve);
+    }
+    return pc_test_finish("test_refine_shapes");
+}
