@@ -222,12 +222,54 @@ static void test_surface_create(void)
     pc_shape_surface_free(&s);
 }
 
+static void test_point_projection(void)
+{
+    pc_shape_surface sh = pc_shape_bumpy(3, 2, 2, 0.2, 0);
+    projcurve_surface *s = pc_shape_surface_create(&sh);
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_nurbs(g_ctx, 3, 5, g_curve_ctrl, g_curve_w, g_curve_knots, &c));
+    const double p[3] = {0.5, 0.5, 1.0}, bad[3] = {0.5, NAN, 1.0}, inf[3] = {INFINITY, 0, 0};
+    double uv[2] = {-7, -7}, q[3], dist = -7, t = -7, feet[8];
+    size_t count = 99;
+    CHECK_FAILS(projcurve_surface_closest_point(g_ctx, NULL, p, uv, q, &dist), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_surface_closest_point(g_ctx, s, NULL, uv, q, &dist), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_surface_closest_point(g_ctx, s, p, NULL, q, &dist), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_surface_closest_point(g_ctx, s, bad, uv, q, &dist), PROJCURVE_ERR_NOT_FINITE);
+    CHECK_FAILS(projcurve_surface_closest_point(g_ctx, s, inf, uv, q, &dist), PROJCURVE_ERR_NOT_FINITE);
+    CHECK(uv[0] == -7 && dist == -7);
+    CHECK_OK(projcurve_surface_closest_point(g_ctx, s, p, uv, NULL, NULL));
+    CHECK_FAILS(projcurve_surface_foot_points(g_ctx, NULL, p, 4, feet, &count), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_surface_foot_points(g_ctx, s, p, 4, feet, NULL), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_surface_foot_points(g_ctx, s, p, 4, NULL, &count), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_surface_foot_points(g_ctx, s, bad, 4, feet, &count), PROJCURVE_ERR_NOT_FINITE);
+    CHECK(count == 99);
+    CHECK_OK(projcurve_surface_foot_points(g_ctx, s, p, 0, NULL, &count));
+    CHECK_FAILS(projcurve_curve_closest_point(g_ctx, NULL, p, &t, q, &dist), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_curve_closest_point(g_ctx, c, NULL, &t, q, &dist), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_curve_closest_point(g_ctx, c, p, NULL, q, &dist), PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_FAILS(projcurve_curve_closest_point(g_ctx, c, bad, &t, q, &dist), PROJCURVE_ERR_NOT_FINITE);
+    CHECK(t == -7);
+    projcurve_curve *cb = NULL;
+    CHECK_OK(projcurve_curve_create_callback(g_ctx, failing_cb, NULL, 0, 1, &cb));
+    CHECK_FAILS(projcurve_curve_closest_point(g_ctx, cb, p, &t, q, &dist), PROJCURVE_ERR_CALLBACK);
+    projcurve_curve_destroy(cb);
+    CHECK_OK(projcurve_curve_create_callback(g_ctx, nan_cb, NULL, 0, 1, &cb));
+    /* The NaN is in P'' only: sampling works, Newton needs P'' and fails. */
+    CHECK_FAILS(projcurve_curve_closest_point(g_ctx, cb, p, &t, q, &dist), PROJCURVE_ERR_CALLBACK);
+    CHECK(t == -7);
+    projcurve_curve_destroy(cb);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+    pc_shape_surface_free(&sh);
+}
+
 int main(void)
 {
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &g_ctx));
     test_curve_create();
     test_curve_eval();
     test_surface_create();
+    test_point_projection();
     projcurve_context_destroy(g_ctx);
     return pc_test_finish("test_geometry_bad_input");
 }

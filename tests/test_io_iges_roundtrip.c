@@ -263,6 +263,41 @@ static void result_round_trip(void)
     projcurve_surface_destroy(s);
 }
 
+/* Seed 000 Example 1 projected along (-1, 0, 0): the written branch, read
+ * back through its 142, is the composed branch curve. */
+static void projected_round_trip(void)
+{
+    projcurve_model *in = NULL;
+    if (projcurve_model_read_file(ctx, pc_test_shared_path("cases/song_yong_example1.igs"), &in) !=
+        PROJCURVE_OK)
+        return; /* the case files are checked elsewhere */
+    const double dir[3] = {-1.0, 0.0, 0.0};
+    projcurve_result *r = NULL;
+    const projcurve_surface *s = projcurve_model_surface(in, 0);
+    CHECK_OK(projcurve_project_directional(ctx, s, projcurve_model_curve(in, 0), dir, NULL, &r));
+    CHECK(projcurve_result_branch_count(r) == 1);
+    projcurve_iges_writer *w = NULL;
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    CHECK_OK(projcurve_iges_writer_write(ctx, w, path_a));
+    projcurve_iges_writer_destroy(w);
+    projcurve_model *m = read_back(path_a);
+    projcurve_curve *branch = NULL;
+    if (r != NULL && projcurve_result_branch_count(r) == 1)
+        CHECK_OK(projcurve_result_branch_curve(ctx, r, 0, &branch));
+    if (m != NULL && branch != NULL) {
+        CHECK(projcurve_model_surface_count(m) == 1);
+        CHECK(projcurve_model_curve_count(m) == 1);
+        same_surface(s, projcurve_model_surface(m, 0));
+        if (projcurve_model_curve_count(m) == 1)
+            same_curve(branch, projcurve_model_curve(m, 0));
+    }
+    projcurve_curve_destroy(branch);
+    projcurve_model_destroy(m);
+    projcurve_result_destroy(r);
+    projcurve_model_destroy(in);
+}
+
 static int call_back(void *user, double t, double out[9])
 {
     (void)user;
@@ -304,6 +339,7 @@ int main(void)
     snprintf(path_b, sizeof path_b, "%s/projcurve_rt_%ld_b.igs", tmp ? tmp : "/tmp", (long)getpid());
     surfaces_and_curves();
     result_round_trip();
+    projected_round_trip();
     misuse();
     remove(path_a);
     remove(path_b);

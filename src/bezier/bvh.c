@@ -236,3 +236,46 @@ void pc_bvh_query_sphere(const pc_bvh *bvh, pc_vec3 p, double radius, pc_bvh_vis
     const sphere_query q = {p, radius * radius};
     walk(bvh, sphere_test, &q, visit, user);
 }
+
+void pc_bvh_query_nearest(const pc_bvh *bvh, pc_vec3 p, pc_bvh_nearest_fn visit, void *user)
+{
+    if (bvh->n_nodes == 0)
+        return;
+    typedef struct pending {
+        uint32_t node;
+        double d2;
+    } pending;
+    pending stack[PC_BVH_MAX_DEPTH + 1];
+    size_t top = 0;
+    double bound = INFINITY;
+    stack[top++] = (pending){0, box_distance_sq(bvh->nodes[0].box, p)};
+    while (top > 0) {
+        const pending it = stack[--top];
+        if (!(it.d2 < bound))
+            continue;
+        const pc_bvh_node *node = &bvh->nodes[it.node];
+        if (node->count > 0) {
+            /* At most PC_BVH_LEAF_SIZE patches: visit them nearest first. */
+            pending order[PC_BVH_LEAF_SIZE];
+            uint32_t n = 0;
+            for (uint32_t k = node->first; k < node->first + node->count; ++k) {
+                const pending item = {k, box_distance_sq(bvh->boxes + 6 * (size_t)k, p)};
+                uint32_t at = n++;
+                while (at > 0 && order[at - 1].d2 > item.d2) {
+                    order[at] = order[at - 1];
+                    --at;
+                }
+                order[at] = item;
+            }
+            for (uint32_t k = 0; k < n; ++k)
+                if (order[k].d2 < bound)
+                    bound = visit(user, bvh->order[order[k].node], order[k].d2);
+            continue;
+        }
+        const pending a = {node->first, box_distance_sq(bvh->nodes[node->first].box, p)};
+        const pending b = {node->first + 1, box_distance_sq(bvh->nodes[node->first + 1].box, p)};
+        /* Push the farther child first so that the nearer one is walked first. */
+        stack[top++] = a.d2 <= b.d2 ? b : a;
+        stack[top++] = a.d2 <= b.d2 ? a : b;
+    }
+}

@@ -42,4 +42,12 @@ void pc_bvh_query_line(const pc_bvh *bvh, pc_vec3 origin, pc_vec3 dir, double la
 void pc_bvh_query_sphere(const pc_bvh *bvh, pc_vec3 p, double radius, pc_bvh_visit_fn visit,
                          void *user);
 
+/* Nearest-first walk for closest-point searches: visits patches roughly in
+ * order of the distance of their boxes from p (nearer child first), and
+ * skips every node and patch whose box is at squared distance >= the bound
+ * that the last visit returned (start: INFINITY). visit(user, patch_index,
+ * box_distance_sq) returns the new bound. */
+typedef double (*pc_bvh_nearest_fn)(void *user, size_t patch_index, double box_distance_sq);
+void pc_bvh_query_nearest(const pc_bvh *bvh, pc_vec3 p, pc_bvh_nearest_fn visit, void *user);
+
 #endif /* PC_BEZIER_BVH_H */

@@ -16,6 +16,12 @@
 /* Smallest sweep step, as a fraction of the curve's domain; it bounds the
  * number of checks. */
 #define PC_SWEEP_MIN_FRACTION 1e-7
+/* A full search every this many checks (every 2 ds), whatever the jump
+ * criteria say: they look at control polygons, which need not show a fold
+ * of the surface inside a patch, so a branch born and gone between two
+ * polygon hits would be missed; this bounds what can be missed to branches
+ * shorter than about 2 ds. */
+#define PC_SWEEP_FULL_EVERY 2
 /* Seeds closer than this fraction of the model size on S are one point. */
 #define PC_SEED_SAME 1e-9
 /* The sweep checks every this fraction of the arc-length step. */
@@ -159,10 +165,10 @@ static projcurve_status active_points(pc_tracer *tr, double t, pc_seed_list *out
     return PROJCURVE_OK;
 }
 
-/* The sweep step at t: half an arc-length step ds of the fastest branch
- * alive (speed measured on its polyline), or of the curve itself when none
- * is. Half, so that the normal motion of a ray's hits between two checks
- * stays below the ds of the jump criteria 2 and 4. */
+/* The sweep step at t: half an arc-length step ds of the fastest of the
+ * branches alive (speed measured on their polylines) and the curve itself.
+ * Half, so that the normal motion of a ray's hits between two checks stays
+ * below the ds of the jump criteria 2 and 4. */
 static double sweep_step(const pc_tracer *tr, double t)
 {
     const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
@@ -179,11 +185,11 @@ static double sweep_step(const pc_tracer *tr, double t)
         pc_nurbs_surface_eval(s, p[4], p[5], 0, NULL, NULL, &c);
         speed = fmax(speed, vec3_dist(a, c) / (p[3] - p[0]));
     }
-    if (!(speed > 0.0)) {
-        pc_vec3 d[2];
-        if (pc_curve_eval(tr->proj->curve, t, 1, NULL, d) == PROJCURVE_OK)
-            speed = vec3_norm(d[1]);
-    }
+    /* a point of the projection not traced yet moves about as fast as
+     * the curve (faster only where the surface is steep to Dir) */
+    pc_vec3 d[2];
+    if (pc_curve_eval(tr->proj->curve, t, 1, NULL, d) == PROJCURVE_OK)
+        speed = fmax(speed, vec3_norm(d[1]));
     const double span = tr->t_end - tr->t_begin;
     double dt = speed > 0.0 ? PC_SWEEP_STEP_FRACTION * tr->ds / speed : tr->max_step;
     dt = fmin(dt, tr->max_step);
@@ -257,7 +263,11 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
         st = active_points(tr, t, &active);
         if (st != PROJCURVE_OK)
             break;
-        if (finder->may_jump && !finder->may_jump(finder, t, active.items, active.count, tr->ds))
+        /* the criteria run at every check (they keep the previous ray);
+         * every PC_SWEEP_FULL_EVERY-th check searches regardless */
+        const int asked =
+            !finder->may_jump || finder->may_jump(finder, t, active.items, active.count, tr->ds);
+        if (!asked && check % PC_SWEEP_FULL_EVERY != PC_SWEEP_FULL_EVERY - 1)
             continue;
         st = finder->find(finder, tr->ctx, t, &found);
         if (st != PROJCURVE_OK)

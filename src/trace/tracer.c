@@ -117,12 +117,13 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     /* A corrector that moved far from the prediction has left for another
      * sheet of the projection: cut the step instead. */
     const double moved = norm2(uv[0] - pred[0], uv[1] - pred[1]);
-    const double floor = PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
-    if (moved > PC_TRACE_MAX_CORRECTION * stride + floor)
+    const double noise =
+        PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
+    if (moved > PC_TRACE_MAX_CORRECTION * stride + noise)
         return STEP_REJECT;
-    record_error(tr);
     if (!proj->derivatives(proj, t, uv[0], uv[1], next) || crosses_fold(cur, next))
         return STEP_REJECT;
+    record_error(tr);
     return STEP_ACCEPT;
 }
 

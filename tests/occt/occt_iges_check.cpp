@@ -1,8 +1,8 @@
 // Open CASCADE reads the IGES files libprojcurve writes.
 //
-// Writes (1) two surfaces and two curves and (2) a surface with a
+// Writes (1) two surfaces and two curves, (2) a surface with a hand-made
 // projection result (one branch: pcurve 126, 3D curve 126, curve on surface
-// 142), then loads each with IGESControl_Reader: the load must succeed, the
+// 142) and (3) the projections of two cases of ../shared/cases, then loads each with IGESControl_Reader: the load must succeed, the
 // model must hold exactly the entities written (by type), and the
 // transferred shapes must be non-null with faces/edges where expected.
 #include <IFSelect_ReturnStatus.hxx>
@@ -126,6 +126,32 @@ projcurve_result *line_result()
     return r;
 }
 
+// Projects the case's curve onto its surface along dir, writes the result
+// and checks OCCT sees a 126 pair and a 142 per branch.
+void check_case(const std::string &dir_out, const char *name, const double dir[3])
+{
+    projcurve_model *in = nullptr;
+    const std::string path = std::string("cases/") + name + ".igs";
+    if (projcurve_model_read_file(ctx, pc_test_shared_path(path.c_str()), &in) != PROJCURVE_OK) {
+        std::printf("%s not available: skipped\n", path.c_str());
+        return;
+    }
+    const projcurve_surface *s = projcurve_model_surface(in, 0);
+    projcurve_result *r = nullptr;
+    CHECK_OK(projcurve_project_directional(ctx, s, projcurve_model_curve(in, 0), dir, nullptr, &r));
+    const int branches = static_cast<int>(projcurve_result_branch_count(r));
+    CHECK(branches > 0);
+    projcurve_iges_writer *w = nullptr;
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    const std::string out = dir_out + "/occt_" + name + ".igs";
+    CHECK_OK(projcurve_iges_writer_write(ctx, w, out.c_str()));
+    projcurve_iges_writer_destroy(w);
+    check_file(out, {{128, 1}, {126, 2 * branches}, {142, branches}}, 0, branches);
+    projcurve_result_destroy(r);
+    projcurve_model_destroy(in);
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -154,6 +180,10 @@ int main(int argc, char **argv)
     // The 142 is the only root (it references the rest), so OCCT transfers
     // it as an edge on the surface; the surface is there as entity 128.
     check_file(projected, {{128, 1}, {126, 2}, {142, 1}}, 0, 1);
+
+    const double minus_x[3] = {-1.0, 0.0, 0.0}, minus_z[3] = {0.0, 0.0, -1.0};
+    check_case(dir, "song_yong_example1", minus_x);
+    check_case(dir, "fold_c_sheet_jump", minus_z);
 
     projcurve_result_destroy(r);
     projcurve_curve_destroy(c);

@@ -91,6 +91,11 @@ void trace_oracle_check(const projcurve_surface *s, const projcurve_curve *c, co
         }
         max_chord = fmax(max_chord, views[i].max_chord);
     }
+    rep->step = max_chord;
+    /* uncovered hits of the previous sample, to measure runs of them */
+    double prev_far[3 * ORACLE_MAX_HITS];
+    size_t n_prev_far = 0;
+    double run = 0.0;
     double t0, t1;
     projcurve_curve_domain(NULL, c, &t0, &t1);
     for (size_t k = 0; k < n_samples; ++k) {
@@ -103,6 +108,8 @@ void trace_oracle_check(const projcurve_surface *s, const projcurve_curve *c, co
         rep->samples++;
         if (count > ORACLE_MAX_HITS)
             count = ORACLE_MAX_HITS;
+        double far[3 * ORACLE_MAX_HITS];
+        size_t n_far = 0;
         for (size_t h = 0; h < count; ++h) {
             const double x[3] = {p[0] + hits[3 * h + 2] * d[0], p[1] + hits[3 * h + 2] * d[1],
                                  p[2] + hits[3 * h + 2] * d[2]};
@@ -127,18 +134,36 @@ void trace_oracle_check(const projcurve_surface *s, const projcurve_curve *c, co
             } else {
                 rep->uncovered_far++;
                 rep->worst_far_t = t;
+                memcpy(far + 3 * n_far++, x, sizeof x);
             }
         }
+        /* extend the run by the closest step between uncovered hits of
+         * consecutive samples, or restart it */
+        double link = INFINITY;
+        for (size_t a = 0; a < n_far; ++a)
+            for (size_t b = 0; b < n_prev_far; ++b)
+                link = fmin(link, dist3(far + 3 * a, prev_far + 3 * b));
+        run = n_far == 0 ? 0.0 : (isfinite(link) ? run + link : 0.0);
+        if (run > rep->missed_arc)
+            rep->missed_arc = run;
+        memcpy(prev_far, far, 3 * n_far * sizeof(double));
+        n_prev_far = n_far;
     }
     for (size_t i = 0; i < nb; ++i)
         free(views[i].pts);
     free(views);
 }
 
+int trace_oracle_missed_branch(const trace_oracle_report *rep)
+{
+    return rep->missed_arc > 2.0 * rep->step;
+}
+
 void trace_oracle_print(const char *name, const trace_oracle_report *rep)
 {
-    printf("%s: %zu samples, %zu hits, %zu covered, %zu near ends, %zu missed (t=%.6g); "
-           "%zu vertices, max residual %.3g, %zu behind\n",
+    printf("%s: %zu samples, %zu hits, %zu covered, %zu near ends, %zu missed (t=%.6g, "
+           "longest run %.3g on S, step %.3g); %zu vertices, max residual %.3g, %zu behind\n",
            name, rep->samples, rep->hits, rep->covered, rep->uncovered_near, rep->uncovered_far,
-           rep->worst_far_t, rep->vertices, rep->max_residual, rep->behind);
+           rep->worst_far_t, rep->missed_arc, rep->step, rep->vertices, rep->max_residual,
+           rep->behind);
 }

@@ -19,10 +19,17 @@ typedef struct trace_oracle_report {
     size_t uncovered_near; /* hits not covered, within two steps of a branch end */
     size_t uncovered_far;  /* hits not covered elsewhere: a missed branch */
     double worst_far_t;    /* t of one such hit */
+    double missed_arc;     /* longest run of such hits over consecutive
+                              samples, as an arc length on S */
+    double step;           /* largest chord of the traced polylines: the
+                              arc-length step ds */
     double max_residual;   /* max over vertices of |Dir x (S - P)| (model units) */
     size_t behind;         /* vertices with (S - P).Dir <= 0 */
     size_t vertices;
 } trace_oracle_report;
+
+/* The criterion: no branch missed that spans more than two steps. */
+int trace_oracle_missed_branch(const trace_oracle_report *rep);
 
 void trace_oracle_check(const projcurve_surface *s, const projcurve_curve *c, const double dir[3],
                         const projcurve_result *r, size_t n_samples, trace_oracle_report *rep);

@@ -1,0 +1,183 @@
+/*
+ * Every interior foot point of a point on a surface: the seeds of the
+ * orthogonal projection (seed 003), which must not miss a branch.
+ *
+ * Every patch is subdivided; a sub-patch is discarded when its control net
+ * proves that (S - p).Su or (S - p).Sv keeps one sign over it (no foot
+ * point inside). Around each foot point only the few sub-patches that
+ * contain or touch it survive; once flat they start Newton from their
+ * centre and, when that converges to a foot point outside the sub-patch,
+ * from four more points (unless a foot point found before lies in the
+ * sub-patch).
+ * Newton's steps are limited to the sub-patch size so that each start
+ * converges to the foot point of its own basin. Duplicates (a foot point on
+ * a shared edge is found from both sides) are merged at the end.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/error.h"
+#include "point/point.h"
+#include "point/subdivide.h"
+
+#define FEET_FLATNESS 0.05
+/* Two foot points closer than this fraction of the domain in both
+ * parameters are one. */
+#define FEET_SAME_PARAM 1e-8
+/* Newton starts per call; only a continuum of foot points (p at the centre
+ * of a sphere) comes near it. */
+#define FEET_MAX_STARTS 4096
+/* |Su x Sv| below this fraction of |Su|^2 + |Sv|^2: a singular point. */
+#define FEET_SINGULAR 1e-8
+
+typedef struct feet_search {
+    const projcurve_surface *s;
+    pc_vec3 p;
+    pc_subdiv_work work;
+    pc_foot_list *list;
+    size_t starts;
+    projcurve_status status;
+    projcurve_context *ctx;
+} feet_search;
+
+void pc_foot_list_free(pc_foot_list *list)
+{
+    free(list->items);
+    list->items = NULL;
+    list->count = list->capacity = 0;
+}
+
+static int push_foot(feet_search *fs, double u, double v)
+{
+    pc_foot_list *l = fs->list;
+    if (l->count == l->capacity) {
+        const size_t cap = l->capacity ? 2 * l->capacity : 16;
+        pc_surface_point *items = realloc(l->items, cap * sizeof *items);
+        if (items == NULL) {
+            fs->status = pc_fail(fs->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for foot points");
+            return 0;
+        }
+        l->items = items;
+        l->capacity = cap;
+    }
+    pc_surface_point *f = &l->items[l->count++];
+    f->u = u;
+    f->v = v;
+    pc_nurbs_surface_eval(&fs->s->nurbs, u, v, 0, NULL, NULL, &f->q);
+    f->dist = vec3_dist(f->q, fs->p);
+    return 1;
+}
+
+/* Singular points of the parametrisation (the poles of a sphere, where
+ * Su = 0) satisfy G = 0 whatever p is: their normal is undefined and they
+ * are not reported. */
+static int is_regular(const pc_nurbs_surface *s, double u, double v)
+{
+    pc_vec3 d[3];
+    pc_nurbs_surface_eval(s, u, v, 1, NULL, NULL, d);
+    const double area = vec3_norm(vec3_cross(d[1], d[2]));
+    return area > FEET_SINGULAR * (vec3_dot(d[1], d[1]) + vec3_dot(d[2], d[2]));
+}
+
+/* Newton from (u, v): 0 if it failed, 1 if it converged inside the
+ * sub-patch (grown by half its size), 2 if it converged farther away. */
+static int start_newton(feet_search *fs, const pc_subpatch *sp, double u, double v)
+{
+    ++fs->starts;
+    const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
+    double uv[2] = {u, v};
+    if (!pc_surface_foot_newton(&fs->s->nurbs, fs->p, fs->s->size, hu, hv, uv) ||
+        !is_regular(&fs->s->nurbs, uv[0], uv[1]))
+        return 0;
+    if (!push_foot(fs, uv[0], uv[1]))
+        return 1;
+    const int inside = uv[0] >= sp->u0 - 0.5 * hu && uv[0] <= sp->u1 + 0.5 * hu &&
+                       uv[1] >= sp->v0 - 0.5 * hv && uv[1] <= sp->v1 + 0.5 * hv;
+    return inside ? 1 : 2;
+}
+
+static pc_subdiv_action decide_feet(void *user, const pc_subpatch *sp)
+{
+    feet_search *fs = user;
+    const pc_nurbs_surface *n = &fs->s->nurbs;
+    if (fs->status != PROJCURVE_OK)
+        return PC_SUBDIV_DROP;
+    if (!pc_subpatch_may_hold_foot(sp, n->deg_u, n->deg_v, n->rational, fs->p))
+        return PC_SUBDIV_DROP;
+    const int leaf = pc_subpatch_flatness(sp, n->deg_u, n->deg_v) <= FEET_FLATNESS ||
+                     sp->depth >= PC_SUBDIV_MAX_DEPTH || fs->starts >= FEET_MAX_STARTS;
+    if (!leaf)
+        return PC_SUBDIV_SPLIT;
+    if (fs->starts >= FEET_MAX_STARTS)
+        return PC_SUBDIV_STOP;
+    const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
+    /* A flat sub-patch holding a foot point already found holds no other
+     * (short of two foot points merging, where p is a centre of
+     * curvature): skip its Newton, which would find the same one again. */
+    for (size_t k = 0; k < fs->list->count; ++k) {
+        const pc_surface_point *f = &fs->list->items[k];
+        if (f->u >= sp->u0 && f->u <= sp->u1 && f->v >= sp->v0 && f->v <= sp->v1)
+            return PC_SUBDIV_STOP;
+    }
+    if (start_newton(fs, sp, sp->u0 + 0.5 * hu, sp->v0 + 0.5 * hv) == 2) {
+        static const double quarter[4][2] = {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
+        for (int k = 0; k < 4; ++k)
+            start_newton(fs, sp, sp->u0 + quarter[k][0] * hu, sp->v0 + quarter[k][1] * hv);
+    }
+    return PC_SUBDIV_STOP;
+}
+
+static int by_distance(const void *a, const void *b)
+{
+    const pc_surface_point *x = a, *y = b;
+    if (x->dist != y->dist)
+        return x->dist < y->dist ? -1 : 1;
+    if (x->u != y->u)
+        return x->u < y->u ? -1 : 1;
+    return x->v < y->v ? -1 : (x->v > y->v ? 1 : 0);
+}
+
+static int by_u(const void *a, const void *b)
+{
+    const pc_surface_point *x = a, *y = b;
+    if (x->u != y->u)
+        return x->u < y->u ? -1 : 1;
+    return x->v < y->v ? -1 : (x->v > y->v ? 1 : 0);
+}
+
+/* Keeps one of each cluster of equal foot points (a sweep in u: only kept
+ * points within the u tolerance are compared), then sorts by distance. */
+static void merge_duplicates(pc_foot_list *l, const double dom[4])
+{
+    qsort(l->items, l->count, sizeof *l->items, by_u);
+    const double tol_u = FEET_SAME_PARAM * (dom[1] - dom[0]);
+    const double tol_v = FEET_SAME_PARAM * (dom[3] - dom[2]);
+    size_t kept = 0;
+    for (size_t i = 0; i < l->count; ++i) {
+        int dup = 0;
+        for (size_t k = kept; k > 0 && !dup && l->items[k - 1].u >= l->items[i].u - tol_u; --k)
+            dup = fabs(l->items[k - 1].v - l->items[i].v) <= tol_v;
+        if (!dup)
+            l->items[kept++] = l->items[i];
+    }
+    l->count = kept;
+    qsort(l->items, l->count, sizeof *l->items, by_distance);
+}
+
+projcurve_status pc_surface_foot_points(projcurve_context *ctx, const projcurve_surface *s,
+                                        pc_vec3 p, pc_foot_list *list)
+{
+    list->count = 0;
+    feet_search fs = {s, p, {0}, list, 0, PROJCURVE_OK, ctx};
+    projcurve_status st = pc_subdiv_work_init(ctx, &fs.work, s->nurbs.deg_u, s->nurbs.deg_v);
+    if (st != PROJCURVE_OK)
+        return st;
+    const size_t n_patches = s->grid.spans_u * s->grid.spans_v;
+    for (size_t k = 0; k < n_patches && fs.status == PROJCURVE_OK; ++k)
+        pc_subdiv_walk(&fs.work, &s->grid.patches[k], decide_feet, &fs);
+    pc_subdiv_work_free(&fs.work);
+    if (fs.status != PROJCURVE_OK)
+        return fs.status;
+    merge_duplicates(list, s->nurbs.domain);
+    return PROJCURVE_OK;
+}

@@ -1,0 +1,267 @@
+/*
+ * Bezier patch subdivision walk and the culling tests used by point
+ * projection.
+ */
+#include "point/subdivide.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/error.h"
+
+/* Depth-first: a split pops one net and pushes four, so the stack never
+ * holds more than 3 * depth + 1 nets; 6 more are scratch for the split. */
+#define PC_SUBDIV_STACK (3 * PC_SUBDIV_MAX_DEPTH + 1)
+#define PC_SUBDIV_SCRATCH 6
+
+projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, int p, int q)
+{
+    w->p = p;
+    w->q = q;
+    w->net_len = 4 * ((size_t)p + 1) * ((size_t)q + 1);
+    w->n_slots = PC_SUBDIV_STACK + PC_SUBDIV_SCRATCH;
+    /* + 3/4 net for the Cartesian points of the current sub-patch. */
+    w->mem = malloc((w->n_slots + 1) * w->net_len * sizeof(double));
+    if (w->mem == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for patch subdivision");
+    return PROJCURVE_OK;
+}
+
+void pc_subdiv_work_free(pc_subdiv_work *w)
+{
+    free(w->mem);
+    w->mem = NULL;
+}
+
+/* de Casteljau at 1/2 of `count` homogeneous points spaced `stride`
+ * doubles apart, into lo and hi (same spacing). */
+static void split_line(const double *src, size_t count, size_t stride, double *lo, double *hi)
+{
+    double tmp[PC_MAX_ORDER][4];
+    for (size_t i = 0; i < count; ++i)
+        memcpy(tmp[i], src + i * stride, 4 * sizeof(double));
+    const size_t last = count - 1;
+    for (size_t r = 0; r <= last; ++r) {
+        memcpy(lo + r * stride, tmp[0], 4 * sizeof(double));
+        memcpy(hi + (last - r) * stride, tmp[last - r], 4 * sizeof(double));
+        for (size_t i = 0; i + r < last; ++i)
+            for (int m = 0; m < 4; ++m)
+                tmp[i][m] = 0.5 * (tmp[i][m] + tmp[i + 1][m]);
+    }
+}
+
+static void split_u(const double *net, int p, int q, double *left, double *right)
+{
+    const size_t row = 4 * ((size_t)p + 1);
+    for (size_t j = 0; j <= (size_t)q; ++j)
+        split_line(net + j * row, (size_t)p + 1, 4, left + j * row, right + j * row);
+}
+
+static void split_v(const double *net, int p, int q, double *bottom, double *top)
+{
+    const size_t row = 4 * ((size_t)p + 1);
+    for (size_t i = 0; i <= (size_t)p; ++i)
+        split_line(net + 4 * i, (size_t)q + 1, row, bottom + 4 * i, top + 4 * i);
+}
+
+typedef struct stack_item {
+    double u0, u1, v0, v1;
+    int depth;
+} stack_item;
+
+static void cartesian(const double *cw, size_t n, double *xyz, double box[6])
+{
+    box_empty(box);
+    for (size_t i = 0; i < n; ++i) {
+        const double inv_w = 1.0 / cw[4 * i + 3];
+        for (size_t k = 0; k < 3; ++k)
+            xyz[3 * i + k] = cw[4 * i + k] * inv_w;
+        box_add_point(box, xyz + 3 * i);
+    }
+}
+
+void pc_subdiv_walk(pc_subdiv_work *w, const pc_bezier_patch *patch, pc_subdiv_fn decide,
+                    void *user)
+{
+    const size_t len = w->net_len, n_pts = len / 4;
+    double *slot0 = w->mem;                              /* stack nets */
+    double *scratch = w->mem + PC_SUBDIV_STACK * len;    /* 6 split nets */
+    double *xyz = w->mem + w->n_slots * len;             /* current Cartesian points */
+    stack_item items[PC_SUBDIV_STACK];
+    size_t top = 0;
+    memcpy(slot0, patch->cw, len * sizeof(double));
+    items[top++] = (stack_item){patch->u0, patch->u1, patch->v0, patch->v1, 0};
+    while (top > 0) {
+        const stack_item it = items[--top];
+        double *net = slot0 + top * len;
+        pc_subpatch sp = {it.u0, it.u1, it.v0, it.v1, it.depth, net, xyz, {0}};
+        cartesian(net, n_pts, xyz, sp.box);
+        const pc_subdiv_action action = decide(user, &sp);
+        if (action != PC_SUBDIV_SPLIT || it.depth >= PC_SUBDIV_MAX_DEPTH)
+            continue;
+        double *left = scratch, *right = scratch + len;
+        split_u(net, w->p, w->q, left, right);
+        split_v(left, w->p, w->q, scratch + 2 * len, scratch + 3 * len);
+        split_v(right, w->p, w->q, scratch + 4 * len, scratch + 5 * len);
+        const double um = 0.5 * (it.u0 + it.u1), vm = 0.5 * (it.v0 + it.v1);
+        const stack_item kids[4] = {{it.u0, um, it.v0, vm, it.depth + 1},
+                                    {it.u0, um, vm, it.v1, it.depth + 1},
+                                    {um, it.u1, it.v0, vm, it.depth + 1},
+                                    {um, it.u1, vm, it.v1, it.depth + 1}};
+        for (size_t k = 0; k < 4; ++k) {
+            memcpy(slot0 + top * len, scratch + (2 + k) * len, len * sizeof(double));
+            items[top++] = kids[k];
+        }
+    }
+}
+
+double pc_box_distance_sq(const double box[6], pc_vec3 p)
+{
+    const double pp[3] = {p.x, p.y, p.z};
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double e = pp[k] < box[k] ? box[k] - pp[k] : (pp[k] > box[k + 3] ? pp[k] - box[k + 3] : 0.0);
+        d2 += e * e;
+    }
+    return d2;
+}
+
+/* Sign of x.d over every x in the box [lo, hi]: +1 if always > 0, -1 if
+ * always < 0, 0 otherwise. */
+static int sign_over_box(const double lo[3], const double hi[3], const double d[3])
+{
+    double mn = 0.0, mx = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        mn += d[k] >= 0.0 ? d[k] * lo[k] : d[k] * hi[k];
+        mx += d[k] >= 0.0 ? d[k] * hi[k] : d[k] * lo[k];
+    }
+    return mn > 0.0 ? 1 : (mx < 0.0 ? -1 : 0);
+}
+
+/* Polynomial patches: can (S - p).S_dir vanish? S_dir is a positive
+ * combination of the differences of control points adjacent in that
+ * direction (the hodograph), and S - p lies in the box of the control points
+ * minus p. If every difference has a dot product of one strict sign with
+ * the whole box, so has S_dir. */
+static int may_vanish_polynomial(const pc_subpatch *sp, int p, int q, const double lo[3],
+                                 const double hi[3], int along_v)
+{
+    const size_t n_u = (size_t)p + 1;
+    const size_t n_lines = along_v ? (size_t)p + 1 : (size_t)q + 1;
+    const size_t n_steps = along_v ? (size_t)q : (size_t)p;
+    int sign = 2; /* not yet known */
+    for (size_t k = 0; k < n_steps; ++k)
+        for (size_t a = 0; a < n_lines; ++a) {
+            const size_t i0 = along_v ? k * n_u + a : a * n_u + k;
+            const size_t i1 = along_v ? (k + 1) * n_u + a : a * n_u + k + 1;
+            const double d[3] = {sp->xyz[3 * i1] - sp->xyz[3 * i0],
+                                 sp->xyz[3 * i1 + 1] - sp->xyz[3 * i0 + 1],
+                                 sp->xyz[3 * i1 + 2] - sp->xyz[3 * i0 + 2]};
+            const int s = sign_over_box(lo, hi, d);
+            if (s == 0 || (sign != 2 && s != sign))
+                return 1;
+            sign = s;
+        }
+    return 0;
+}
+
+/* Closed intervals for the rational test. */
+typedef struct interval {
+    double lo, hi;
+} interval;
+
+static interval iv_mul(interval a, interval b)
+{
+    const double c[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+    interval r = {c[0], c[0]};
+    for (int k = 1; k < 4; ++k) {
+        r.lo = fmin(r.lo, c[k]);
+        r.hi = fmax(r.hi, c[k]);
+    }
+    return r;
+}
+
+static interval iv_add(interval a, interval b) { return (interval){a.lo + b.lo, a.hi + b.hi}; }
+
+static interval iv_sq(interval a)
+{
+    if (a.lo <= 0.0 && a.hi >= 0.0)
+        return (interval){0.0, fmax(a.lo * a.lo, a.hi * a.hi)};
+    return (interval){fmin(a.lo * a.lo, a.hi * a.hi), fmax(a.lo * a.lo, a.hi * a.hi)};
+}
+
+static void iv_include(interval *r, double x)
+{
+    r->lo = fmin(r->lo, x);
+    r->hi = fmax(r->hi, x);
+}
+
+/* Rational patches: with B = A - p w (homogeneous, a polynomial patch),
+ * S - p = B / w and (S - p).S_dir = (w (B.B_dir) - w_dir |B|^2) / w^3. The
+ * numerator is bounded with interval arithmetic from the boxes of the
+ * Bernstein coefficients of B, w and of their hodographs; its width shrinks
+ * linearly with the sub-patch, so deep sub-patches away from foot points are
+ * discarded (a cone of control point differences would not shrink: for
+ * rational nets it must include differences across rows). */
+static int may_vanish_rational(const pc_subpatch *sp, int p, int q, pc_vec3 pt, int along_v)
+{
+    const size_t n_u = (size_t)p + 1, n = n_u * ((size_t)q + 1);
+    const double pp[3] = {pt.x, pt.y, pt.z};
+    interval b[3], bd[3], w = {INFINITY, -INFINITY}, wd = {INFINITY, -INFINITY};
+    for (int k = 0; k < 3; ++k)
+        b[k] = bd[k] = (interval){INFINITY, -INFINITY};
+    for (size_t i = 0; i < n; ++i) {
+        const double *h = sp->cw + 4 * i;
+        for (int k = 0; k < 3; ++k)
+            iv_include(&b[k], h[k] - pp[k] * h[3]);
+        iv_include(&w, h[3]);
+        const size_t col = i % n_u, row = i / n_u;
+        if (along_v ? row == (size_t)q : col == (size_t)p)
+            continue;
+        const double *h1 = h + 4 * (along_v ? n_u : 1); /* next point along dir */
+        for (int k = 0; k < 3; ++k)
+            iv_include(&bd[k], (h1[k] - pp[k] * h1[3]) - (h[k] - pp[k] * h[3]));
+        iv_include(&wd, h1[3] - h[3]);
+    }
+    /* The hodograph's degree factor is a positive constant: signs only. */
+    interval dot = {0.0, 0.0}, norm2 = {0.0, 0.0};
+    for (int k = 0; k < 3; ++k) {
+        dot = iv_add(dot, iv_mul(b[k], bd[k]));
+        norm2 = iv_add(norm2, iv_sq(b[k]));
+    }
+    const interval first = iv_mul(w, dot), second = iv_mul(wd, norm2);
+    const interval num = {first.lo - second.hi, first.hi - second.lo};
+    return !(num.lo > 0.0 || num.hi < 0.0);
+}
+
+int pc_subpatch_may_hold_foot(const pc_subpatch *sp, int p, int q, int rational, pc_vec3 pt)
+{
+    if (rational)
+        return may_vanish_rational(sp, p, q, pt, 0) && may_vanish_rational(sp, p, q, pt, 1);
+    const double lo[3] = {sp->box[0] - pt.x, sp->box[1] - pt.y, sp->box[2] - pt.z};
+    const double hi[3] = {sp->box[3] - pt.x, sp->box[4] - pt.y, sp->box[5] - pt.z};
+    return may_vanish_polynomial(sp, p, q, lo, hi, 0) && may_vanish_polynomial(sp, p, q, lo, hi, 1);
+}
+
+double pc_subpatch_flatness(const pc_subpatch *sp, int p, int q)
+{
+    const size_t n_u = (size_t)p + 1;
+    const double *c00 = sp->xyz, *c10 = sp->xyz + 3 * (size_t)p;
+    const double *c01 = sp->xyz + 3 * (size_t)q * n_u, *c11 = c01 + 3 * (size_t)p;
+    double worst = 0.0;
+    for (size_t j = 0; j <= (size_t)q; ++j)
+        for (size_t i = 0; i <= (size_t)p; ++i) {
+            const double s = (double)i / p, t = (double)j / q;
+            const double *x = sp->xyz + 3 * (j * n_u + i);
+            double e2 = 0.0;
+            for (int k = 0; k < 3; ++k) {
+                const double b = (1 - t) * ((1 - s) * c00[k] + s * c10[k]) +
+                                 t * ((1 - s) * c01[k] + s * c11[k]);
+                e2 += (x[k] - b) * (x[k] - b);
+            }
+            if (e2 > worst)
+                worst = e2;
+        }
+    const double diag = box_diagonal(sp->box);
+    return diag > 0.0 ? sqrt(worst) / diag : 0.0;
+}

@@ -1,0 +1,59 @@
+/*
+ * Recursive subdivision of one Bezier patch without recursion: a depth-first
+ * walk over quarter sub-patches kept on a small stack of control nets, with
+ * the caller deciding for each sub-patch whether to discard it, stop at it or
+ * split it. Also the tests that decide: distance of the control net's box,
+ * and whether a sub-patch can hold a foot point at all.
+ */
+#ifndef PC_POINT_SUBDIVIDE_H
+#define PC_POINT_SUBDIVIDE_H
+
+#include <stddef.h>
+
+#include "bezier/bezier.h"
+#include "common/vec.h"
+
+/* Deepest subdivision level: a sub-patch is then 1/4096 of its patch. */
+#define PC_SUBDIV_MAX_DEPTH 12
+
+typedef struct pc_subpatch {
+    double u0, u1, v0, v1;  /* parameter box in the surface's parameters */
+    int depth;
+    const double *cw;       /* homogeneous net, (p+1) x (q+1), u fastest */
+    const double *xyz;      /* its Cartesian points, 3 each */
+    double box[6];          /* box of xyz */
+} pc_subpatch;
+
+typedef enum pc_subdiv_action { PC_SUBDIV_DROP = 0, PC_SUBDIV_STOP = 1, PC_SUBDIV_SPLIT = 2 } pc_subdiv_action;
+
+typedef pc_subdiv_action (*pc_subdiv_fn)(void *user, const pc_subpatch *sp);
+
+/* Scratch memory for walks over patches of degree (p, q). */
+typedef struct pc_subdiv_work {
+    int p, q;
+    size_t net_len;  /* doubles per homogeneous net */
+    double *mem;
+    size_t n_slots;
+} pc_subdiv_work;
+
+projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, int p, int q);
+void pc_subdiv_work_free(pc_subdiv_work *w);
+
+/* Walks the patch: decide() is called for the patch itself and for every
+ * sub-patch that a SPLIT produced; at PC_SUBDIV_MAX_DEPTH a SPLIT counts as
+ * STOP. */
+void pc_subdiv_walk(pc_subdiv_work *w, const pc_bezier_patch *patch, pc_subdiv_fn decide,
+                    void *user);
+
+/* Squared distance from p to the box. */
+double pc_box_distance_sq(const double box[6], pc_vec3 p);
+
+/* 0 when the sub-patch provably holds no point with (S - p).Su = 0, or none
+ * with (S - p).Sv = 0; 1 when it may hold a foot point. */
+int pc_subpatch_may_hold_foot(const pc_subpatch *sp, int p, int q, int rational, pc_vec3 pt);
+
+/* Largest distance of a control point from the bilinear interpolant of the
+ * four corners, relative to the net's box diagonal. */
+double pc_subpatch_flatness(const pc_subpatch *sp, int p, int q);
+
+#endif /* PC_POINT_SUBDIVIDE_H */

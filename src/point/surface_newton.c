@@ -1,0 +1,193 @@
+/*
+ * Local solvers for point projection onto a surface: Newton on the foot
+ * point equations G = 0, and a bound-constrained minimiser of the distance.
+ *
+ * With r = S - p, D = |r|^2 / 2 has gradient G = [r.Su, r.Sv] (seed 004:
+ * d(u) = R'(u).(R(u) - r), here in two parameters) and Hessian
+ *     H = [[Su.Su + r.Suu, Su.Sv + r.Suv], [Su.Sv + r.Suv, Sv.Sv + r.Svv]].
+ * Newton solves H delta = -G. H is singular where p is a centre of
+ * curvature; the minimiser then falls back to Gauss-Newton (J^T J, the
+ * first fundamental form), which is positive definite on regular surfaces.
+ */
+#include "point/point.h"
+
+/* Foot point accepted when each component of G is below
+ * FOOT_TOL_COS |r| |S_dir| + FOOT_TOL_ABS size |S_dir|: the angle between r
+ * and the tangent plane is ~1e-10 or r is at rounding level of the model. */
+#define FOOT_TOL_COS 1e-10
+#define FOOT_TOL_ABS 1e-12
+#define FOOT_MAX_ITER 40
+/* Newton gives up beyond this many step limits from its start. */
+#define FOOT_MAX_TRAVEL 4.0
+#define MIN_MAX_ITER 60
+#define MIN_MAX_HALVINGS 40
+/* The minimiser stops when a full step would move S by less than this
+ * (relative to the model size). */
+#define MIN_STEP_TOL 1e-13
+/* ... or when a step below this (relative) lowered |S - p|^2 by less than
+ * MIN_NOISE_DECREASE relative: the minimum is reached to rounding. */
+#define MIN_NOISE_STEP 1e-7
+#define MIN_NOISE_DECREASE 1e-14
+
+typedef struct local_frame {
+    pc_vec3 d[6]; /* S, Su, Sv, Suu, Suv, Svv */
+    pc_vec3 r;
+    double g[2];
+    double h[3];  /* H11, H12, H22 */
+} local_frame;
+
+static void frame_at(const pc_nurbs_surface *s, pc_vec3 p, const double uv[2], local_frame *f)
+{
+    pc_nurbs_surface_eval(s, uv[0], uv[1], 2, NULL, NULL, f->d);
+    f->r = vec3_sub(f->d[0], p);
+    f->g[0] = vec3_dot(f->r, f->d[1]);
+    f->g[1] = vec3_dot(f->r, f->d[2]);
+    f->h[0] = vec3_dot(f->d[1], f->d[1]) + vec3_dot(f->r, f->d[3]);
+    f->h[1] = vec3_dot(f->d[1], f->d[2]) + vec3_dot(f->r, f->d[4]);
+    f->h[2] = vec3_dot(f->d[2], f->d[2]) + vec3_dot(f->r, f->d[5]);
+}
+
+static double clampd(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
+
+static int is_foot(const local_frame *f, double model_size)
+{
+    const double rn = vec3_norm(f->r);
+    for (int k = 0; k < 2; ++k) {
+        const double tn = vec3_norm(f->d[1 + k]);
+        if (!(fabs(f->g[k]) <= (FOOT_TOL_COS * rn + FOOT_TOL_ABS * model_size) * tn))
+            return 0;
+    }
+    return 1;
+}
+
+int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
+                           double max_step_u, double max_step_v, double uv[2])
+{
+    const double *dom = s->domain;
+    double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
+    const double x0[2] = {x[0], x[1]};
+    local_frame f;
+    for (int it = 0; it < FOOT_MAX_ITER; ++it) {
+        /* Wandering off: the foot point of this basin is not near the start
+         * (the caller starts Newton near every candidate). */
+        if (fabs(x[0] - x0[0]) > FOOT_MAX_TRAVEL * max_step_u ||
+            fabs(x[1] - x0[1]) > FOOT_MAX_TRAVEL * max_step_v)
+            return 0;
+        frame_at(s, p, x, &f);
+        if (is_foot(&f, model_size)) {
+            uv[0] = x[0];
+            uv[1] = x[1];
+            return 1;
+        }
+        const double rhs[2] = {-f.g[0], -f.g[1]};
+        double delta[2];
+        if (!mat2_solve(f.h[0], f.h[1], f.h[1], f.h[2], rhs, delta))
+            return 0;
+        /* Keep Newton local: a start inside a small sub-patch must not jump
+         * to a far basin in one step. */
+        delta[0] = clampd(delta[0], -max_step_u, max_step_u);
+        delta[1] = clampd(delta[1], -max_step_v, max_step_v);
+        const double nx[2] = {clampd(x[0] + delta[0], dom[0], dom[1]),
+                              clampd(x[1] + delta[1], dom[2], dom[3])};
+        if (nx[0] == x[0] && nx[1] == x[1])
+            return 0; /* stuck against the boundary: no interior foot point here */
+        x[0] = nx[0];
+        x[1] = nx[1];
+    }
+    return 0;
+}
+
+/* A descent direction for D on the free coordinates: Newton if H is
+ * positive definite there, else Gauss-Newton, else the scaled gradient. */
+static void descent_direction(const local_frame *f, const int free_dir[2], double delta[2])
+{
+    const double g11 = vec3_dot(f->d[1], f->d[1]), g12 = vec3_dot(f->d[1], f->d[2]);
+    const double g22 = vec3_dot(f->d[2], f->d[2]);
+    delta[0] = delta[1] = 0.0;
+    if (free_dir[0] && free_dir[1]) {
+        const double rhs[2] = {-f->g[0], -f->g[1]};
+        const double det = f->h[0] * f->h[2] - f->h[1] * f->h[1];
+        if (f->h[0] > 0.0 && det > 0.0 && mat2_solve(f->h[0], f->h[1], f->h[1], f->h[2], rhs, delta))
+            return;
+        if (mat2_solve(g11, g12, g12, g22, rhs, delta))
+            return;
+        const double scale = g11 + g22 > 0.0 ? 1.0 / (g11 + g22) : 0.0;
+        delta[0] = -f->g[0] * scale;
+        delta[1] = -f->g[1] * scale;
+        return;
+    }
+    const int k = free_dir[0] ? 0 : 1;
+    const double hk = f->h[k == 0 ? 0 : 2], gk = k == 0 ? g11 : g22;
+    const double curv = hk > 0.0 ? hk : gk;
+    if (curv > 0.0)
+        delta[k] = -f->g[k] / curv;
+}
+
+static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
+                              double uv[2], const int movable[2])
+{
+    const double *dom = s->domain;
+    double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
+    local_frame f;
+    frame_at(s, p, x, &f);
+    double d2 = vec3_dot(f.r, f.r);
+    for (int it = 0; it < MIN_MAX_ITER; ++it) {
+        /* Active set: a coordinate on its bound whose gradient pushes out. */
+        const int free_dir[2] = {
+            movable[0] && !((x[0] <= dom[0] && f.g[0] > 0.0) || (x[0] >= dom[1] && f.g[0] < 0.0)),
+            movable[1] && !((x[1] <= dom[2] && f.g[1] > 0.0) || (x[1] >= dom[3] && f.g[1] < 0.0))};
+        if (!free_dir[0] && !free_dir[1])
+            break;
+        double delta[2];
+        descent_direction(&f, free_dir, delta);
+        if (delta[0] * f.g[0] + delta[1] * f.g[1] > 0.0)
+            break; /* no descent left at rounding level */
+        /* Predicted displacement of S for the full step: converged when it
+         * is at rounding level of the model. */
+        const double predicted =
+            vec3_norm(vec3_add(vec3_scale(f.d[1], delta[0]), vec3_scale(f.d[2], delta[1])));
+        double alpha = 1.0;
+        int accepted = 0;
+        local_frame nf;
+        double nx[2];
+        for (int k = 0; k < MIN_MAX_HALVINGS; ++k, alpha *= 0.5) {
+            nx[0] = clampd(x[0] + alpha * delta[0], dom[0], dom[1]);
+            nx[1] = clampd(x[1] + alpha * delta[1], dom[2], dom[3]);
+            frame_at(s, p, nx, &nf);
+            if (vec3_dot(nf.r, nf.r) <= d2) {
+                accepted = 1;
+                break;
+            }
+        }
+        if (!accepted)
+            break;
+        const double previous = d2;
+        x[0] = nx[0];
+        x[1] = nx[1];
+        f = nf;
+        d2 = vec3_dot(f.r, f.r);
+        if (predicted <= MIN_STEP_TOL * model_size)
+            break;
+        /* At rounding level the gradient is noise and Newton's step with
+         * it: stop once small steps no longer lower the distance. */
+        if (predicted <= MIN_NOISE_STEP * model_size && previous - d2 <= MIN_NOISE_DECREASE * previous)
+            break;
+    }
+    uv[0] = x[0];
+    uv[1] = x[1];
+    return d2;
+}
+
+double pc_surface_minimize(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
+                           double uv[2])
+{
+    static const int both[2] = {1, 1};
+    return minimize_masked(s, p, model_size, uv, both);
+}
+
+double pc_surface_minimize_along(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
+                                 double uv[2], int dir)
+{
+    const int movable[2] = {dir == 0, dir == 1};
+    return minimize_masked(s, p, model_size, uv, movable);
+}
