@@ -1,8 +1,8 @@
 /*
  * End to end on the shared cases (../shared/cases/MANIFEST.tsv): every
- * directional and orthogonal case is projected through the public API at eps_D = 1e-2,
- * 1e-4 and 1e-6 of the model size with eps_T = 1 degree, and at 1e-3 with
- * 10 degrees; every composed branch is measured against the exact projection
+ * directional and orthogonal case is projected through the public API at
+ * eps_D = 1e-2, 1e-4 and 1e-6 of the model size with eps_T = 1 degree, and
+ * at 1e-3 with 10 degrees; every composed branch is measured against the exact projection
  * by the test oracles (tests/support/piece_oracle): the Hausdorff distance
  * both ways on dense samples, the joint angles, the joins, and that each
  * piece stays in one Bezier patch. The exact projection at t is the oracle
