@@ -426,9 +426,13 @@ typedef int (*projcurve_implicit_fn)(void *user, const double x[3], double *valu
 /* Orthogonal projection onto an implicit surface (seed 003, eq. 32): traces the
  * foot point curve in 3-space starting from the foot point of P(t0) nearest
  * to it. Branches carry 3D points instead of (u, v) and composed pieces are a
- * cubic B-spline approximation within eps_D. model_size sets the scale for
- * relative tolerances (> 0).
- * Statuses: as projcurve_project_orthogonal, plus CALLBACK and SINGULAR. */
+ * cubic B-spline approximation within eps_D (degree-3 pieces over
+ * [t_i, t_i+1], C1 at the joins; their uv_range is 0). The branch ends at
+ * the end of the curve, at a centre of curvature, or where the corrector
+ * cannot continue. model_size sets the scale for relative tolerances (> 0).
+ * Statuses: as projcurve_project_orthogonal, plus INVALID_ARGUMENT
+ * (model_size <= 0), CALLBACK (fn failed or gave NaN/inf), SINGULAR
+ * (zero gradient) and NOT_CONVERGED (no foot point of P(t0) found). */
 PROJCURVE_API projcurve_status projcurve_project_orthogonal_implicit(projcurve_context *ctx,
                                                                      projcurve_implicit_fn fn,
                                                                      void *user,
@@ -446,7 +450,8 @@ typedef enum projcurve_branch_start {
     PROJCURVE_START_CURVE_START = 0, /* seeded at the start of the curve */
     PROJCURVE_START_JUMP = 1,        /* born in mid-curve (jump detection) */
     PROJCURVE_START_BOUNDARY = 2,    /* enters through the boundary of S */
-    PROJCURVE_START_SILHOUETTE = 3   /* born at a fold where Dir is tangent to S */
+    PROJCURVE_START_SILHOUETTE = 3   /* born at a fold where Dir is tangent to S
+                                        (orthogonal: at a centre of curvature) */
 } projcurve_branch_start;
 
 /* Why a branch ends. */
@@ -464,11 +469,12 @@ typedef enum projcurve_stat {
     PROJCURVE_STAT_POINTS = 0,        /* traced points, all branches */
     PROJCURVE_STAT_STEPS = 1,         /* predictor steps attempted */
     PROJCURVE_STAT_NEWTON_ITERATIONS = 2,
-    PROJCURVE_STAT_AVG_ERROR = 3,     /* seed 000 eq. (3.8): mean |predicted - corrected| */
+    PROJCURVE_STAT_AVG_ERROR = 3,     /* seed 000 eq. (3.8): mean estimation error of the
+                                         predicted points, |Dir x (S - P)| / |S - P| */
     PROJCURVE_STAT_JUMPS = 4,         /* branches found in mid-curve */
     PROJCURVE_STAT_PIECES = 5,        /* composed pieces, all branches */
     PROJCURVE_STAT_TOL_DISTANCE = 6,  /* eps_D actually used (model units) */
-    PROJCURVE_STAT_MAX_ERROR = 7      /* largest |predicted - corrected| */
+    PROJCURVE_STAT_MAX_ERROR = 7      /* largest estimation error (3.8) */
 } projcurve_stat;
 
 PROJCURVE_API void projcurve_result_destroy(projcurve_result *result);

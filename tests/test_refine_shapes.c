@@ -8,11 +8,13 @@
  * 10 degrees, every branch is measured by the oracles of
  * tests/support/piece_oracle (the exact projection by the oracle's own
  * Newton): Hausdorff distance both ways <= eps_D, joints <= eps_T, joins,
- * piece ends on the projection, one patch per piece.
+ * piece ends on the projection, one patch per piece; and the branch as one
+ * NURBS curve handle traces its pieces.
  */
 #include <math.h>
 #include <stdio.h>
 
+#include "api/handles.h"
 #include "check.h"
 #include "piece_oracle.h"
 #include "shapes.h"
@@ -25,6 +27,37 @@ typedef struct shape_case {
     double dir[3];
     size_t branches;
 } shape_case;
+
+/* The branch as one NURBS curve (projcurve_result_branch_curve) traces the
+ * same points as its pieces: the piece over [t0, t1] at s is the curve at
+ * t0 + s (t1 - t0). */
+static void check_branch_curves(const projcurve_result *r, double size)
+{
+    for (size_t i = 0; i < r->n_branches; ++i) {
+        const pc_branch *b = &r->branches[i];
+        projcurve_curve *joined = NULL;
+        CHECK_OK(projcurve_result_branch_curve(NULL, r, i, &joined));
+        if (joined == NULL)
+            continue;
+        double worst = 0.0;
+        int eval_failures = 0;
+        for (size_t k = 0; k < b->n_pieces; ++k) {
+            const pc_piece *pc = &b->pieces[k];
+            for (int j = 0; j <= 4; ++j) {
+                const double sp = j / 4.0;
+                pc_vec3 x;
+                double y[3];
+                pc_oracle_piece_eval(pc, sp, &x, NULL);
+                eval_failures += projcurve_curve_eval(NULL, joined, pc->t0 + sp * (pc->t1 - pc->t0),
+                                                      0, y) != PROJCURVE_OK;
+                worst = fmax(worst, vec3_dist(x, vec3_load(y)));
+            }
+        }
+        CHECK(eval_failures == 0);
+        CHECK(worst <= 1e-11 * size);
+        projcurve_curve_destroy(joined);
+    }
+}
 
 static void run(const shape_case *c, double rel_eps, double angle)
 {
@@ -55,6 +88,7 @@ static void run(const shape_case *c, double rel_eps, double angle)
     CHECK(sum.worst.max_gap <= 1e-12 * s->size);
     CHECK(sum.worst.max_end_err <= 1e-9 * s->size);
     CHECK(sum.worst.off_patch == 0);
+    check_branch_curves(r, s->size);
     projcurve_result_destroy(r);
 }
 

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "api/handles.h"
 #include "check.h"
 #include "trace_oracle.h"
 #include "trace_shapes.h"
@@ -38,6 +39,19 @@ static void test_arguments(const projcurve_surface *s, const projcurve_curve *c)
     printf("message: %s\n", projcurve_context_message(ctx));
     CHECK_STATUS(projcurve_project_directional(ctx, s, c, nan3, o, &r), PROJCURVE_ERR_NOT_FINITE);
     CHECK_STATUS(projcurve_project_directional(ctx, s, c, inf3, o, &r), PROJCURVE_ERR_NOT_FINITE);
+    /* a handle holding values its setters would refuse (written directly,
+     * as memory corruption would): refused with the option named */
+    struct projcurve_options bad;
+    pc_options_defaults(&bad);
+    bad.newton_tol = 0.5;
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, d, &bad, &r), PROJCURVE_ERR_OUT_OF_RANGE);
+    printf("message: %s\n", projcurve_context_message(ctx));
+    pc_options_defaults(&bad);
+    bad.param_step = NAN;
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, d, &bad, &r), PROJCURVE_ERR_NOT_FINITE);
+    pc_options_defaults(&bad);
+    bad.max_points = 3;
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, d, &bad, &r), PROJCURVE_ERR_OUT_OF_RANGE);
     CHECK(r == sentinel); /* outputs untouched on failure */
     /* a denormal direction is still a direction */
     CHECK_OK(projcurve_project_directional(ctx, s, c, tiny, o, &r));

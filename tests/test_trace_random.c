@@ -12,8 +12,8 @@
 #include "trace_oracle.h"
 #include "trace_shapes.h"
 
-#define N_CASES 24
-#define N_SAMPLES 2000
+#define N_CASES 16
+#define N_SAMPLES 1500
 #define RESIDUAL_TOL 1e-9
 
 int main(void)

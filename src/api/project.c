@@ -17,6 +17,12 @@
 /* Automatic eps_D: this fraction of the surface's size (projcurve.h). */
 #define PC_AUTO_TOL_DISTANCE 1e-4
 
+/* Names of the option keys for messages, indexed by key. */
+static const char *const pc_option_names[] = {
+    "?", "TOL_DISTANCE", "TOL_ANGLE_DEG", "NEWTON_TOL", "NEWTON_MAX_ITER", "METHOD",
+    "PARAM_STEP", "ARC_STEP_FRACTION", "MAX_POINTS", "MAX_PIECES", "COMPOSE",
+    "JUMP_DETECTION"};
+
 projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_options *opts,
                                     struct projcurve_options *out)
 {
@@ -37,11 +43,12 @@ projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_opti
             projcurve_options_get_int(NULL, opts, (projcurve_option)key, &iv);
             value = (double)iv;
         }
+        const char *name = pc_option_names[key];
         if (!isfinite(value))
-            return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "option %d is not finite", key);
+            return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "option %s is not finite", name);
         if (value < lo || value > hi)
-            return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
-                           "option %d = %.17g is outside [%.17g, %.17g]", key, value, lo, hi);
+            return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE, "option %s = %.17g is outside [%g, %g]",
+                           name, value, lo, hi);
     }
     *out = *opts;
     return PROJCURVE_OK;

@@ -94,12 +94,12 @@ size_t pc_ray_patch_work_size(int deg_u, int deg_v)
  * the line (or, for a ray, behind its origin): the convex hull then misses
  * the line. The third coordinate is computed only for nets that pass. */
 static int project_net(const pc_ray_frame *f, const pc_bezier_patch *patch, double *q,
-                       double *w_max)
+                       double *w_max, double *w_min)
 {
     const size_t np = net_points(patch->deg_u, patch->deg_v);
     const double tol = f->tol_residual;
     int neg_x = 0, pos_x = 0, neg_y = 0, pos_y = 0;
-    double w_top = 0.0;
+    double w_top = 0.0, w_low = INFINITY;
     for (size_t k = 0; k < np; ++k) {
         const double *cw = patch->cw + 4 * k;
         const pc_vec3 p = vec3(cw[0], cw[1], cw[2]);
@@ -109,6 +109,7 @@ static int project_net(const pc_ray_frame *f, const pc_bezier_patch *patch, doub
         out[1] = vec3_dot(f->e2, p) - w * f->origin_e2;
         out[3] = w;
         w_top = w > w_top ? w : w_top;
+        w_low = w < w_low ? w : w_low;
         const double slack = tol * w;
         neg_x |= out[0] <= slack;
         pos_x |= out[0] >= -slack;
@@ -125,6 +126,7 @@ static int project_net(const pc_ray_frame *f, const pc_bezier_patch *patch, doub
         ahead |= out[2] >= -tol * cw[3];
     }
     *w_max = w_top;
+    *w_min = w_low;
     return ahead || !f->ray_only;
 }
 
@@ -137,6 +139,7 @@ typedef struct patch_search {
     double zero_tol; /* rounding level of the homogeneous control values */
     double lipschitz; /* of the Jacobian over the patch */
     double jac_max;   /* bound on |J|_F over the patch */
+    double sliver_width; /* a stalled box this thin across is one grazing contact */
 } patch_search;
 
 /* Records a root found in patch-local parameters if it is a hit. */
@@ -324,7 +327,9 @@ static projcurve_status clip_patch(const patch_search *ps, double *slots)
             --top;
             continue;
         }
-        const int tiny = box[1] - box[0] < PC_CLIP_STALL_WIDTH && box[3] - box[2] < PC_CLIP_STALL_WIDTH;
+        const int tiny = (box[1] - box[0] < PC_CLIP_STALL_WIDTH &&
+                          box[3] - box[2] < PC_CLIP_STALL_WIDTH) ||
+                         pc_bezier_clip_is_sliver(net, m, n, ps->sliver_width);
         if (outcome == PC_CLIP_CONVERGED) {
             st = finish_converged(ps, box);
             --top;
@@ -357,10 +362,14 @@ projcurve_status pc_ray_patch_hits(projcurve_context *ctx, const pc_ray_frame *f
     ps.net.q = work;
     ps.hits = hits;
     ps.ctx = ctx;
-    double w_max = 0.0;
-    if (!project_net(frame, patch, work, &w_max))
+    double w_max = 0.0, w_min = 0.0;
+    if (!project_net(frame, patch, work, &w_max, &w_min))
         return PROJCURVE_OK;
     ps.zero_tol = frame->tol_zero * w_max;
+    /* Points of the sliver are within the hit tolerance of the line (in the
+     * homogeneous values, times the weight), so the whole box is one
+     * grazing contact as far as hits can tell. */
+    ps.sliver_width = frame->tol_residual * w_min;
     pc_frame_net_jacobian_bounds(&ps.net, &ps.lipschitz, &ps.jac_max);
     return clip_patch(&ps, work + 4 * net_points(patch->deg_u, patch->deg_v));
 }

@@ -7,5 +7,5 @@
 void pc_basis_ders(const double *knots, size_t span, int degree, double t, int n_deriv,
                    pc_basis *out)
 {
-    pc_basis_ders_inline(knots, span, degree, t, n_deriv, out);
+    pc_basis_ders_inline(knots, span, degree, t, n_deriv, out, NULL);
 }

@@ -28,8 +28,10 @@
  * which sits in the innermost loop of tracing. No allocation.
  */
 
+/* inv_table: the span's row of pc_knot_inverses, or NULL to divide here. */
 static PC_ALWAYS_INLINE void pc_basis_ders_inline(const double *knots, size_t span, int degree,
-                                                 double t, int n_deriv, pc_basis *out)
+                                                 double t, int n_deriv, pc_basis *out,
+                                                 const double *inv_table)
 {
     const int p = degree;
     const int n = n_deriv < p ? n_deriv : p; /* derivatives above p vanish */
@@ -47,7 +49,8 @@ static PC_ALWAYS_INLINE void pc_basis_ders_inline(const double *knots, size_t sp
         right[j] = knots[span + (size_t)j] - t;
         double saved = 0.0;
         for (int r = 0; r < j; ++r) {
-            inv[j][r] = 1.0 / (right[r + 1] + left[j - r]);
+            inv[j][r] = inv_table != NULL ? inv_table[j * (j - 1) / 2 + r]
+                                          : 1.0 / (right[r + 1] + left[j - r]);
             const double temp = N[r] * inv[j][r];
             N[r] = saved + right[r + 1] * temp;
             saved = left[j - r] * temp;

@@ -2,6 +2,7 @@
  * Knot vectors: span lookup, validation of user input, size arithmetic.
  */
 #include <stdint.h>
+#include <stdlib.h>
 
 #include "common/error.h"
 #include "nurbs/nurbs.h"
@@ -82,4 +83,25 @@ int pc_knots_are_clamped(const double *knots, size_t n_ctrl, int degree)
         if (knots[k] != knots[0] || knots[last - k] != knots[last])
             return 0;
     return 1;
+}
+
+double *pc_knot_inverses(const double *knots, size_t n_ctrl, int degree)
+{
+    const size_t per_span = pc_knot_inverse_count(degree);
+    const size_t n_spans = n_ctrl - (size_t)degree;
+    const size_t total = pc_size_mul(per_span, n_spans);
+    if (total == 0 || pc_size_mul(total, sizeof(double)) == 0)
+        return NULL;
+    double *inv = calloc(total, sizeof(double));
+    if (inv == NULL)
+        return NULL;
+    for (size_t k = (size_t)degree; k < n_ctrl; ++k) {
+        if (!(knots[k] < knots[k + 1]))
+            continue; /* never evaluated */
+        double *row = inv + (k - (size_t)degree) * per_span;
+        for (size_t j = 1; j <= (size_t)degree; ++j)
+            for (size_t r = 0; r < j; ++r)
+                row[j * (j - 1) / 2 + r] = 1.0 / (knots[k + r + 1] - knots[k + r + 1 - j]);
+    }
+    return inv;
 }

@@ -32,6 +32,10 @@ typedef struct pc_nurbs_surface {
     double *cw;         /* 4 * n_u * n_v homogeneous points, u index fastest */
     int rational;
     double domain[4];   /* u0, u1, v0, v1 */
+    /* Reciprocal knot differences of every span, precomputed so that the hot
+     * evaluation path does no division (pc_knot_inverses); NULL = computed
+     * on the fly. */
+    double *inv_u, *inv_v;
 } pc_nurbs_surface;
 
 /* Span index k with knots[k] <= t < knots[k+1] inside [degree, n_ctrl - 1]
@@ -84,6 +88,19 @@ typedef struct pc_basis {
  * are zero. The NURBS Book, algorithm A2.3. No allocation. */
 void pc_basis_ders(const double *knots, size_t span, int degree, double t, int n_deriv,
                    pc_basis *out);
+
+/* Number of reciprocal knot differences per span: degree (degree + 1) / 2. */
+static inline size_t pc_knot_inverse_count(int degree)
+{
+    return (size_t)degree * ((size_t)degree + 1) / 2;
+}
+
+/* The table, for spans degree .. n_ctrl - 1 (empty spans hold zeros):
+ * span k, level j (1..degree), r (0..j-1) at
+ * (k - degree) * pc_knot_inverse_count(degree) + j (j - 1) / 2 + r holds
+ * 1 / (knots[k + r + 1] - knots[k + r + 1 - j]). malloc'd; NULL when out of
+ * memory (evaluation then divides on the fly). */
+double *pc_knot_inverses(const double *knots, size_t n_ctrl, int degree);
 
 /* Point and derivatives (order n_deriv in 0..2, output as
  * pc_nurbs_surface_eval) of the tensor product of a (p+1) x (q+1) block of

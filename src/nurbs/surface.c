@@ -80,6 +80,12 @@ projcurve_status pc_nurbs_surface_init(projcurve_context *ctx, pc_nurbs_surface 
     s->domain[1] = bu.knots[bu.n_ctrl];
     s->domain[2] = bv.knots[deg_v];
     s->domain[3] = bv.knots[bv.n_ctrl];
+    s->inv_u = pc_knot_inverses(s->knots_u, s->n_u, deg_u);
+    s->inv_v = pc_knot_inverses(s->knots_v, s->n_v, deg_v);
+    if (s->inv_u == NULL || s->inv_v == NULL) {
+        pc_nurbs_surface_free(s);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for knot tables");
+    }
     return PROJCURVE_OK;
 
 cleanup:
@@ -97,5 +103,7 @@ void pc_nurbs_surface_free(pc_nurbs_surface *s)
     free(s->knots_u);
     free(s->knots_v);
     free(s->cw);
-    s->knots_u = s->knots_v = s->cw = NULL;
+    free(s->inv_u);
+    free(s->inv_v);
+    s->knots_u = s->knots_v = s->cw = s->inv_u = s->inv_v = NULL;
 }

@@ -118,8 +118,12 @@ static PC_ALWAYS_INLINE void eval_at_span(const pc_nurbs_surface *s, double u, d
                                           int n_deriv, int rational, pc_vec3 *out)
 {
     pc_basis bu, bv;
-    pc_basis_ders_inline(s->knots_u, span_u, p, u, n_deriv, &bu);
-    pc_basis_ders_inline(s->knots_v, span_v, q, v, n_deriv, &bv);
+    const double *inv_u =
+        s->inv_u != NULL ? s->inv_u + (span_u - (size_t)p) * pc_knot_inverse_count(p) : NULL;
+    const double *inv_v =
+        s->inv_v != NULL ? s->inv_v + (span_v - (size_t)q) * pc_knot_inverse_count(q) : NULL;
+    pc_basis_ders_inline(s->knots_u, span_u, p, u, n_deriv, &bu, inv_u);
+    pc_basis_ders_inline(s->knots_v, span_v, q, v, n_deriv, &bv, inv_v);
     const size_t first = (span_v - (size_t)q) * s->n_u + (span_u - (size_t)p);
     block_eval(s->cw + 4 * first, 4 * s->n_u, p, q, n_deriv, &bu, &bv, rational, out);
 }

@@ -7,8 +7,8 @@
  * point inside). Around each foot point only the few sub-patches that
  * contain or touch it survive; once flat they start Newton from their
  * centre and, when that converges to a foot point outside the sub-patch,
- * from four more points (unless a foot point found before lies in or next
- * to the sub-patch).
+ * from four more points (unless a foot point found before lies in the
+ * sub-patch).
  * Newton's steps are limited to the sub-patch size so that each start
  * converges to the foot point of its own basin. Duplicates (a foot point on
  * a shared edge is found from both sides) are merged at the end.
@@ -111,13 +111,12 @@ static pc_subdiv_action decide_feet(void *user, const pc_subpatch *sp)
     if (fs->starts >= FEET_MAX_STARTS)
         return PC_SUBDIV_STOP;
     const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
-    /* A flat sub-patch around a foot point already found holds no other
-     * (short of a degenerate cluster): the neighbours of a foot point all
-     * survive the test above, and would otherwise each redo its Newton. */
+    /* A flat sub-patch holding a foot point already found holds no other
+     * (short of two foot points merging, where p is a centre of
+     * curvature): skip its Newton, which would find the same one again. */
     for (size_t k = 0; k < fs->list->count; ++k) {
         const pc_surface_point *f = &fs->list->items[k];
-        if (f->u >= sp->u0 - 0.5 * hu && f->u <= sp->u1 + 0.5 * hu &&
-            f->v >= sp->v0 - 0.5 * hv && f->v <= sp->v1 + 0.5 * hv)
+        if (f->u >= sp->u0 && f->u <= sp->u1 && f->v >= sp->v0 && f->v <= sp->v1)
             return PC_SUBDIV_STOP;
     }
     if (start_newton(fs, sp, sp->u0 + 0.5 * hu, sp->v0 + 0.5 * hv) == 2) {

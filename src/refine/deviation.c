@@ -13,12 +13,15 @@
  * is where the segment is split when the bound is not met.
  */
 #include <math.h>
-#include <string.h>
 
 #include "compose/compose.h"
 #include "refine/refine_internal.h"
 
 #define PC_DEVIATION_SAMPLES 3
+#define PC_DEVIATION_GUIDE_MAX 4
+/* A traced vertex whose distance to the chord-parameter point is below this
+ * fraction of the bound needs no foot search. */
+#define PC_DEVIATION_BOUND_FIRST 0.5
 /* The parabolic refinement only matters near the bound: a largest sample
  * below this fraction of it cannot hide a peak above it. */
 #define PC_DEVIATION_REFINE_FROM 0.5
@@ -36,10 +39,27 @@ int pc_refine_compose(const pc_bezier_patch *patch, const pc_rvertex *a, const p
     return patch->deg_u + patch->deg_v;
 }
 
+/* C(s) alone, by de Casteljau. */
+static pc_vec3 piece_point(int n, const double *cw, double s)
+{
+    double work[PC_PIECE_MAX_DEGREE + 1][4];
+    const double r = 1.0 - s;
+    for (int i = 0; i < n; ++i)
+        for (int c = 0; c < 4; ++c)
+            work[i][c] = r * cw[4 * i + c] + s * cw[4 * (i + 1) + c];
+    for (int level = n - 1; level > 0; --level)
+        for (int i = 0; i < level; ++i)
+            for (int c = 0; c < 4; ++c)
+                work[i][c] = r * work[i][c] + s * work[i + 1][c];
+    return vec3(work[0][0] / work[0][3], work[0][1] / work[0][3], work[0][2] / work[0][3]);
+}
+
 void pc_piece_eval(int n, const double *cw, double s, pc_vec3 out[3])
 {
     double work[PC_PIECE_MAX_DEGREE + 1][4];
-    memcpy(work, cw, sizeof(double) * 4 * (size_t)(n + 1));
+    for (int i = 0; i <= n; ++i)
+        for (int c = 0; c < 4; ++c)
+            work[i][c] = cw[4 * i + c];
     const double r = 1.0 - s;
     /* de Casteljau down to the last three points (degree 2 in s) */
     for (int level = n; level > 2; --level)
@@ -118,22 +138,46 @@ static double profile(pc_refiner *r, int n, const double *cw, const pc_rvertex *
 }
 
 /* Largest distance of the traced vertices strictly inside (a.t, b.t) from C:
- * exact points already, they catch features between the samples. */
+ * exact points already, they catch features between the samples. A dense
+ * trace (constant small parameter steps) would make this the cost of the
+ * whole refinement, so at most PC_DEVIATION_GUIDE_MAX of them, evenly spread,
+ * are measured. */
+/* First guide index >= from whose t is >= t. */
+static size_t first_at_or_after(const pc_refiner *r, size_t from, double t)
+{
+    size_t lo = from, hi = r->n_guide;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (r->guide[mid].t < t)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 static double guide_deviation(pc_refiner *r, int n, const double *cw, const pc_rvertex *a,
-                              const pc_rvertex *b, double *t_far)
+                              const pc_rvertex *b, double limit, double *t_far)
 {
     const double lo = a->t < b->t ? a->t : b->t, hi = a->t < b->t ? b->t : a->t;
     const double du = b->u - a->u, dv = b->v - a->v, len2 = du * du + dv * dv;
     double worst = 0.0;
-    size_t k = pc_refine_guide_index(r, lo);
-    for (; k < r->n_guide && r->guide[k].t < hi; ++k) {
+    size_t first = pc_refine_guide_index(r, lo);
+    while (first < r->n_guide && !(r->guide[first].t > lo))
+        ++first;
+    const size_t end = first_at_or_after(r, first, hi); /* inside: [first, end) */
+    const size_t count = end - first;
+    const size_t stride = count > PC_DEVIATION_GUIDE_MAX ? count / PC_DEVIATION_GUIDE_MAX : 1;
+    for (size_t k = first; k < end; k += stride) {
         const pc_rvertex *g = &r->guide[k];
-        if (!(g->t > lo))
-            continue;
         const pc_vec3 x = pc_refine_surface_point(r, g->u, g->v);
         const double s0 = len2 > 0.0 ? ((g->u - a->u) * du + (g->v - a->v) * dv) / len2
                                      : (g->t - a->t) / (b->t - a->t);
-        const double d = pc_piece_distance(n, cw, x, s0, NULL);
+        /* the point at the chord's parameter bounds the distance from above;
+         * the foot is searched only when that bound is not small */
+        double d = vec3_dist(piece_point(n, cw, s0 < 0.0 ? 0.0 : (s0 > 1.0 ? 1.0 : s0)), x);
+        if (d > PC_DEVIATION_BOUND_FIRST * limit)
+            d = pc_piece_distance(n, cw, x, s0, NULL);
         if (d > worst)
             worst = d, *t_far = g->t;
     }
@@ -174,7 +218,7 @@ double pc_refine_deviation(pc_refiner *r, int n, const double *cw, const pc_rver
     }
     *t_far = a->t + tau_far * (b->t - a->t);
     double t_guide = *t_far;
-    const double d_guide = guide_deviation(r, n, cw, a, b, &t_guide);
+    const double d_guide = guide_deviation(r, n, cw, a, b, limit, &t_guide);
     if (d_guide > d_far)
         d_far = d_guide, *t_far = t_guide;
     return d_far;

@@ -1,0 +1,23 @@
+/*
+ * Centres of curvature inside traced branches of the parametric orthogonal
+ * projection. The tracing engine ends a branch where det K changes sign
+ * (seed 003 s6); an even change of the Morse index (an umbilic, e.g. P
+ * crossing the centre of a sphere: det K touches zero without changing
+ * sign) can be stepped over. This pass finds such crossings between
+ * consecutive vertices, locates them by bisection in t, and splits the
+ * branch there: the first part ends with PROJCURVE_END_CURVATURE_CENTRE,
+ * the second starts with PROJCURVE_START_SILHOUETTE (born at a centre of
+ * curvature, see projcurve.h).
+ */
+#ifndef PC_ORTHO_CENTRES_H
+#define PC_ORTHO_CENTRES_H
+
+#include "trace/projector.h"
+#include "trace/result.h"
+
+/* Splits every branch of r (points (t, u, v)) at the centres of curvature
+ * it crosses. Statuses: OK, NO_MEMORY, CALLBACK. */
+projcurve_status pc_ortho_split_at_centres(projcurve_context *ctx, const pc_projector *proj,
+                                           projcurve_result *r);
+
+#endif /* PC_ORTHO_CENTRES_H */

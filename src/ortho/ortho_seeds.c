@@ -1,0 +1,98 @@
+#include "ortho/ortho_seeds.h"
+
+#include <stdlib.h>
+
+#include "common/error.h"
+
+/* Initial capacity of the foot-point buffer; it grows when a search finds
+ * more (the geometry reports the full count). */
+#define ORTHO_FOOT_CAPACITY 16
+
+static projcurve_status grow(projcurve_context *ctx, pc_ortho_finder_state *st, size_t need)
+{
+    if (need <= st->capacity)
+        return PROJCURVE_OK;
+    size_t cap = st->capacity ? st->capacity : ORTHO_FOOT_CAPACITY;
+    while (cap < need)
+        cap *= 2;
+    double *uv = realloc(st->uv, 2 * cap * sizeof *uv);
+    if (uv == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for %zu foot points", need);
+    st->uv = uv;
+    st->capacity = cap;
+    return PROJCURVE_OK;
+}
+
+/* Every local foot point of P(t) (projcurve_surface_foot_points). */
+static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx, double t,
+                                   pc_seed_list *out)
+{
+    pc_ortho_finder_state *st = self->state;
+    out->count = 0;
+    pc_vec3 p;
+    if (pc_curve_eval(st->curve, t, 0, NULL, &p) != PROJCURVE_OK)
+        return pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "curve callback failed at t = %.17g", t);
+    const double point[3] = {p.x, p.y, p.z};
+    projcurve_status status = grow(ctx, st, ORTHO_FOOT_CAPACITY);
+    size_t count = 0;
+    if (status == PROJCURVE_OK)
+        status = projcurve_surface_foot_points(ctx, st->surface, point, st->capacity, st->uv,
+                                               &count);
+    if (status == PROJCURVE_OK && count > st->capacity) {
+        status = grow(ctx, st, count);
+        if (status == PROJCURVE_OK)
+            status = projcurve_surface_foot_points(ctx, st->surface, point, st->capacity,
+                                                   st->uv, &count);
+        if (count > st->capacity)
+            count = st->capacity;
+    }
+    for (size_t i = 0; status == PROJCURVE_OK && i < count; ++i)
+        status = pc_seed_list_push(ctx, out, t, st->uv[2 * i], st->uv[2 * i + 1]);
+    return status;
+}
+
+static int ortho_may_jump(pc_seed_finder *self, double t, const pc_seed *active,
+                          size_t n_active, double ds)
+{
+    pc_ortho_finder_state *st = self->state;
+    (void)active;
+    (void)ds;
+    int search = 0;
+    if (!st->started || n_active != st->last_active || t - st->last_full_t >= st->interval)
+        search = 1;
+    st->started = 1;
+    st->last_active = n_active;
+    if (search)
+        st->last_full_t = t;
+    return search;
+}
+
+static void ortho_reset(pc_seed_finder *self)
+{
+    pc_ortho_finder_state *st = self->state;
+    st->started = 0;
+    st->last_active = 0;
+    st->last_full_t = st->curve->t0;
+}
+
+void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
+                          const projcurve_surface *surface, const projcurve_curve *curve)
+{
+    state->surface = surface;
+    state->curve = curve;
+    state->interval = (curve->t1 - curve->t0) / PC_ORTHO_JUMP_CHECKS;
+    state->uv = NULL;
+    state->capacity = 0;
+    finder->find = ortho_find;
+    finder->may_jump = ortho_may_jump;
+    finder->reset = ortho_reset;
+    finder->state = state;
+    ortho_reset(finder);
+}
+
+void pc_ortho_finder_free(pc_ortho_finder_state *state)
+{
+    free(state->uv);
+    state->uv = NULL;
+    state->capacity = 0;
+}

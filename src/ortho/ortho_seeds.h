@@ -1,0 +1,41 @@
+/*
+ * Where branches of the orthogonal projection are (seed 003 s4.2): every
+ * local foot point of P(t) on S, as a pc_seed_finder for the tracing
+ * engine. At the start of the curve the foot points are the seeds; in
+ * mid-curve, branches are born where P(t) crosses the focal surface (two
+ * foot points appear at a centre of curvature) or where a foot point enters
+ * through the boundary of S. Neither event has a cheap local test here, so
+ * may_jump asks for a full foot-point search at regular intervals of t and
+ * whenever a branch has ended since the previous check (a branch ending at
+ * a centre of curvature often continues as another one).
+ */
+#ifndef PC_ORTHO_SEEDS_H
+#define PC_ORTHO_SEEDS_H
+
+#include <stddef.h>
+
+#include "trace/trace.h"
+
+typedef struct pc_ortho_finder_state {
+    const projcurve_surface *surface;
+    const projcurve_curve *curve;
+    double interval;        /* full search at least every `interval` in t */
+    double last_full_t;     /* t of the last check that asked for a search */
+    size_t last_active;     /* branches alive at the previous check */
+    int started;            /* a check happened since the last reset */
+    double *uv;             /* foot-point buffer, 2 doubles per point */
+    size_t capacity;        /* points the buffer holds */
+} pc_ortho_finder_state;
+
+/* Number of full foot-point searches per curve domain in the mid-curve
+ * sweep (the brief's "at intervals"): a branch born between two searches
+ * is found at the next one and traced back to where it was born. */
+#define PC_ORTHO_JUMP_CHECKS 16
+
+/* Sets up finder over state for surface and curve. Release with
+ * pc_ortho_finder_free. */
+void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
+                          const projcurve_surface *surface, const projcurve_curve *curve);
+void pc_ortho_finder_free(pc_ortho_finder_state *state);
+
+#endif /* PC_ORTHO_SEEDS_H */

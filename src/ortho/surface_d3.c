@@ -1,0 +1,161 @@
+#include "ortho/surface_d3.h"
+
+#include "projcurve.h"
+
+/* Derivative order evaluated here. */
+#define D3_ORDER 3
+#define D3_MAX_P1 (PROJCURVE_MAX_DEGREE + 1)
+
+/* Non-zero basis functions N_{span-p+j, p}(t), j = 0..p, and their
+ * derivatives up to order n at t: ders[k][j]; orders above p are zero.
+ * Piegl & Tiller, The NURBS Book, algorithm A2.3. The span must be
+ * non-empty (knots[span] < knots[span + 1]), which pc_knot_span guarantees,
+ * so no denominator below is zero. */
+static void basis_derivatives(const double *knots, size_t span, int p, double t, int n,
+                              double ders[D3_ORDER + 1][D3_MAX_P1])
+{
+    double ndu[D3_MAX_P1][D3_MAX_P1];
+    double left[D3_MAX_P1], right[D3_MAX_P1];
+    double a[2][D3_MAX_P1];
+
+    ndu[0][0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = t - knots[span + 1 - (size_t)j];
+        right[j] = knots[span + (size_t)j] - t;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            ndu[j][r] = right[r + 1] + left[j - r];
+            const double temp = ndu[r][j - 1] / ndu[j][r];
+            ndu[r][j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    for (int j = 0; j <= p; ++j)
+        ders[0][j] = ndu[j][p];
+
+    const int n_eff = n < p ? n : p;
+    for (int r = 0; r <= p; ++r) {
+        int s1 = 0, s2 = 1;
+        a[0][0] = 1.0;
+        for (int k = 1; k <= n_eff; ++k) {
+            double d = 0.0;
+            const int rk = r - k, pk = p - k;
+            if (r >= k) {
+                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+                d = a[s2][0] * ndu[rk][pk];
+            }
+            const int j1 = rk >= -1 ? 1 : -rk;
+            const int j2 = r - 1 <= pk ? k - 1 : p - r;
+            for (int j = j1; j <= j2; ++j) {
+                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+                d += a[s2][j] * ndu[rk + j][pk];
+            }
+            if (r <= pk) {
+                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+                d += a[s2][k] * ndu[r][pk];
+            }
+            ders[k][r] = d;
+            const int swap = s1;
+            s1 = s2;
+            s2 = swap;
+        }
+    }
+    double factor = (double)p;
+    for (int k = 1; k <= n_eff; ++k) {
+        for (int j = 0; j <= p; ++j)
+            ders[k][j] *= factor;
+        factor *= (double)(p - k);
+    }
+    for (int k = n_eff + 1; k <= n; ++k)
+        for (int j = 0; j <= p; ++j)
+            ders[k][j] = 0.0;
+}
+
+static double clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
+
+/* Output slot of the derivative of order (k in u, l in v), k + l <= 3. */
+static int slot(int k, int l)
+{
+    static const int table[D3_ORDER + 1][D3_ORDER + 1] = {
+        {PC_D3_S, PC_D3_V, PC_D3_VV, PC_D3_VVV},
+        {PC_D3_U, PC_D3_UV, PC_D3_UVV, -1},
+        {PC_D3_UU, PC_D3_UUV, -1, -1},
+        {PC_D3_UUU, -1, -1, -1},
+    };
+    return table[k][l];
+}
+
+static double binomial3(int n, int k)
+{
+    static const double table[D3_ORDER + 1][D3_ORDER + 1] = {
+        {1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
+    return table[n][k];
+}
+
+/* Derivatives of the homogeneous surface A(u, v) = sum N_i N_j Pw_ij:
+ * aw[k][l] (4 doubles) for k + l <= 3. */
+static void homogeneous_derivatives(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
+                                    double nu[D3_ORDER + 1][D3_MAX_P1],
+                                    double nv[D3_ORDER + 1][D3_MAX_P1],
+                                    double aw[D3_ORDER + 1][D3_ORDER + 1][4])
+{
+    for (int k = 0; k <= D3_ORDER; ++k)
+        for (int l = 0; l <= D3_ORDER; ++l)
+            for (int c = 0; c < 4; ++c)
+                aw[k][l][c] = 0.0;
+
+    const size_t i0 = span_u - (size_t)s->deg_u, j0 = span_v - (size_t)s->deg_v;
+    for (int i = 0; i <= s->deg_u; ++i) {
+        /* Column sums along v for this u index: tmp[l] = sum_j N_j^(l) Pw_ij. */
+        double tmp[D3_ORDER + 1][4] = {{0}};
+        for (int j = 0; j <= s->deg_v; ++j) {
+            const double *pw = s->cw + 4 * ((j0 + (size_t)j) * s->n_u + i0 + (size_t)i);
+            for (int l = 0; l <= D3_ORDER; ++l)
+                for (int c = 0; c < 4; ++c)
+                    tmp[l][c] += nv[l][j] * pw[c];
+        }
+        for (int k = 0; k <= D3_ORDER; ++k)
+            for (int l = 0; k + l <= D3_ORDER; ++l)
+                for (int c = 0; c < 4; ++c)
+                    aw[k][l][c] += nu[k][i] * tmp[l][c];
+    }
+}
+
+void pc_surface_eval_d3(const pc_nurbs_surface *s, double u, double v, size_t *hint_u,
+                        size_t *hint_v, pc_vec3 out[PC_D3_COUNT])
+{
+    u = clamp(u, s->domain[0], s->domain[1]);
+    v = clamp(v, s->domain[2], s->domain[3]);
+    const size_t span_u = pc_knot_span(s->knots_u, s->n_u, s->deg_u, u, hint_u ? *hint_u : 0);
+    const size_t span_v = pc_knot_span(s->knots_v, s->n_v, s->deg_v, v, hint_v ? *hint_v : 0);
+    if (hint_u)
+        *hint_u = span_u;
+    if (hint_v)
+        *hint_v = span_v;
+
+    double nu[D3_ORDER + 1][D3_MAX_P1], nv[D3_ORDER + 1][D3_MAX_P1];
+    basis_derivatives(s->knots_u, span_u, s->deg_u, u, D3_ORDER, nu);
+    basis_derivatives(s->knots_v, span_v, s->deg_v, v, D3_ORDER, nv);
+
+    double aw[D3_ORDER + 1][D3_ORDER + 1][4];
+    homogeneous_derivatives(s, span_u, span_v, nu, nv, aw);
+
+    /* Quotient rule for S = A / w (The NURBS Book, algorithm A4.4): in
+     * order of total degree, so every S_(k-i, l-j) used is already known. */
+    const double w = aw[0][0][3];
+    for (int order = 0; order <= D3_ORDER; ++order) {
+        for (int k = order; k >= 0; --k) {
+            const int l = order - k;
+            pc_vec3 acc = vec3(aw[k][l][0], aw[k][l][1], aw[k][l][2]);
+            for (int i = 0; i <= k; ++i)
+                for (int j = 0; j <= l; ++j) {
+                    if (i == 0 && j == 0)
+                        continue;
+                    const double c = binomial3(k, i) * binomial3(l, j) * aw[i][j][3];
+                    acc = vec3_axpy(acc, -c, out[slot(k - i, l - j)]);
+                }
+            out[slot(k, l)] = vec3_scale(acc, 1.0 / w);
+        }
+    }
+}

@@ -1,0 +1,128 @@
+/*
+ * The geometry module on the real CAD surfaces of ../shared/data/real:
+ * evaluation routes agree (de Boor on the clamped data, basis functions,
+ * Bezier patches), patch boxes contain the surface, and a point lifted off
+ * the surface along the normal has its base point among its foot points and
+ * is at most the lift away from the surface.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "api/handles.h"
+#include "check.h"
+#include "deboor.h"
+#include "point/point.h"
+
+/* Rounding of evaluations on real data, relative to the surface size. */
+#define TOL_EVAL 1e-11
+/* Surfaces checked per file and points per surface (runtime bound). */
+#define MAX_SURFACES 6
+#define POINTS 3
+#define LIFT 1e-3 /* of the surface size */
+
+static const char *const k_files[] = {"sunglasses_lens.igs", "bladex_upper.iges", "hammer.iges",
+                                      "bearing.iges",        "linkrods.step",     "test-joinsurf_01.stp",
+                                      "test_pipe_out_true.step", "car_shell1.xml", "horn.xml",
+                                      "shroud_kaplan.xml",   "egg.xml",           "teapot_newell_spd.txt"};
+
+/* A view of the library's clamped data as user arrays for the oracle. */
+static pc_shape_surface as_shape(const pc_nurbs_surface *n)
+{
+    const size_t count = n->n_u * n->n_v;
+    pc_shape_surface s = {n->deg_u, n->deg_v, n->n_u, n->n_v, malloc(3 * count * sizeof(double)),
+                          malloc(count * sizeof(double)), n->knots_u, n->knots_v};
+    for (size_t i = 0; i < count; ++i) {
+        const double w = n->cw[4 * i + 3];
+        for (size_t k = 0; k < 3; ++k)
+            s.ctrl[3 * i + k] = n->cw[4 * i + k] / w;
+        s.weights[i] = w;
+    }
+    return s;
+}
+
+static void check_surface(const projcurve_surface *s, const char *file, size_t index,
+                          pc_test_rng *rng)
+{
+    const pc_nurbs_surface *n = &s->nurbs;
+    const double *dom = n->domain;
+    pc_shape_surface view = as_shape(n);
+    for (int k = 0; k < 20; ++k) {
+        const double u = pc_test_rng_uniform(rng, dom[0], dom[1]);
+        const double v = pc_test_rng_uniform(rng, dom[2], dom[3]);
+        double ref[3];
+        pc_deboor_surface(&view, u, v, ref);
+        pc_vec3 a[6], b[6];
+        pc_nurbs_surface_eval(n, u, v, 2, NULL, NULL, a);
+        const pc_bezier_patch *patch = &s->grid.patches[pc_patch_grid_locate(&s->grid, u, v)];
+        pc_bezier_patch_eval(patch, u, v, 2, b);
+        const double e1 = vec3_dist(a[0], vec3_load(ref)), e2 = vec3_dist(b[0], a[0]);
+        if (!(e1 <= TOL_EVAL * s->size && e2 <= TOL_EVAL * s->size))
+            pc_test_fail_at(__FILE__, __LINE__, "%s surface %zu at (%g, %g): de Boor %.3g, Bezier %.3g",
+                            file, index, u, v, e1, e2);
+        ++pc_test_checks;
+        const double pt[3] = {a[0].x, a[0].y, a[0].z};
+        int inside = 1;
+        for (int c = 0; c < 3; ++c)
+            inside &= pt[c] >= patch->box[c] - TOL_EVAL * s->size &&
+                      pt[c] <= patch->box[c + 3] + TOL_EVAL * s->size;
+        CHECK(inside);
+    }
+    free(view.ctrl);
+    free(view.weights);
+
+    pc_foot_list feet = {NULL, 0, 0};
+    for (int k = 0; k < POINTS; ++k) {
+        /* Stay off the boundary and off singular points. */
+        const double u = dom[0] + (dom[1] - dom[0]) * pc_test_rng_uniform(rng, 0.05, 0.95);
+        const double v = dom[2] + (dom[3] - dom[2]) * pc_test_rng_uniform(rng, 0.05, 0.95);
+        pc_vec3 d[3];
+        pc_nurbs_surface_eval(n, u, v, 1, NULL, NULL, d);
+        const pc_vec3 normal = vec3_cross(d[1], d[2]);
+        if (!(vec3_norm(normal) > 1e-6 * (vec3_dot(d[1], d[1]) + vec3_dot(d[2], d[2]))))
+            continue;
+        const pc_vec3 p = vec3_axpy(d[0], LIFT * s->size, vec3_normalize(normal));
+        pc_surface_point best;
+        CHECK_OK(pc_surface_closest(NULL, s, p, &best));
+        if (!(best.dist <= LIFT * s->size * (1.0 + 1e-9)))
+            pc_test_fail_at(__FILE__, __LINE__, "%s surface %zu: closest %.17g > lift %.17g", file,
+                            index, best.dist, LIFT * s->size);
+        ++pc_test_checks;
+        CHECK_OK(pc_surface_foot_points(NULL, s, p, &feet));
+        int found = 0;
+        for (size_t f = 0; f < feet.count; ++f)
+            found |= vec3_dist(feet.items[f].q, d[0]) <= 1e-7 * s->size;
+        if (!found)
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "%s surface %zu: base point (%.9g, %.9g) not among %zu foot points", file,
+                            index, u, v, feet.count);
+        ++pc_test_checks;
+    }
+    pc_foot_list_free(&feet);
+}
+
+int main(void)
+{
+    FILE *probe = fopen(pc_test_shared_path("data/real/SOURCES.md"), "r");
+    if (probe == NULL)
+        pc_test_skip("../shared/data/real is not available");
+    fclose(probe);
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 2026);
+    for (size_t f = 0; f < sizeof k_files / sizeof *k_files; ++f) {
+        char rel[256];
+        snprintf(rel, sizeof rel, "data/real/%s", k_files[f]);
+        projcurve_model *m = NULL;
+        if (projcurve_model_read_file(NULL, pc_test_shared_path(rel), &m) != PROJCURVE_OK) {
+            pc_test_fail_at(__FILE__, __LINE__, "%s does not load", rel);
+            continue;
+        }
+        const size_t count = projcurve_model_surface_count(m);
+        /* Spread the checked surfaces over the file. */
+        const size_t step = count > MAX_SURFACES ? count / MAX_SURFACES : 1;
+        for (size_t i = 0; i < count; i += step)
+            check_surface(projcurve_model_surface(m, i), k_files[f], i, &rng);
+        projcurve_model_destroy(m);
+    }
+    return pc_test_finish("test_geometry_real");
+}
