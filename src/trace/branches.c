@@ -175,6 +175,31 @@ static projcurve_status active_points(pc_tracer *tr, double t, pc_seed_list *out
     return PROJCURVE_OK;
 }
 
+/* Moves each active point (interpolated, in the order of active_points)
+ * onto the exact projection at t with the corrector, so that matching does
+ * not depend on how coarse the branch's steps are. A correction that moves
+ * farther than the branch's segment is long is not trusted (it may have
+ * found another sheet): the interpolated point stays. */
+static void polish_active_points(pc_tracer *tr, double t, pc_seed_list *active)
+{
+    const pc_projector *proj = tr->proj;
+    size_t k = 0;
+    for (size_t i = 0; i < tr->r->n_branches && k < active->count; ++i) {
+        const pc_branch *b = &tr->r->branches[i];
+        if (!branch_covers(b, t))
+            continue;
+        const double *p = b->points + 3 * segment_at(b, t);
+        const double reach = sqrt((p[4] - p[1]) * (p[4] - p[1]) + (p[5] - p[2]) * (p[5] - p[2]));
+        pc_seed *a = &active->items[k++];
+        double uv[2] = {a->u, a->v};
+        if (proj->correct(proj, t, uv, NULL) &&
+            sqrt((uv[0] - a->u) * (uv[0] - a->u) + (uv[1] - a->v) * (uv[1] - a->v)) <= reach) {
+            a->u = uv[0];
+            a->v = uv[1];
+        }
+    }
+}
+
 /* The sweep step at t: half an arc-length step ds of the fastest of the
  * branches alive (speed measured on their polylines) and the curve itself.
  * Half, so that the normal motion of a ray's hits between two checks stays
@@ -285,6 +310,7 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
         if (st != PROJCURVE_OK)
             break;
         drop_coincident(tr, &found);
+        polish_active_points(tr, t, &active);
         if (found.count > cap_matched) {
             unsigned char *m = realloc(matched, found.count);
             if (m == NULL) {
