@@ -469,11 +469,12 @@ typedef enum projcurve_stat {
     PROJCURVE_STAT_POINTS = 0,        /* traced points, all branches */
     PROJCURVE_STAT_STEPS = 1,         /* predictor steps attempted */
     PROJCURVE_STAT_NEWTON_ITERATIONS = 2,
-    PROJCURVE_STAT_AVG_ERROR = 3,     /* seed 000 eq. (3.8): mean |predicted - corrected| */
+    PROJCURVE_STAT_AVG_ERROR = 3,     /* seed 000 eq. (3.8): mean estimation error of the
+                                         predicted points, |Dir x (S - P)| / |S - P| */
     PROJCURVE_STAT_JUMPS = 4,         /* branches found in mid-curve */
     PROJCURVE_STAT_PIECES = 5,        /* composed pieces, all branches */
     PROJCURVE_STAT_TOL_DISTANCE = 6,  /* eps_D actually used (model units) */
-    PROJCURVE_STAT_MAX_ERROR = 7      /* largest |predicted - corrected| */
+    PROJCURVE_STAT_MAX_ERROR = 7      /* largest estimation error (3.8) */
 } projcurve_stat;
 
 PROJCURVE_API void projcurve_result_destroy(projcurve_result *result);

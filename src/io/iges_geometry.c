@@ -233,8 +233,10 @@ static projcurve_status read_102(const pc_iges_file *f, size_t de, pc_io_curve *
     }
     const double gap_tol = PC_IGES_JOIN_REL_GAP * (1.0 + max_abs_coordinate(parts, (size_t)n));
     st = pc_io_curve_join(f->ctx, f->arena, parts, (size_t)n, gap_tol, out);
-    if (st == PROJCURVE_ERR_INVALID_ARGUMENT) {
-        *skip_reason = "its curves do not connect end to start";
+    if (st == PROJCURVE_ERR_INVALID_ARGUMENT || st == PROJCURVE_ERR_UNSUPPORTED) {
+        *skip_reason = st == PROJCURVE_ERR_INVALID_ARGUMENT
+                           ? "its curves do not connect end to start"
+                           : "its curves have too many knots to join";
         return PROJCURVE_OK;
     }
     if (st != PROJCURVE_OK)

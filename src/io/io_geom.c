@@ -5,6 +5,11 @@
 
 #include "common/error.h"
 
+/* Splitting into Bezier segments inserts knots one by one (each insertion
+ * moves the points after it): curves whose splitting would cost more point
+ * moves than this are refused rather than joined slowly. */
+#define PC_IO_MAX_JOIN_WORK 100000000.0
+
 /* A quarter turn: arcs are split into Bezier segments no wider than this so
  * that every middle weight cos(angle / 2) stays >= cos(pi / 4). */
 #define PC_ARC_MAX_SEGMENT (M_PI / 2.0)
@@ -311,6 +316,11 @@ static projcurve_status hcurve_bezier(projcurve_context *ctx, pc_arena *arena,
     size_t n_interior = 0;
     for (size_t i = p + 1; i < c->n_ctrl; ++i)
         n_interior += (c->knots[i] > t0 && c->knots[i] < t1 && c->knots[i] != c->knots[i - 1]);
+    const double inserts = (double)n_interior * (double)p;
+    if (inserts * ((double)c->n_ctrl + inserts) > PC_IO_MAX_JOIN_WORK)
+        return pc_fail(ctx, PROJCURVE_ERR_UNSUPPORTED,
+                       "a curve with %zu interior knots of degree %zu is too large to join",
+                       n_interior, p);
     projcurve_status st = hcurve_restrict(ctx, arena, c, t0, t1, n_interior * p, h);
     if (st != PROJCURVE_OK)
         return st;

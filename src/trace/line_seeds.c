@@ -65,8 +65,10 @@ static int collect_patch(void *user, size_t patch_index)
     if (f->n_patches == f->cap_patches) {
         const size_t cap = f->cap_patches ? 2 * f->cap_patches : 16;
         size_t *p = realloc(f->patches, cap * sizeof *p);
-        if (p == NULL)
-            return 1; /* stop: the caller sees the list as incomplete */
+        if (p == NULL) {
+            f->patches_incomplete = 1;
+            return 1; /* stop the walk */
+        }
         f->patches = p;
         f->cap_patches = cap;
     }
@@ -90,6 +92,9 @@ static int push_polygon_hit(pc_polygon_hits *l, size_t patch, pc_vec3 x)
     return 1;
 }
 
+/* Patch boxes are padded by this fraction of the model size so that a ray
+ * grazing a box is not lost. */
+#define PC_POLYGON_BOX_PAD 1e-9
 /* Most control-polygon hits of one ray with one patch that are kept. */
 #define PC_MAX_POLYGON_HITS 32
 
@@ -98,8 +103,11 @@ int pc_line_polygon_hits(pc_line_finder *f, pc_vec3 origin, pc_polygon_hits *out
     const projcurve_surface *s = f->proj->surface;
     out->count = 0;
     f->n_patches = 0;
-    const double pad = 1e-9 * s->size;
+    f->patches_incomplete = 0;
+    const double pad = PC_POLYGON_BOX_PAD * s->size;
     pc_bvh_query_line(&s->bvh, origin, f->dir, 0.0, INFINITY, pad, collect_patch, f);
+    if (f->patches_incomplete)
+        return 0;
     for (size_t k = 0; k < f->n_patches; ++k) {
         pc_vec3 x[PC_MAX_POLYGON_HITS];
         const size_t idx = f->patches[k];

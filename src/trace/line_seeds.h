@@ -36,6 +36,7 @@ typedef struct pc_line_finder {
     pc_polygon_hits l1, l2;
     size_t *patches;
     size_t n_patches, cap_patches;
+    int patches_incomplete;    /* memory ran out collecting them */
     int have_l1;
 } pc_line_finder;
 

@@ -75,9 +75,12 @@ static int crosses_fold(const pc_proj_point *a, const pc_proj_point *b)
     return (a->det > 0.0 && b->det < 0.0) || (a->det < 0.0 && b->det > 0.0);
 }
 
-static void record_error(pc_tracer *tr)
+/* Adds the estimation error of an accepted step to the statistics: the
+ * projector's own measure (seed 000 eq. (3.8) for the directional kind), or
+ * the residual at the guess relative to the model size. */
+static void record_error(pc_tracer *tr, double residual_error)
 {
-    const double e = tr->proj->guess_error ? *tr->proj->guess_error : 0.0;
+    const double e = tr->proj->guess_error ? *tr->proj->guess_error : residual_error;
     tr->r->stats.error_sum += e;
     tr->r->stats.error_count += 1.0;
     if (e > tr->r->stats.error_max)
@@ -101,6 +104,8 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     const int left = outside(tr->dom, pred);
     double uv[2] = {clamp(pred[0], tr->dom[0], tr->dom[1]),
                     clamp(pred[1], tr->dom[2], tr->dom[3])};
+    const double residual_error =
+        proj->guess_error ? 0.0 : proj->residual(proj, t, uv[0], uv[1]) / proj->model_size;
     int iterations = 0;
     const int ok = proj->correct(proj, t, uv, &iterations);
     tr->r->stats.newton_iterations += (double)iterations;
@@ -123,7 +128,7 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
         return STEP_REJECT;
     if (!proj->derivatives(proj, t, uv[0], uv[1], next) || crosses_fold(cur, next))
         return STEP_REJECT;
-    record_error(tr);
+    record_error(tr, residual_error);
     return STEP_ACCEPT;
 }
 
@@ -156,9 +161,10 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
         return PROJCURVE_OK;
     }
     double scale = 1.0; /* halvings after failed corrections, seed 000 s3.3 */
-    /* Each pass adds a vertex or halves the step; both are bounded (the
-     * vertex budget, and min_step), so this bound is never the one hit. */
-    const size_t max_passes = 4 * tr->max_points + 1000;
+    /* Each pass adds a vertex or halves the step. Vertices are bounded by
+     * the budget, and consecutive halvings by min_step (max_step / min_step
+     * < 2^60), so this bound is never the one hit. */
+    const size_t max_passes = PC_TRACE_MAX_HALVINGS * (tr->max_points + 1);
     for (size_t pass = 0; pass < max_passes; ++pass) {
         const double remaining = sign * (t_stop - cur.t);
         if (remaining <= tr->min_step) {
