@@ -5,6 +5,7 @@
  * or a clear error (status + message naming the line or entity); crashes,
  * hangs and leaks are caught by running this test under ASan/UBSan.
  */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -311,6 +312,139 @@ static void gismo_cases(void)
         (void)read_mem(xml, cut, NULL);
 }
 
+/* ---- files whose cost grows with references, built here ---------------- */
+
+typedef struct text_buf {
+    char *s;
+    size_t len, cap;
+} text_buf;
+
+static void put(text_buf *b, const char *fmt, ...)
+{
+    va_list args, again;
+    va_start(args, fmt);
+    va_copy(again, args);
+    const int n = vsnprintf(NULL, 0, fmt, args);
+    va_end(args);
+    if (b->len + (size_t)n + 1 > b->cap) {
+        b->cap = 2 * (b->len + (size_t)n + 1);
+        b->s = realloc(b->s, b->cap);
+    }
+    vsnprintf(b->s + b->len, (size_t)n + 1, fmt, again);
+    va_end(again);
+    b->len += (size_t)n;
+}
+
+/* An IGES file of n entities (type, parameters without the type). */
+static char *iges_file(const int *types, char *const *params, size_t n, size_t *len)
+{
+    text_buf out = {0}, pars = {0};
+    size_t *start = calloc(n, sizeof *start), *count = calloc(n, sizeof *count), seq = 1;
+    put(&out, "%-72sS%7d\n", "generated", 1);
+    put(&out, "%-72sG%7d\n", "1H,,1H;;", 1);
+    for (size_t e = 0; e < n; ++e) {
+        char head[16];
+        snprintf(head, sizeof head, "%d,", types[e]);
+        const size_t hl = strlen(head), pl = strlen(params[e]);
+        char *all = malloc(hl + pl + 1);
+        memcpy(all, head, hl);
+        memcpy(all + hl, params[e], pl + 1);
+        start[e] = seq;
+        for (size_t at = 0; at < hl + pl; at += 64, ++count[e])
+            put(&pars, "%-64.64s %7zuP%7zu\n", all + at, 2 * e + 1, seq++);
+        free(all);
+    }
+    for (size_t e = 0; e < n; ++e) {
+        put(&out, "%8d%8zu%8d%8d%8d%8d%8d%8d%8sD%7zu\n", types[e], start[e], 0, 0, 0, 0, 0, 0,
+            "00000000", 2 * e + 1);
+        put(&out, "%8d%8d%8d%8zu%8d%8s%8s%8s%8dD%7zu\n", types[e], 0, 0, count[e], 0, "", "", "", 0,
+            2 * e + 2);
+    }
+    put(&out, "%s", pars.s);
+    put(&out, "S%7dG%7dD%7zuP%7zu%40sT%7d\n", 1, 1, 2 * n, seq - 1, "", 1);
+    free(pars.s);
+    free(start);
+    free(count);
+    *len = out.len;
+    return out.s;
+}
+
+/* A degree-1 126 with n points along x. */
+static char *long_curve(size_t n)
+{
+    text_buf b = {0};
+    put(&b, "%zu,1,0,0,1,0,", n - 1);
+    put(&b, "0.,");
+    for (size_t i = 0; i < n; ++i)
+        put(&b, "%zu.,", i);
+    put(&b, "%zu.,", n - 1);
+    for (size_t i = 0; i < n; ++i)
+        put(&b, "1.,");
+    for (size_t i = 0; i < n; ++i)
+        put(&b, "%zu.,0.,0.,", i);
+    put(&b, "0.,%zu.;", n - 1);
+    return b.s;
+}
+
+static void reference_bombs(void)
+{
+    /* 20000 composite members all pointing at one 4000-point curve. */
+    text_buf composite = {0};
+    const size_t members = 20000;
+    put(&composite, "%zu", members);
+    for (size_t i = 0; i < members; ++i)
+        put(&composite, ",1");
+    put(&composite, ";");
+    int types[2] = {126, 102};
+    char *params[2] = {long_curve(4000), composite.s};
+    size_t len;
+    char *text = iges_file(types, params, 2, &len);
+    expect_error(text, len, PROJCURVE_ERR_PARSE, "too many times", "many references, IGES");
+    free(text);
+    /* A composite of a curve with 30000 knots: listed, not joined slowly. */
+    free(params[0]);
+    params[0] = long_curve(30000);
+    free(composite.s);
+    composite = (text_buf){0};
+    put(&composite, "2,1,1;");
+    params[1] = composite.s;
+    text = iges_file(types, params, 2, &len);
+    projcurve_model *m = NULL;
+    CHECK_OK(projcurve_model_read_memory(ctx, text, len, &m));
+    int listed = 0;
+    for (size_t i = 0; i < projcurve_model_skipped_count(m); ++i)
+        listed |= strstr(projcurve_model_skipped(m, i), "too many knots") != NULL;
+    CHECK(listed);
+    projcurve_model_destroy(m);
+    free(text);
+    free(params[0]);
+    free(params[1]);
+
+    /* STEP: 3000 trimmed curves over one 3000-point B-spline. */
+    text_buf step = {0};
+    const size_t n = 3000;
+    put(&step, "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n");
+    for (size_t i = 1; i <= n; ++i)
+        put(&step, "#%zu=CARTESIAN_POINT('',(%zu.,0.,0.));\n", i, i);
+    put(&step, "#%zu=B_SPLINE_CURVE_WITH_KNOTS('',1,(", n + 1);
+    for (size_t i = 1; i <= n; ++i)
+        put(&step, i < n ? "#%zu," : "#%zu", i);
+    put(&step, "),.UNSPECIFIED.,.F.,.F.,(2,");
+    for (size_t i = 2; i < n; ++i)
+        put(&step, "1,");
+    put(&step, "2),(");
+    for (size_t i = 0; i < n; ++i)
+        put(&step, i + 1 < n ? "%zu.," : "%zu.", i);
+    put(&step, "),.UNSPECIFIED.);\n");
+    for (size_t i = 0; i < n; ++i)
+        put(&step, "#%zu=TRIMMED_CURVE('',#%zu,(PARAMETER_VALUE(1.)),(PARAMETER_VALUE(2.)),.T.,"
+                   ".PARAMETER.);\n",
+            n + 2 + i, n + 1);
+    put(&step, "ENDSEC;\nEND-ISO-10303-21;\n");
+    expect_error(step.s, step.len, PROJCURVE_ERR_PARSE, "too many times", "many references, STEP");
+    free(step.s);
+}
+
 static void api_misuse(void)
 {
     projcurve_model *m = NULL;
@@ -344,6 +478,7 @@ int main(void)
     mutate("data/real/horn.xml", 100, 4);
     mutate("data/real/teapot_newell_spd.txt", 200, 5);
     iges_cases();
+    reference_bombs();
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_malformed");
 }

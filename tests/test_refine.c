@@ -45,6 +45,7 @@ typedef struct shape {
     /* exact (u, v) at t, for the traced polyline given to the refinement */
     void (*exact_uv)(const struct shape *sh, double t, double uv[2]);
     int orthogonal; /* 0: projection along -z */
+    double bump;    /* height-field curves: amplitude of a narrow bump in y */
 } shape;
 
 /* The test's own projector: along -z, or orthogonal. */
@@ -61,23 +62,30 @@ static void make_projector(const shape *sh, pc_oracle_dir *d, pc_projector *proj
 #define HF_X 10.0
 #define HF_Y 8.0
 
-static void hf_curve_xy(double t, double xy[2], double d1[2], double d2[2])
+/* Width (in t) of the narrow bump some tests add to the curve. */
+#define HF_BUMP_WIDTH 0.01
+
+static void hf_curve_xy(const shape *sh, double t, double xy[2], double d1[2], double d2[2])
 {
-    /* x from 0.3 to 9.7, y a wave across most of the v range */
+    /* x from 0.3 to 9.7, y a wave across most of the v range, plus
+     * sh->bump * exp(-((t - 1/2) / w)^2) */
     const double w = 3.0 * PI;
+    const double z = (t - 0.5) / HF_BUMP_WIDTH, g = sh->bump * exp(-z * z);
+    const double g1 = -2.0 * z / HF_BUMP_WIDTH * g;
+    const double g2 = (4.0 * z * z - 2.0) / (HF_BUMP_WIDTH * HF_BUMP_WIDTH) * g;
     xy[0] = 0.3 + 9.4 * t;
-    xy[1] = 4.0 + 3.2 * sin(w * t);
+    xy[1] = 4.0 + 3.2 * sin(w * t) + g;
     d1[0] = 9.4;
-    d1[1] = 3.2 * w * cos(w * t);
+    d1[1] = 3.2 * w * cos(w * t) + g1;
     d2[0] = 0.0;
-    d2[1] = -3.2 * w * w * sin(w * t);
+    d2[1] = -3.2 * w * w * sin(w * t) + g2;
 }
 
 static int hf_curve_fn(void *user, double t, double out[9])
 {
-    (void)user;
+    const shape *sh = user;
     double xy[2], d1[2], d2[2];
-    hf_curve_xy(t, xy, d1, d2);
+    hf_curve_xy(sh, t, xy, d1, d2);
     const double v[9] = {xy[0], xy[1], 20.0, d1[0], d1[1], 0.0, d2[0], d2[1], 0.0};
     memcpy(out, v, sizeof v);
     return 0;
@@ -85,9 +93,8 @@ static int hf_curve_fn(void *user, double t, double out[9])
 
 static void hf_exact_uv(const shape *sh, double t, double uv[2])
 {
-    (void)sh;
     double xy[2], d1[2], d2[2];
-    hf_curve_xy(t, xy, d1, d2);
+    hf_curve_xy(sh, t, xy, d1, d2);
     uv[0] = xy[0] / HF_X;
     uv[1] = xy[1] / HF_Y;
 }
@@ -95,7 +102,7 @@ static void hf_exact_uv(const shape *sh, double t, double uv[2])
 static void hf_exact(const shape *sh, double t, pc_vec3 q[3])
 {
     double xy[2], d1[2], d2[2];
-    hf_curve_xy(t, xy, d1, d2);
+    hf_curve_xy(sh, t, xy, d1, d2);
     const double u1 = d1[0] / HF_X, v1 = d1[1] / HF_Y, u2 = d2[0] / HF_X, v2 = d2[1] / HF_Y;
     double s6[18];
     projcurve_surface_eval(NULL, sh->surface, xy[0] / HF_X, xy[1] / HF_Y, 2, s6);
@@ -153,7 +160,8 @@ static int make_height_field(shape *sh, int P, int NU, int NV, const char *name)
     if (projcurve_surface_create_nurbs(NULL, P, P, NU, NV, ctrl, NULL, ku, kv, &sh->surface) !=
         PROJCURVE_OK)
         return 0;
-    return projcurve_curve_create_callback(NULL, hf_curve_fn, NULL, 0.0, 1.0, &sh->curve) ==
+    /* sh is the curve's user data: it must stay where it is */
+    return projcurve_curve_create_callback(NULL, hf_curve_fn, sh, 0.0, 1.0, &sh->curve) ==
            PROJCURVE_OK;
 }
 
@@ -586,7 +594,7 @@ static void test_degenerate_branches(shape *sh)
 static pc_vec3 hf_side_tangent(const shape *sh, const pc_piece *pc, double t)
 {
     double xy[2], d1[2], d2[2];
-    hf_curve_xy(t, xy, d1, d2);
+    hf_curve_xy(sh, t, xy, d1, d2);
     const pc_patch_grid *g = &sh->surface->grid;
     const size_t k = pc_patch_grid_locate(g, 0.5 * (pc->uv[0] + pc->uv[2]),
                                           0.5 * (pc->uv[1] + pc->uv[3]));
@@ -646,6 +654,39 @@ static void test_creased_surface(void)
     free_shape(&sh);
 }
 
+/* A narrow bump (width 0.01 in t, 1.5 high) in the middle of the curve,
+ * resolved by the traced polyline (spacing 0.005): the sampling of the
+ * deviation must not step over it. */
+static void test_narrow_bump(void)
+{
+    shape sh;
+    CHECK(make_height_field(&sh, 3, 9, 7, "bicubic, narrow bump"));
+    sh.bump = 1.5;
+    pc_oracle_dir d;
+    pc_projector proj;
+    make_projector(&sh, &d, &proj);
+    static const double rel_eps[] = {1e-2, 1e-4};
+    for (size_t e = 0; e < 2; ++e) {
+        struct projcurve_options o;
+        pc_options_defaults(&o);
+        o.tol_distance = rel_eps[e] * sh.surface->size;
+        o.tol_angle_deg = 10.0;
+        projcurve_result *r = traced_result(&sh, sh.t0, sh.t1, 201);
+        CHECK_OK(pc_refine_and_compose(NULL, &proj, &o, r));
+        const pc_branch *b = &r->branches[0];
+        CHECK(b->n_pieces > 0);
+        if (b->n_pieces > 0) {
+            const pc_oracle_measure m = measure_branch(&sh, b);
+            printf("%s: eps_D %.0e: %zu pieces, Hausdorff %.2f eps_D\n", sh.name, rel_eps[e],
+                   b->n_pieces, m.hausdorff / o.tol_distance);
+            CHECK(m.hausdorff <= o.tol_distance);
+            CHECK(m.max_angle <= o.tol_angle_deg * (1.0 + 1e-9));
+        }
+        projcurve_result_destroy(r);
+    }
+    free_shape(&sh);
+}
+
 int main(void)
 {
     shape shapes[3];
@@ -663,6 +704,7 @@ int main(void)
     test_failing_corrector(&shapes[1]);
     test_degenerate_branches(&shapes[0]);
     test_creased_surface();
+    test_narrow_bump();
     for (int k = 0; k < 3; ++k)
         free_shape(&shapes[k]);
     return pc_test_finish("test_refine");

@@ -254,6 +254,28 @@ pc_clip_outcome pc_bezier_clip_step(double *net, int m, int n, double zero_tol, 
     return clip_step(net, m, n, zero_tol, box);
 }
 
+int pc_bezier_clip_is_sliver(const double *net, int m, int n, double width)
+{
+    const size_t row = (size_t)(m + 1), np = row * (size_t)(n + 1);
+    const double *p00 = net, *p10 = net + 2 * (size_t)m;
+    const double *p01 = net + 2 * (size_t)n * row, *p11 = p01 + 2 * (size_t)m;
+    const double a[2] = {p10[0] - p00[0] + p11[0] - p01[0], p10[1] - p00[1] + p11[1] - p01[1]};
+    const double b[2] = {p01[0] - p00[0] + p11[0] - p10[0], p01[1] - p00[1] + p11[1] - p10[1]};
+    const double la = a[0] * a[0] + a[1] * a[1], lb = b[0] * b[0] + b[1] * b[1];
+    const double *e = la >= lb ? a : b;
+    const double len = sqrt(la >= lb ? la : lb);
+    if (!(len > 0.0))
+        return 0;
+    const double normal[2] = {-e[1] / len, e[0] / len};
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t k = 0; k < np; ++k) {
+        const double f = normal[0] * net[2 * k] + normal[1] * net[2 * k + 1];
+        lo = min2(lo, f);
+        hi = max2(hi, f);
+    }
+    return hi - lo <= width && lo <= width && hi >= -width;
+}
+
 void pc_bezier_clip_restrict(double *net, int m, int n, const double box[4])
 {
     const net_view vs = view_along(m, n, 0), vt = view_along(m, n, 1);

@@ -32,6 +32,12 @@ typedef enum pc_clip_outcome {
  * root on the box's edge is not clipped away by the sign of a rounding. */
 pc_clip_outcome pc_bezier_clip_step(double *net, int m, int n, double zero_tol, double box[4]);
 
+/* Whether the planar net is a sliver through the origin: its extent
+ * across its longer corner-to-corner direction is at most width and
+ * that band contains 0. Near a tangent point the box's image is such a
+ * sliver (the Jacobian has rank one) and clipping cannot shrink it. */
+int pc_bezier_clip_is_sliver(const double *net, int m, int n, double width);
+
 /* Restricts a net over [0, 1]^2 to box = {s0, s1, t0, t1} (de Casteljau). */
 void pc_bezier_clip_restrict(double *net, int m, int n, const double box[4]);
 

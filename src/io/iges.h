@@ -51,6 +51,12 @@ typedef struct pc_iges_file {
     char param_delim, record_delim;
     pc_iges_entry *entries;
     size_t n_entries;
+    /* Parameter characters tokenised so far and the most allowed: entities
+     * referenced many times (members, matrices) are parsed each time, and
+     * the budget keeps a file of many references to one large entity from
+     * taking quadratic time. */
+    size_t *work_done;
+    size_t work_limit;
 } pc_iges_file;
 
 /* The parameters of one entity. */

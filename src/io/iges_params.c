@@ -142,6 +142,12 @@ projcurve_status pc_iges_params_of(const pc_iges_file *f, size_t de, pc_iges_par
     projcurve_status st = gather(f, de, e, &s, &len);
     if (st != PROJCURVE_OK)
         return st;
+    *f->work_done += len;
+    if (*f->work_done > f->work_limit)
+        return pc_fail(f->ctx, PROJCURVE_ERR_PARSE,
+                       "IGES entity %d at DE %zu: the file refers to its entities too many times "
+                       "(more than %zu parameter characters read)",
+                       e->type, de, f->work_limit);
     size_t cap = 2;
     for (size_t i = 0; i < len; ++i)
         cap += (s[i] == f->param_delim);

@@ -16,6 +16,10 @@
 
 #define PC_IGES_STATUS_PHYSICALLY_DEPENDENT 1
 #define PC_IGES_USE_PARAMETRIC 5
+/* Parameter text may be tokenised this many times the file size (each
+ * entity once, members and matrices again for each reference). */
+#define PC_IGES_WORK_FACTOR 16
+#define PC_IGES_WORK_MIN ((size_t)1 << 20)
 
 static int is_curve_type(int type)
 {
@@ -128,6 +132,9 @@ projcurve_status pc_iges_read(projcurve_context *ctx, const char *data, size_t l
     memset(&f, 0, sizeof f);
     f.ctx = ctx;
     f.arena = &arena;
+    size_t work_done = 0;
+    f.work_done = &work_done;
+    f.work_limit = PC_IGES_WORK_FACTOR * len + PC_IGES_WORK_MIN;
     projcurve_status st = pc_iges_split(&f, data, len);
     if (st == PROJCURVE_OK)
         st = pc_iges_read_global(&f);

@@ -55,6 +55,11 @@ typedef struct pc_step_file {
     size_t len;
     pc_step_instance *instances; /* sorted by id */
     size_t n_instances;
+    /* Characters parsed so far and the most allowed: an instance is parsed
+     * again for each reference to it, and the budget keeps a file of many
+     * references to one large instance from taking quadratic time. */
+    size_t *work_done;
+    size_t work_limit;
 } pc_step_file;
 
 /* Indexes the DATA section (step_lexer.c). instances is malloc'ed: release

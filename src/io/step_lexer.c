@@ -333,6 +333,11 @@ projcurve_status pc_step_parse(const pc_step_file *f, const pc_step_instance *in
                                pc_arena *arena, pc_step_node **out)
 {
     parser p = {.f = f, .inst = inst, .arena = arena, .pos = inst->begin, .end = inst->end};
+    if (f->work_done != NULL) {
+        *f->work_done += inst->end - inst->begin;
+        if (*f->work_done > f->work_limit)
+            return syntax(&p, "the file refers to its instances too many times");
+    }
     skip(&p);
     if (p.pos >= p.end)
         return syntax(&p, "empty instance");

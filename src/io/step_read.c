@@ -20,6 +20,11 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+/* Instance text may be parsed this many times the file size (points are
+ * parsed once per reference). */
+#define PC_STEP_WORK_FACTOR 16
+#define PC_STEP_WORK_MIN ((size_t)1 << 20)
+
 typedef struct reader {
     pc_step_file *f;
     projcurve_model *model;
@@ -697,7 +702,9 @@ projcurve_status pc_step_read_geometry(pc_step_file *f, projcurve_model *model)
 projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t len,
                               projcurve_model *model)
 {
-    pc_step_file f = {.ctx = ctx, .text = data, .len = len};
+    size_t work_done = 0;
+    pc_step_file f = {.ctx = ctx, .text = data, .len = len, .work_done = &work_done,
+                      .work_limit = PC_STEP_WORK_FACTOR * len + PC_STEP_WORK_MIN};
     projcurve_status st = pc_step_index(&f);
     if (st == PROJCURVE_OK)
         st = pc_step_read_geometry(&f, model);
