@@ -309,6 +309,44 @@ static void test_sphere(void)
                    "(u, v) = (%.17g, %.17g)\n", p[0], p[1], p[2], t[0], t[1], t[2],
                    hits.items[0].u, hits.items[0].v);
     }
+    /* Tangent lines at points of patch edges and corners (u = k / 4 are the
+     * patch edges around the axis, v = 1/2 the equator), along the edge, across
+     * it and oblique: one hit, flagged. */
+    for (int k = 0; k < 240; ++k) {
+        const double u = (k % 4) / 4.0 + (k % 3 == 0 ? 0.0 : pc_test_rng_uniform(&rng, 0.01, 0.24));
+        const double v = k % 3 == 1 ? 0.5 : (k % 3 == 0 ? pc_test_rng_uniform(&rng, 0.1, 0.9) : 0.5);
+        double f[9];
+        CHECK_OK(projcurve_surface_eval(NULL, s, u, v, 1, f));
+        const double a = (k % 5) * 0.25 * PI;
+        double t[3] = {cos(a) * f[3] / hypot(hypot(f[3], f[4]), f[5]) + sin(a) * f[6] / hypot(hypot(f[6], f[7]), f[8]),
+                       cos(a) * f[4] / hypot(hypot(f[3], f[4]), f[5]) + sin(a) * f[7] / hypot(hypot(f[6], f[7]), f[8]),
+                       cos(a) * f[5] / hypot(hypot(f[3], f[4]), f[5]) + sin(a) * f[8] / hypot(hypot(f[6], f[7]), f[8])};
+        const double tt = sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+        for (int i = 0; i < 3; ++i)
+            t[i] /= tt;
+        const double o[3] = {f[0] - 1.3 * t[0], f[1] - 1.3 * t[1], f[2] - 1.3 * t[2]};
+        const size_t count = hits_of(s, o, t, 0, &hits);
+        /* u = 0 is the seam of the closed sphere: each side reports its own
+         * (u, v) there (near 0 and near 1: a grazing hit is known to ~1e-7
+         * only, so it may fall just inside either side, or both). */
+        const int seam = u == 0.0;
+        CHECK(seam ? (count == 1 || count == 2) : count == 1);
+        if (seam ? !(count == 1 || count == 2) : count != 1) {
+            printf("  sphere tangent at edge point (u, v) = (%.17g, %.17g): %zu hits\n", u, v, count);
+            continue;
+        }
+        for (size_t h = 0; h < count; ++h) {
+            CHECK(hits.items[h].flags & PROJCURVE_HIT_TANGENT);
+            CHECK_NEAR(hits.items[h].lambda, 1.3, 1e-6);
+            CHECK_NEAR(hits.items[h].v, v, 1e-6);
+            if (seam)
+                CHECK(hits.items[h].u < 1e-6 || hits.items[h].u > 1.0 - 1e-6);
+            else
+                CHECK_NEAR(hits.items[h].u, u, 1e-6);
+        }
+        if (count == 2)
+            CHECK(fabs(hits.items[0].u - hits.items[1].u) > 0.5);
+    }
     /* Lines through the poles, where a whole patch edge collapses to one
      * point: the pole is one hit, and the line's other hit is found. */
     for (int k = 0; k < 400; ++k) {

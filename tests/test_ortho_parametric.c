@@ -160,7 +160,7 @@ static size_t sample_pieces(const projcurve_result *r, size_t branch, double *ou
     return n_pieces;
 }
 
-#define DENSE 6000
+#define DENSE 2000
 #define PIECE_CAP 8000
 
 /* Hausdorff distance between the pieces and the exact polyline exact[0..DENSE]
