@@ -577,6 +577,40 @@ static void test_torus(void)
 
 /* ---- bumpy and folded surfaces ------------------------------------------------------ */
 
+/* Lines through interior patch corners (four patches meet) and points of
+ * interior patch edges of a curved rational surface: that hit once, at
+ * its parameters, not flagged boundary. */
+static void test_curved_corners(void)
+{
+    projcurve_surface *s = make_surface(pc_shape_bumpy(23, 6, 6, 0.3, 1));
+    pc_hit_list hits = {0};
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 24);
+    for (int k = 0; k < 1000; ++k) {
+        const double u = (1 + k % 5) / 6.0;
+        const double v = k % 2 ? (1 + (k / 5) % 5) / 6.0 : pc_test_rng_uniform(&rng, 0.05, 0.95);
+        double f[9], d[3];
+        CHECK_OK(projcurve_surface_eval(NULL, s, u, v, 0, f));
+        random_direction(&rng, d);
+        const double o[3] = {f[0] - 0.9 * d[0], f[1] - 0.9 * d[1], f[2] - 0.9 * d[2]};
+        hits_of(s, o, d, 0, &hits);
+        int at_point = 0;
+        for (size_t h = 0; h < hits.count; ++h) {
+            if (fabs(hits.items[h].u - u) < 1e-6 && fabs(hits.items[h].v - v) < 1e-6) {
+                ++at_point;
+                CHECK_NEAR(hits.items[h].lambda, 0.9, 1e-9);
+                CHECK(!(hits.items[h].flags & PROJCURVE_HIT_BOUNDARY));
+            }
+        }
+        ++pc_test_checks;
+        if (at_point != 1)
+            pc_test_fail_at(__FILE__, __LINE__, "patch corner/edge point (%.17g, %.17g) reported %d times",
+                            u, v, at_point);
+    }
+    pc_hit_list_free(&hits);
+    projcurve_surface_destroy(s);
+}
+
 static void test_bumpy(void)
 {
     projcurve_surface *s = make_surface(pc_shape_bumpy(17, 8, 8, 0.3, 0));
@@ -713,6 +747,7 @@ int main(void)
     test_far_sphere();
     test_cone_apex();
     test_torus();
+    test_curved_corners();
     test_bumpy();
     test_folded();
     test_patch_subset();
