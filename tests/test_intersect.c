@@ -528,22 +528,25 @@ static void test_torus(void)
     const double big_r = 2.0, small_r = 0.5;
     projcurve_surface *s = make_surface(pc_shape_torus(big_r, small_r));
     pc_hit_list hits = {0};
-    /* Lines parallel to x at height z and offset y: four hits where
-     * sqrt(x^2 + y^2) = R +- sqrt(r^2 - z^2). */
-    const double offsets[][2] = {{0.3, 0.2}, {-0.7, 0.1}, {0.05, -0.45}, {1.2, 0.3}};
+    /* Lines parallel to x at height z and offset y meet the torus where
+     * sqrt(x^2 + y^2) = R -+ sqrt(r^2 - z^2) = rho_in, rho_out: four hits
+     * x = -+sqrt(rho^2 - y^2), or two when |y| > rho_in (the line passes
+     * beside the hole). The origin is at x = -5, so lambda = x + 5. */
+    const double offsets[][2] = {{0.3, 0.2}, {-0.7, 0.1}, {0.05, -0.45}, {1.2, 0.3}, {1.9, 0.2}};
     for (size_t k = 0; k < sizeof offsets / sizeof offsets[0]; ++k) {
         const double y = offsets[k][0], z = offsets[k][1];
         const double o[3] = {-5, y, z}, d[3] = {1, 0, 0};
         const double w = sqrt(small_r * small_r - z * z);
+        const double x_out = sqrt((big_r + w) * (big_r + w) - y * y);
+        const double x_in = (big_r - w) * (big_r - w) > y * y ? sqrt((big_r - w) * (big_r - w) - y * y) : NAN;
         double expected[4];
         size_t n_exp = 0;
-        const double rho[2] = {big_r - w, big_r + w};
-        for (int side = -1; side <= 1; side += 2)
-            for (int i = 0; i < 2; ++i) {
-                if (rho[i] * rho[i] < y * y)
-                    continue;
-                expected[n_exp++] = 5.0 + side * sqrt(rho[side < 0 ? 1 - i : i] * rho[side < 0 ? 1 - i : i] - y * y);
-            }
+        expected[n_exp++] = 5.0 - x_out;
+        if (!isnan(x_in)) {
+            expected[n_exp++] = 5.0 - x_in;
+            expected[n_exp++] = 5.0 + x_in;
+        }
+        expected[n_exp++] = 5.0 + x_out;
         const size_t n = hits_of(s, o, d, 0, &hits);
         CHECK(n == n_exp);
         for (size_t h = 0; h < n && h < n_exp; ++h)
