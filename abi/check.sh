@@ -32,7 +32,7 @@ fi
 # For a library, keep only the types of the public headers, as abidw did
 # for the baseline (abidiff rejects these options for an XML input).
 filter=()
-is_elf "$lib" && filter=(--headers-dir2 "$root/include" --drop-private-types)
+is_elf "$lib" && filter=(--headers-dir2 "$root/include" --drop-private-types --exported-interfaces-only)
 abidiff "${filter[@]}" --no-added-syms "$baseline" "$lib"
 rc=$?
 if (( rc & 3 )); then

@@ -22,9 +22,11 @@ fi
 lib=$(find "$build_dir" -maxdepth 1 -name 'libprojcurve.so.*.*' -type f -print -quit)
 [[ -n $lib ]] || { echo "no libprojcurve.so.X.Y.Z in $build_dir" >&2; exit 1; }
 
-# Only types declared in the public headers are kept (--drop-private-types),
+# Only the exported functions and the types declared in the public headers
+# are kept (--exported-interfaces-only, --drop-private-types),
 # and no source locations, so that editing a comment does not touch the file.
-abidw --headers-dir "$root/include" --drop-private-types --no-show-locs \
+abidw --headers-dir "$root/include" --drop-private-types --exported-interfaces-only \
+      --no-show-locs --short-locs \
       --no-corpus-path --no-comp-dir-path --out-file "$root/abi/libprojcurve.abi" "$lib"
 echo "wrote abi/libprojcurve.abi from $lib:"
 grep -c "<elf-symbol name='projcurve_" "$root/abi/libprojcurve.abi" | sed 's/$/ exported functions/'

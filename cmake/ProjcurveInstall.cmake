@@ -20,12 +20,10 @@ install(TARGETS projcurve projcurve_static EXPORT projcurveTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
-# The command-line tool, under whichever target name src/cli gives it.
-foreach(cli_target projcurve_cli projcurve-cli)
-  if(TARGET ${cli_target})
-    install(TARGETS ${cli_target} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-  endif()
-endforeach()
+# The command-line tool (target projcurve_cli of src/cli, file `projcurve`).
+if(TARGET projcurve_cli)
+  install(TARGETS projcurve_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endif()
 
 install(EXPORT projcurveTargets NAMESPACE projcurve::
         FILE projcurveTargets.cmake DESTINATION ${PROJCURVE_CMAKE_DIR})

@@ -374,9 +374,15 @@ PROJCURVE_API projcurve_status projcurve_surface_foot_points(projcurve_context *
 /* All intersections of the line origin + lambda * dir with the surface,
  * sorted by lambda; with ray_only != 0 only lambda > 0. Up to capacity hits
  * are written: hits[3k..3k+2] = (u, v, lambda) and flags[k] (flags may be
- * NULL); *count gets the number found (may exceed capacity). Hits on shared
- * patch edges or corners are reported once. A line that misses gives
- * *count = 0 and OK.
+ * NULL; hits may be NULL when capacity is 0); *count gets the number found
+ * (may exceed capacity). dir need not be unit length: lambda is in units of
+ * dir. Hits on shared patch edges or corners, and at poles (edges that
+ * collapse to a point), are reported once; the two sides of a closed
+ * surface's seam each report their own (u, v). A hit lies on the line to
+ * ~1e-12 of the model's size (a line that misses by less touches it); a
+ * grazing (tangent) hit is a double root, known only to ~1e-7 of the model
+ * along the line. A line that misses gives *count = 0 and OK.
+ * Thread-safe for distinct contexts.
  * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_surface_intersect_line(projcurve_context *ctx,
                                                                 const projcurve_surface *surface,
@@ -410,8 +416,11 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
                                                              projcurve_result **out);
 
 /* Orthogonal projection of curve onto surface (seed 003, parametric form):
- * every continuous branch of foot points. Same result and statuses as the
- * directional projection (ZERO_DIRECTION aside). */
+ * every continuous branch of foot points (minima, saddles and maxima of the
+ * distance alike). A branch that reaches a centre of curvature of S ends
+ * there with PROJCURVE_END_CURVATURE_CENTRE; one born there starts with
+ * PROJCURVE_START_SILHOUETTE. Same result and statuses as the directional
+ * projection (ZERO_DIRECTION aside). */
 PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
                                                             const projcurve_surface *surface,
                                                             const projcurve_curve *curve,

@@ -367,6 +367,67 @@ static void surface_with_chained_transforms(void)
     free(text);
 }
 
+/* Rational tensor-product point by the same Cox-de Boor basis. */
+static void eval_surface(int pu, int pv, size_t nu, size_t nv, const double *ctrl,
+                         const double *w, const double *ku, const double *kv, double u, double v,
+                         double out[3])
+{
+    double num[3] = {0, 0, 0}, den = 0.0;
+    for (size_t j = 0; j < nv; ++j)
+        for (size_t i = 0; i < nu; ++i) {
+            const double b = basis(ku, (int)i, pu, u, ku[nu]) * basis(kv, (int)j, pv, v, kv[nv]) *
+                             w[j * nu + i];
+            for (int k = 0; k < 3; ++k)
+                num[k] += b * ctrl[3 * (j * nu + i) + (size_t)k];
+            den += b;
+        }
+    for (int k = 0; k < 3; ++k)
+        out[k] = num[k] / den;
+}
+
+static void surface_subdomain(void)
+{
+    /* Degree (2, 1), 4 x 2 net, varying weights; U0..U1 = [0.2, 0.9],
+     * V0..V1 = [0.25, 0.75] inside the knot domain [0, 1]^2. */
+    static const double ku[] = {0, 0, 0, 0.5, 1, 1, 1}, kv[] = {0, 0, 1, 1};
+    static const double w[] = {1, 0.5, 2, 1, 1.5, 1, 0.7, 1};
+    static const double ctrl[] = {0, 0, 0, 1, 0, 1, 2, 0, -1, 3, 0, 0,
+                                  0, 2, 1, 1, 2, 2, 2, 2, 0, 3, 2, 1};
+    char params[2048];
+    size_t n = (size_t)snprintf(params, sizeof params, "3,1,2,1,0,0,0,0,0,");
+    for (size_t i = 0; i < 7; ++i)
+        n += (size_t)snprintf(params + n, sizeof params - n, "%.17g,", ku[i]);
+    for (size_t i = 0; i < 4; ++i)
+        n += (size_t)snprintf(params + n, sizeof params - n, "%.17g,", kv[i]);
+    for (size_t i = 0; i < 8; ++i)
+        n += (size_t)snprintf(params + n, sizeof params - n, "%.17g,", w[i]);
+    for (size_t i = 0; i < 24; ++i)
+        n += (size_t)snprintf(params + n, sizeof params - n, "%.17g,", ctrl[i]);
+    snprintf(params + n, sizeof params - n, "0.2,0.9,0.25,0.75;");
+    const entity e[] = {{128, 0, 0, NULL, params}};
+    char *text = format_iges(e, 1, NULL, ',');
+    projcurve_model *m = read_text(text);
+    if (m) {
+        const projcurve_surface *s = projcurve_model_surface(m, 0);
+        double d[4];
+        CHECK_OK(projcurve_surface_domain(ctx, s, d));
+        CHECK_NEAR(d[0], 0.2, 0.0);
+        CHECK_NEAR(d[1], 0.9, 0.0);
+        CHECK_NEAR(d[2], 0.25, 0.0);
+        CHECK_NEAR(d[3], 0.75, 0.0);
+        for (int i = 0; i <= 7; ++i)
+            for (int j = 0; j <= 5; ++j) {
+                const double u = 0.2 + 0.7 * i / 7.0, v = 0.25 + 0.5 * j / 5.0;
+                double p[3], q[3];
+                CHECK_OK(projcurve_surface_eval(ctx, s, u, v, 0, p));
+                eval_surface(2, 1, 4, 2, ctrl, w, ku, kv, u, v, q);
+                check_point(p, q[0], q[1], q[2], TIGHT);
+            }
+        projcurve_model_destroy(m);
+    }
+    free(text);
+}
+
 static void skipped_entities(void)
 {
     const entity e[] = {
@@ -431,6 +492,7 @@ int main(void)
     curve_subrange();
     composite();
     surface_with_chained_transforms();
+    surface_subdomain();
     skipped_entities();
     custom_delimiters();
     projcurve_context_destroy(ctx);

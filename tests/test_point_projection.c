@@ -107,7 +107,7 @@ static void test_sphere_and_torus(void)
     const double c[3] = {0.5, -1.0, 2.0}, R = 1.5;
     pc_shape_surface sh = pc_shape_sphere(c, R);
     projcurve_surface *s = pc_shape_surface_create(&sh);
-    for (int k = 0; k < 60; ++k) {
+    for (int k = 0; k < 40; ++k) {
         double p[3], uv[2], q[3], dist;
         for (int m = 0; m < 3; ++m)
             p[m] = c[m] + pc_test_rng_uniform(&rng, -3.0, 3.0);
@@ -154,7 +154,7 @@ static void test_sphere_and_torus(void)
     const double TR = 2.0, tr = 0.6;
     pc_shape_surface th = pc_shape_torus(TR, tr);
     projcurve_surface *t = pc_shape_surface_create(&th);
-    for (int k = 0; k < 60; ++k) {
+    for (int k = 0; k < 40; ++k) {
         double p[3], uv[2], q[3], dist;
         p[0] = pc_test_rng_uniform(&rng, -3.5, 3.5);
         p[1] = pc_test_rng_uniform(&rng, -3.5, 3.5);
@@ -174,6 +174,8 @@ static void test_sphere_and_torus(void)
         CHECK_NEAR(dist3(q, expect), 0.0, TOL_POINT * TR);
         /* Four foot points off the seams (y = 0, x > 0 and the outer
          * equator z = 0) and off the axis. */
+        if (k % 2 == 1)
+            continue; /* foot points of every other point: runtime */
         double feet[16];
         size_t count = 0;
         CHECK_OK(projcurve_surface_foot_points(NULL, t, p, 8, feet, &count));

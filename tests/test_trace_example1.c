@@ -84,10 +84,12 @@ static void test_arc_length(const projcurve_surface *s, const projcurve_curve *c
 static void test_table1(const projcurve_surface *s, const projcurve_curve *c)
 {
     const double d[3] = {-1, 0, 0};
-    const double steps[3] = {1e-2, 1e-3, 1e-4};
-    const size_t expect[3] = {101, 1001, 10001};
+    const double steps[4] = {1e-2, 1e-3, 1e-4, 0.25};
+    const size_t expect[4] = {101, 1001, 10001, 5};
     double prev_e2 = 0.0;
-    for (int k = 0; k < 3; ++k) {
+    /* the last, coarse step: the jump sweep must still recognise the one
+     * branch between its far-apart vertices (no duplicate) */
+    for (int k = 0; k < 4; ++k) {
         projcurve_status s2, s4;
         projcurve_result *r2 = project(s, c, d, steps[k], PROJCURVE_METHOD_SECOND_ORDER, &s2);
         projcurve_result *r4 = project(s, c, d, steps[k], PROJCURVE_METHOD_RK4, &s4);
@@ -114,7 +116,7 @@ static void test_table1(const projcurve_surface *s, const projcurve_curve *c)
          * a decade of dt takes the second-order error down ~1000 times,
          * and RK4 stays below it */
         CHECK(e2 > 0.0 && e4 <= e2);
-        if (k > 0)
+        if (k > 0 && k < 3)
             CHECK(e2 <= 2e-3 * prev_e2);
         prev_e2 = e2;
         free(p2);

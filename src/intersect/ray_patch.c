@@ -1,6 +1,5 @@
 #include "intersect/ray_patch.h"
 
-#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
@@ -9,16 +8,6 @@
 #include "intersect/bezier_clip.h"
 #include "intersect/frame_net.h"
 
-/* A hit's distance to the line may be at most this fraction of the model
- * size, plus PC_HIT_ROUNDING_ULPS ulps of the coordinates' magnitude (where
- * the model is and how far the origin is from it): Newton reaches ~1e-16
- * of them, and an exactly tangent line gives a least-squares minimum at
- * rounding level; a line that misses by less counts as tangent. */
-#define PC_HIT_RESIDUAL_REL 1e-12
-#define PC_HIT_ROUNDING_ULPS 64.0
-/* Control values in the ray frame carry rounding errors of a few ulps of
- * the coordinates' magnitude; clipping treats values this small as zero. */
-#define PC_CLIP_ZERO_REL (16.0 * DBL_EPSILON)
 /* |d . n| below this (n the unit normal) makes a hit a grazing one: there
  * the Jacobian of (d1, d2) is ~this small relative to |Su x Sv| and the
  * hit is a fold of the projection (seed 000 s3.4). */
@@ -49,32 +38,6 @@
  * shrunk by this factor: a try costs about as much as a clipping round. */
 #define PC_NEWTON_RETRY_FACTOR 0.01
 
-void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double size,
-                       double magnitude, int ray_only)
-{
-    const double norm = pc_vec3_length_robust(dir);
-    frame->origin = origin;
-    /* Scaled first, so that tiny or huge (finite) directions stay exact. */
-    const double big = fmax(fabs(dir.x), fmax(fabs(dir.y), fabs(dir.z)));
-    frame->d = vec3_normalize(vec3_scale(dir, 1.0 / big));
-    vec3_orthonormal_pair(frame->d, &frame->e1, &frame->e2);
-    frame->inv_dir_norm = 1.0 / norm;
-    frame->origin_e1 = vec3_dot(frame->e1, origin);
-    frame->origin_e2 = vec3_dot(frame->e2, origin);
-    frame->origin_d = vec3_dot(frame->d, origin);
-    frame->tol_residual = PC_HIT_RESIDUAL_REL * size + PC_HIT_ROUNDING_ULPS * DBL_EPSILON * magnitude;
-    frame->tol_zero = PC_CLIP_ZERO_REL * (size + magnitude);
-    frame->ray_only = ray_only;
-}
-
-double pc_vec3_length_robust(pc_vec3 a)
-{
-    const double big = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
-    if (!(big > 0.0) || !isfinite(big))
-        return big > 0.0 ? big : 0.0;
-    return big * vec3_norm(vec3_scale(a, 1.0 / big));
-}
-
 static size_t net_points(int deg_u, int deg_v)
 {
     return (size_t)(deg_u + 1) * (size_t)(deg_v + 1);
@@ -87,47 +50,6 @@ size_t pc_ray_patch_work_size(int deg_u, int deg_v)
     /* The frame net (4 values per point) and one planar net (2 values per
      * point) for each level of the subdivision stack. */
     return net_points(deg_u, deg_v) * (4 + 2 * (PC_CLIP_MAX_DEPTH + 1));
-}
-
-/* Writes the patch's net in the ray frame into q. Returns 0 when the
- * control net lies entirely on one side of one of the two planes through
- * the line (or, for a ray, behind its origin): the convex hull then misses
- * the line. The third coordinate is computed only for nets that pass. */
-static int project_net(const pc_ray_frame *f, const pc_bezier_patch *patch, double *q,
-                       double *w_max, double *w_min)
-{
-    const size_t np = net_points(patch->deg_u, patch->deg_v);
-    const double tol = f->tol_residual;
-    int neg_x = 0, pos_x = 0, neg_y = 0, pos_y = 0;
-    double w_top = 0.0, w_low = INFINITY;
-    for (size_t k = 0; k < np; ++k) {
-        const double *cw = patch->cw + 4 * k;
-        const pc_vec3 p = vec3(cw[0], cw[1], cw[2]);
-        const double w = cw[3];
-        double *out = q + 4 * k;
-        out[0] = vec3_dot(f->e1, p) - w * f->origin_e1;
-        out[1] = vec3_dot(f->e2, p) - w * f->origin_e2;
-        out[3] = w;
-        w_top = w > w_top ? w : w_top;
-        w_low = w < w_low ? w : w_low;
-        const double slack = tol * w;
-        neg_x |= out[0] <= slack;
-        pos_x |= out[0] >= -slack;
-        neg_y |= out[1] <= slack;
-        pos_y |= out[1] >= -slack;
-    }
-    if (!(neg_x && pos_x && neg_y && pos_y))
-        return 0;
-    int ahead = 0;
-    for (size_t k = 0; k < np; ++k) {
-        const double *cw = patch->cw + 4 * k;
-        double *out = q + 4 * k;
-        out[2] = vec3_dot(f->d, vec3(cw[0], cw[1], cw[2])) - cw[3] * f->origin_d;
-        ahead |= out[2] >= -tol * cw[3];
-    }
-    *w_max = w_top;
-    *w_min = w_low;
-    return ahead || !f->ray_only;
 }
 
 typedef struct patch_search {
@@ -271,83 +193,124 @@ static projcurve_status start_box(const patch_search *ps, double box[4], unsigne
     return PROJCURVE_OK;
 }
 
+/* The depth-first search's stack: planar nets in the caller's scratch,
+ * boxes and bookkeeping here (entry k has depth >= k, so PC_CLIP_MAX_DEPTH
+ * + 1 entries suffice). */
+typedef struct clip_stack {
+    double *slots;    /* (PC_CLIP_MAX_DEPTH + 1) planar nets */
+    size_t slot_size; /* doubles per net */
+    double box[PC_CLIP_MAX_DEPTH + 1][4];
+    double next_try[PC_CLIP_MAX_DEPTH + 1]; /* width that allows a Newton try */
+    int depth[PC_CLIP_MAX_DEPTH + 1];
+    int top; /* -1 when empty */
+} clip_stack;
+
+static double *top_net(const clip_stack *st) { return st->slots + (size_t)st->top * st->slot_size; }
+
+/* The first entry: the patch's (X, Y) net, less the pole bands. Returns
+ * OK with st->top = -1 when nothing is left to search. */
+static projcurve_status push_patch(const patch_search *ps, clip_stack *st)
+{
+    const size_t np = net_points(ps->net.deg_u, ps->net.deg_v);
+    for (size_t k = 0; k < np; ++k) {
+        st->slots[2 * k] = ps->net.q[4 * k];
+        st->slots[2 * k + 1] = ps->net.q[4 * k + 1];
+    }
+    st->top = 0;
+    st->depth[0] = 0;
+    st->next_try[0] = 1.0;
+    unsigned poles = 0;
+    const projcurve_status status = start_box(ps, st->box[0], &poles);
+    if (status != PROJCURVE_OK)
+        return status;
+    if (poles != 0) {
+        const double *b = st->box[0];
+        if (!(b[0] < b[1] && b[2] < b[3]) ||
+            pc_frame_net_is_point(&ps->net, ps->frame->tol_residual)) {
+            st->top = -1; /* the whole patch collapses to the pole */
+            return PROJCURVE_OK;
+        }
+        pc_bezier_clip_restrict(st->slots, ps->net.deg_u, ps->net.deg_v, b);
+        return PROJCURVE_OK;
+    }
+    /* A patch flat enough for Newton to be certified on the whole of it
+     * (small patches of a fine surface) needs no clipping at all. */
+    if (newton_may_certify(ps, 1.0)) {
+        projcurve_status found = PROJCURVE_OK;
+        if (try_certified_newton(ps, st->box[0], &found)) {
+            st->top = -1;
+            return found;
+        }
+        st->next_try[0] = PC_NEWTON_RETRY_FACTOR;
+    }
+    return PROJCURVE_OK;
+}
+
+/* After a round that shrank the top box: a certified Newton try when the
+ * box is narrow enough and the last try was long enough ago. */
+static projcurve_status after_progress(const patch_search *ps, clip_stack *st)
+{
+    const double *box = st->box[st->top];
+    const double width = fmax(box[1] - box[0], box[3] - box[2]);
+    if (!(width <= st->next_try[st->top] && newton_may_certify(ps, width)))
+        return PROJCURVE_OK;
+    projcurve_status found = PROJCURVE_OK;
+    if (try_certified_newton(ps, box, &found))
+        --st->top;
+    else
+        st->next_try[st->top] = width * PC_NEWTON_RETRY_FACTOR;
+    return found;
+}
+
+/* After a round that did not shrink the top box enough: finish it (tiny,
+ * a grazing sliver, or at the depth bound) or halve it, the upper half
+ * going on top. */
+static projcurve_status after_stall(const patch_search *ps, clip_stack *st)
+{
+    double *net = top_net(st), *box = st->box[st->top];
+    const int m = ps->net.deg_u, n = ps->net.deg_v;
+    const int tiny = box[1] - box[0] < PC_CLIP_STALL_WIDTH && box[3] - box[2] < PC_CLIP_STALL_WIDTH;
+    if (tiny || st->depth[st->top] >= PC_CLIP_MAX_DEPTH ||
+        pc_bezier_clip_is_sliver(net, m, n, ps->sliver_width)) {
+        --st->top;
+        return finish_stalled(ps, box);
+    }
+    const int k = st->top;
+    pc_bezier_clip_split(net, net + st->slot_size, m, n, split_direction(box), box, st->box[k + 1]);
+    st->depth[k + 1] = ++st->depth[k];
+    st->next_try[k + 1] = st->next_try[k];
+    ++st->top;
+    return PROJCURVE_OK;
+}
+
 /* Depth-first Bezier clipping over a bounded stack of planar nets. */
 static projcurve_status clip_patch(const patch_search *ps, double *slots)
 {
     const int m = ps->net.deg_u, n = ps->net.deg_v;
-    const size_t np = net_points(m, n);
-    const size_t slot_size = 2 * np;
-    double boxes[PC_CLIP_MAX_DEPTH + 1][4];
-    double next_try[PC_CLIP_MAX_DEPTH + 1]; /* width that allows a Newton try */
-    int depth[PC_CLIP_MAX_DEPTH + 1];
-    for (size_t k = 0; k < np; ++k) {
-        slots[2 * k] = ps->net.q[4 * k];
-        slots[2 * k + 1] = ps->net.q[4 * k + 1];
-    }
-    unsigned poles = 0;
-    const projcurve_status pole_status = start_box(ps, boxes[0], &poles);
-    if (pole_status != PROJCURVE_OK)
-        return pole_status;
-    if (poles != 0) {
-        if (!(boxes[0][0] < boxes[0][1] && boxes[0][2] < boxes[0][3]) ||
-            pc_frame_net_is_point(&ps->net, ps->frame->tol_residual))
-            return PROJCURVE_OK; /* the whole patch collapses to the pole */
-        pc_bezier_clip_restrict(slots, m, n, boxes[0]);
-    }
-    depth[0] = 0;
-    next_try[0] = 1.0;
-    int top = 0;
-    /* A patch flat enough for Newton to be certified on the whole of it
-     * (small patches of a fine surface) needs no clipping at all. */
-    if (poles == 0 && newton_may_certify(ps, 1.0)) {
-        projcurve_status st = PROJCURVE_OK;
-        if (try_certified_newton(ps, boxes[0], &st))
-            return st;
-        next_try[0] = PC_NEWTON_RETRY_FACTOR;
-    }
-    for (int round = 0; top >= 0 && round < PC_CLIP_MAX_ROUNDS; ++round) {
-        double *net = slots + (size_t)top * slot_size;
-        double *box = boxes[top];
-        const pc_clip_outcome outcome = pc_bezier_clip_step(net, m, n, ps->zero_tol, box);
-        projcurve_status st = PROJCURVE_OK;
-        if (outcome == PC_CLIP_PROGRESS) {
-            const double width = fmax(box[1] - box[0], box[3] - box[2]);
-            if (width <= next_try[top] && newton_may_certify(ps, width)) {
-                if (try_certified_newton(ps, box, &st)) {
-                    --top;
-                    if (st != PROJCURVE_OK)
-                        return st;
-                } else {
-                    next_try[top] = width * PC_NEWTON_RETRY_FACTOR;
-                }
-            }
-            continue;
+    clip_stack st;
+    st.slots = slots;
+    st.slot_size = 2 * net_points(m, n);
+    projcurve_status status = push_patch(ps, &st);
+    for (int round = 0; status == PROJCURVE_OK && st.top >= 0 && round < PC_CLIP_MAX_ROUNDS;
+         ++round) {
+        double *box = st.box[st.top];
+        switch (pc_bezier_clip_step(top_net(&st), m, n, ps->zero_tol, box)) {
+        case PC_CLIP_EMPTY:
+            --st.top;
+            break;
+        case PC_CLIP_PROGRESS:
+            status = after_progress(ps, &st);
+            break;
+        case PC_CLIP_CONVERGED:
+            --st.top;
+            status = finish_converged(ps, box);
+            break;
+        case PC_CLIP_STALLED:
+            status = after_stall(ps, &st);
+            break;
         }
-        if (outcome == PC_CLIP_EMPTY) {
-            --top;
-            continue;
-        }
-        const int tiny = (box[1] - box[0] < PC_CLIP_STALL_WIDTH &&
-                          box[3] - box[2] < PC_CLIP_STALL_WIDTH) ||
-                         pc_bezier_clip_is_sliver(net, m, n, ps->sliver_width);
-        if (outcome == PC_CLIP_CONVERGED) {
-            st = finish_converged(ps, box);
-            --top;
-        } else if (tiny || depth[top] >= PC_CLIP_MAX_DEPTH) {
-            st = finish_stalled(ps, box);
-            --top;
-        } else {
-            /* Stalled: halve; the upper half goes on top of the stack. */
-            const int dir = split_direction(box);
-            pc_bezier_clip_split(net, net + slot_size, m, n, dir, box, boxes[top + 1]);
-            depth[top + 1] = ++depth[top];
-            next_try[top + 1] = next_try[top];
-            ++top;
-        }
-        if (st != PROJCURVE_OK)
-            return st;
     }
-    return PROJCURVE_OK;
+    return status;
 }
 
 projcurve_status pc_ray_patch_hits(projcurve_context *ctx, const pc_ray_frame *frame,
@@ -363,7 +326,7 @@ projcurve_status pc_ray_patch_hits(projcurve_context *ctx, const pc_ray_frame *f
     ps.hits = hits;
     ps.ctx = ctx;
     double w_max = 0.0, w_min = 0.0;
-    if (!project_net(frame, patch, work, &w_max, &w_min))
+    if (!pc_ray_frame_project(frame, patch, work, &w_max, &w_min))
         return PROJCURVE_OK;
     ps.zero_tol = frame->tol_zero * w_max;
     /* Points of the sliver are within the hit tolerance of the line (in the

@@ -1,13 +1,8 @@
 /*
- * One ray against one Bezier patch, in the ray's own frame.
- *
- * The line o + lambda * dir is the intersection of the planes
- * e1.(x - o) = 0 and e2.(x - o) = 0, with (e1, e2, d = dir / |dir|)
- * orthonormal. In that frame a homogeneous control point (w x, w) becomes
- * (w e1.(x - o), w e2.(x - o), w d.(x - o), w): the patch's two distance
- * functions d1 = e1.(S - o), d2 = e2.(S - o) times the weight are polynomial
- * Bezier functions whose control values are the first two coordinates, and
- * the line meets the patch exactly where both vanish (w > 0).
+ * One line against one Bezier patch, in the line's frame (ray_frame.h):
+ * control-net culling, Bezier clipping (bezier_clip.h), certified Newton,
+ * least squares at grazing points and poles (frame_net.h); and the hit
+ * list's growth and final pass (hit_list.c).
  */
 #ifndef PC_INTERSECT_RAY_PATCH_H
 #define PC_INTERSECT_RAY_PATCH_H
@@ -17,26 +12,7 @@
 #include "bezier/bezier.h"
 #include "common/vec.h"
 #include "intersect/intersect.h"
-
-typedef struct pc_ray_frame {
-    pc_vec3 origin;
-    pc_vec3 e1, e2, d;     /* orthonormal, d along dir */
-    double origin_e1, origin_e2, origin_d; /* e1.o, e2.o, d.o */
-    double inv_dir_norm;   /* 1 / |dir|: lambda = d.(S - o) / |dir| */
-    double tol_residual;   /* a hit's distance to the line, model units */
-    double tol_zero;       /* rounding level of distances, model units */
-    int ray_only;          /* keep only lambda > 0 */
-} pc_ray_frame;
-
-/* |a| without overflow or underflow of the squares (a finite). */
-double pc_vec3_length_robust(pc_vec3 a);
-
-/* The frame of the line o + lambda * dir (dir finite and non-zero) with
- * the tolerances for hits: `size` is the model's size, `magnitude` that of
- * the coordinates involved (|centre| + |o - centre| of the model's box),
- * which bounds their rounding errors. */
-void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double size,
-                       double magnitude, int ray_only);
+#include "intersect/ray_frame.h"
 
 /* Number of doubles of scratch that pc_ray_patch_hits needs for a patch of
  * degrees (deg_u, deg_v); 0 when the size overflows. */

@@ -294,9 +294,16 @@ projcurve_status pc_iges_surface(const pc_iges_file *f, size_t de, pc_io_surface
         (st = reals(&p, base + nk_u + nk_v, n, out->weights)) != PROJCURVE_OK ||
         (st = reals(&p, base + nk_u + nk_v + n, 3 * n, out->ctrl)) != PROJCURVE_OK)
         return st;
+    /* U0, U1, V0, V1 may select a part of the knot domain (writers extend
+     * surfaces a little beyond their use): cut it out exactly. */
+    double dom[4];
+    if ((st = reals(&p, base + nk_u + nk_v + 4 * n, 4, dom)) != PROJCURVE_OK ||
+        (st = pc_io_surface_restrict(f->ctx, f->arena, out, dom[0], dom[1], dom[2], dom[3],
+                                     out)) != PROJCURVE_OK)
+        return st;
     pc_io_affine t;
     if ((st = transform_of(f, de, &t)) != PROJCURVE_OK)
         return st;
-    pc_io_affine_points(&t, out->ctrl, n);
+    pc_io_affine_points(&t, out->ctrl, out->n_u * out->n_v);
     return PROJCURVE_OK;
 }

@@ -264,7 +264,7 @@ static projcurve_status hcurve_to_io(projcurve_context *ctx, pc_arena *arena, co
         w[i] = h->pw[4 * i + 3];
         for (size_t k = 0; k < 3; ++k)
             ctrl[3 * i + k] = h->pw[4 * i + k] / w[i];
-        rational |= (w[i] != w[0]);
+        rational |= (w[i] != 1.0); /* kept even when equal: rows of a net need them */
     }
     memcpy(knots, h->u, (h->n + (size_t)h->p + 1) * sizeof(double));
     *out = (pc_io_curve){.degree = h->p, .n_ctrl = h->n, .ctrl = ctrl,
@@ -404,4 +404,111 @@ projcurve_status pc_io_curve_join(projcurve_context *ctx, pc_arena *arena,
     }
     o.u[kq] = t;
     return hcurve_to_io(ctx, arena, &o, out);
+}
+
+/* Restricts the u direction of a net (rows of n_u points, u fastest) to
+ * [a, b]: each row is a curve with the same knots, so each gets the same
+ * insertions and the rows stay a net. */
+static projcurve_status restrict_rows(projcurve_context *ctx, pc_arena *arena, int degree,
+                                      size_t n_u, size_t n_v, const double *ctrl,
+                                      const double *weights, const double *knots, double a,
+                                      double b, pc_io_curve *rows_out, size_t *n_u_out)
+{
+    for (size_t j = 0; j < n_v; ++j) {
+        const pc_io_curve row = {.degree = degree, .n_ctrl = n_u, .ctrl = (double *)ctrl + 3 * j * n_u,
+                                 .weights = weights ? (double *)weights + j * n_u : NULL,
+                                 .knots = (double *)knots};
+        projcurve_status st = pc_io_curve_restrict(ctx, arena, &row, a, b, &rows_out[j]);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    *n_u_out = rows_out[0].n_ctrl;
+    return PROJCURVE_OK;
+}
+
+/* Copies the restricted rows back into one net; weights stay or become all
+ * ones when the rows came back polynomial. */
+static projcurve_status gather_rows(projcurve_context *ctx, pc_arena *arena,
+                                    const pc_io_curve *rows, size_t n_u, size_t n_v,
+                                    double **ctrl, double **weights)
+{
+    *ctrl = arena_doubles(arena, 3 * n_u * n_v);
+    *weights = arena_doubles(arena, n_u * n_v);
+    if (*ctrl == NULL || *weights == NULL)
+        return no_memory(ctx);
+    for (size_t j = 0; j < n_v; ++j) {
+        memcpy(*ctrl + 3 * j * n_u, rows[j].ctrl, 3 * n_u * sizeof(double));
+        for (size_t i = 0; i < n_u; ++i)
+            (*weights)[j * n_u + i] = rows[j].weights ? rows[j].weights[i] : 1.0;
+    }
+    return PROJCURVE_OK;
+}
+
+/* The transpose of a net (v becomes the fast index). */
+static projcurve_status transpose(projcurve_context *ctx, pc_arena *arena, size_t n_u, size_t n_v,
+                                  const double *ctrl, const double *weights, double **t_ctrl,
+                                  double **t_weights)
+{
+    *t_ctrl = arena_doubles(arena, 3 * n_u * n_v);
+    *t_weights = weights ? arena_doubles(arena, n_u * n_v) : NULL;
+    if (*t_ctrl == NULL || (weights && *t_weights == NULL))
+        return no_memory(ctx);
+    for (size_t j = 0; j < n_v; ++j)
+        for (size_t i = 0; i < n_u; ++i) {
+            memcpy(*t_ctrl + 3 * (i * n_v + j), ctrl + 3 * (j * n_u + i), 3 * sizeof(double));
+            if (weights)
+                (*t_weights)[i * n_v + j] = weights[j * n_u + i];
+        }
+    return PROJCURVE_OK;
+}
+
+/* [a, b] clamped to the knot domain, or 0 when nothing is to be cut. */
+static int cut_range(const double *knots, int degree, size_t n, double *a, double *b)
+{
+    const double t0 = knots[degree], t1 = knots[n];
+    for (size_t i = 0; i + 1 < n + (size_t)degree + 1; ++i)
+        if (!(knots[i] <= knots[i + 1]))
+            return 0; /* creation reports the bad knots */
+    *a = *a > t0 ? *a : t0;
+    *b = *b < t1 ? *b : t1;
+    return *a < *b && (*a > t0 || *b < t1);
+}
+
+projcurve_status pc_io_surface_restrict(projcurve_context *ctx, pc_arena *arena,
+                                        const pc_io_surface *s, double u0, double u1, double v0,
+                                        double v1, pc_io_surface *out)
+{
+    pc_io_surface r = *s;
+    projcurve_status st = PROJCURVE_OK;
+    if (cut_range(s->knots_u, s->deg_u, s->n_u, &u0, &u1)) {
+        pc_io_curve *rows = pc_arena_calloc(arena, r.n_v, sizeof *rows);
+        if (rows == NULL)
+            return no_memory(ctx);
+        size_t n_u = 0;
+        if ((st = restrict_rows(ctx, arena, r.deg_u, r.n_u, r.n_v, r.ctrl, r.weights, r.knots_u,
+                                u0, u1, rows, &n_u)) != PROJCURVE_OK ||
+            (st = gather_rows(ctx, arena, rows, n_u, r.n_v, &r.ctrl, &r.weights)) != PROJCURVE_OK)
+            return st;
+        r.n_u = n_u;
+        r.knots_u = rows[0].knots;
+    }
+    if (cut_range(s->knots_v, s->deg_v, s->n_v, &v0, &v1)) {
+        double *tc, *tw;
+        if ((st = transpose(ctx, arena, r.n_u, r.n_v, r.ctrl, r.weights, &tc, &tw)) != PROJCURVE_OK)
+            return st;
+        pc_io_curve *cols = pc_arena_calloc(arena, r.n_u, sizeof *cols);
+        if (cols == NULL)
+            return no_memory(ctx);
+        size_t n_v = 0;
+        double *cc, *cw;
+        if ((st = restrict_rows(ctx, arena, r.deg_v, r.n_v, r.n_u, tc, tw, r.knots_v, v0, v1,
+                                cols, &n_v)) != PROJCURVE_OK ||
+            (st = gather_rows(ctx, arena, cols, n_v, r.n_u, &cc, &cw)) != PROJCURVE_OK ||
+            (st = transpose(ctx, arena, n_v, r.n_u, cc, cw, &r.ctrl, &r.weights)) != PROJCURVE_OK)
+            return st;
+        r.n_v = n_v;
+        r.knots_v = cols[0].knots;
+    }
+    *out = r;
+    return PROJCURVE_OK;
 }

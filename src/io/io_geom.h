@@ -69,6 +69,13 @@ projcurve_status pc_io_curve_restrict(projcurve_context *ctx, pc_arena *arena,
                                       const pc_io_curve *c, double a, double b,
                                       pc_io_curve *out);
 
+/* The part of s over [u0, u1] x [v0, v1] (clamped to its knot domain; a
+ * direction whose range is empty or the whole domain is left as it is), by
+ * restricting every row and then every column: exact. */
+projcurve_status pc_io_surface_restrict(projcurve_context *ctx, pc_arena *arena,
+                                        const pc_io_surface *s, double u0, double u1, double v0,
+                                        double v1, pc_io_surface *out);
+
 /* Joins curves that meet end to start into one curve: each is split into
  * Bezier segments, raised to the highest degree, and the segments are
  * chained with C0 knots; rational parts are rescaled so that the

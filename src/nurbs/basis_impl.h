@@ -15,6 +15,14 @@
 #define PC_ALWAYS_INLINE inline
 #endif
 
+/* GCC leaves the triangular loops of a constant small degree rolled at -O3
+ * unless asked; other compilers get no hint (and no unknown-pragma warning). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define PC_UNROLL _Pragma("GCC unroll 8")
+#else
+#define PC_UNROLL
+#endif
+
 /* B-spline basis functions and their derivatives.
  *
  * Cox-de Boor's triangle (The NURBS Book, A2.2) gives the functions of every
@@ -44,10 +52,12 @@ static PC_ALWAYS_INLINE void pc_basis_ders_inline(const double *knots, size_t sp
     N[0] = 1.0;
     if (low == 0)
         cur[0][0] = 1.0;
+    PC_UNROLL
     for (int j = 1; j <= p; ++j) {
         left[j] = t - knots[span + 1 - (size_t)j];
         right[j] = knots[span + (size_t)j] - t;
         double saved = 0.0;
+        PC_UNROLL
         for (int r = 0; r < j; ++r) {
             inv[j][r] = inv_table != NULL ? inv_table[j * (j - 1) / 2 + r]
                                           : 1.0 / (right[r + 1] + left[j - r]);
@@ -56,20 +66,25 @@ static PC_ALWAYS_INLINE void pc_basis_ders_inline(const double *knots, size_t sp
             saved = left[j - r] * temp;
         }
         N[j] = saved;
-        if (j >= low)
+        if (j >= low) {
+            PC_UNROLL
             for (int r = 0; r <= j; ++r)
                 cur[j - low][r] = N[r];
+        }
     }
     for (int r = 0; r <= p; ++r)
         out->d[0][r] = N[r];
 
     /* Order m from order m - 1, highest level first so that level jj - 1
      * still holds order m - 1 when level jj reads it. */
+    PC_UNROLL
     for (int m = 1; m <= n; ++m) {
+        PC_UNROLL
         for (int jj = n; jj >= m; --jj) {
             const int j = low + jj;
             const double *lower = cur[jj - 1];
             double prev = 0.0; /* lower[r - 1] * inv[j][r - 1], zero for r = 0 */
+            PC_UNROLL
             for (int r = 0; r < j; ++r) {
                 const double next = lower[r] * inv[j][r];
                 cur[jj][r] = (double)j * (prev - next);

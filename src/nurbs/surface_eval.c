@@ -37,9 +37,11 @@ static PC_ALWAYS_INLINE void contract(const double *net, size_t stride, int p, i
     const double(*bv)[PC_MAX_ORDER] = basis_v->d;
     for (int d = 0; d < D_COUNT; ++d)
         a[d][0] = a[d][1] = a[d][2] = a[d][3] = 0.0;
+    PC_UNROLL
     for (int j = 0; j <= q; ++j) {
         const double *row = net + (size_t)j * stride;
         double r0[4] = {0, 0, 0, 0}, r1[4] = {0, 0, 0, 0}, r2[4] = {0, 0, 0, 0};
+        PC_UNROLL
         for (int i = 0; i <= p; ++i) {
             const double *pt = row + 4 * i;
             for (int m = 0; m < dims; ++m) {

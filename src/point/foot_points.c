@@ -20,7 +20,7 @@
 #include "point/point.h"
 #include "point/subdivide.h"
 
-#define FEET_FLATNESS 0.05
+#define FEET_FLATNESS 0.15
 /* Two foot points closer than this fraction of the domain in both
  * parameters are one. */
 #define FEET_SAME_PARAM 1e-8
@@ -149,6 +149,8 @@ static int by_u(const void *a, const void *b)
  * points within the u tolerance are compared), then sorts by distance. */
 static void merge_duplicates(pc_foot_list *l, const double dom[4])
 {
+    if (l->count < 2)
+        return;   /* nothing to merge; items may be NULL, which qsort must not get */
     qsort(l->items, l->count, sizeof *l->items, by_u);
     const double tol_u = FEET_SAME_PARAM * (dom[1] - dom[0]);
     const double tol_v = FEET_SAME_PARAM * (dom[3] - dom[2]);

@@ -2,13 +2,15 @@
  * Tolerance control and composition of traced branches (seed 000 s2 steps
  * 3-5, s4). For each branch:
  *   1. the traced polyline gets an exact vertex wherever it crosses a knot
- *      line of S (cells.c), so that every chord lies in one Bezier patch;
- *   2. the traced vertices not needed for eps_D are dropped (simplify.c) and
- *      every chord kept is subdivided at the farthest point of the exact
- *      projection until its composed image is within eps_D (split.c,
- *      deviation.c);
- *   3. joints whose piece tangents differ by more than eps_T get vertices
- *      (angle.c);
+ *      line of S (cells.c, split.c), so that every chord lies in one Bezier
+ *      patch; these crossings and the branch ends are fixed;
+ *   2. between fixed vertices, a step-controlled march along the exact
+ *      projection chooses the vertices (march.c): each piece within eps_D
+ *      (deviation.c) and with end tangents within eps_T / 2 of the exact
+ *      ones, so that every joint is within eps_T; the traced vertices only
+ *      guide the corrector (exact.c);
+ *   3. where the march had to force a segment, joints beyond eps_T get
+ *      vertices (angle.c);
  *   4. every segment is composed with its patch by blossoming (compose/).
  * The refined polyline replaces the branch's points: it is the pcurve of the
  * composed pieces. See docs/refine_compose.md.

@@ -25,8 +25,8 @@
 #define PC_PIECE_MAX_CW (4 * (PC_PIECE_MAX_DEGREE + 1))
 
 /* A vertex of the parameter-space polyline: curve parameter t and (u, v).
- * `fixed` marks vertices that simplification must keep (branch ends and
- * knot-line crossings). */
+ * `fixed` marks the vertices every output keeps: branch ends and the
+ * knot-line crossings of the traced polyline (the march runs between them). */
 typedef struct pc_rvertex {
     double t, u, v;
     int fixed;
@@ -130,7 +130,8 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
  * `list` is replaced by the result (scratch is working storage). */
 projcurve_status pc_refine_angles(pc_refiner *r, pc_vertex_list *list, pc_vertex_list *scratch);
 
-/* The composed segment a-b (both in patch): degree returned, cw filled. */
+/* deviation.c: the composed segment a-b (both in patch): its degree is
+ * returned, its homogeneous control points written to cw. */
 int pc_refine_compose(const pc_bezier_patch *patch, const pc_rvertex *a, const pc_rvertex *b,
                       double *cw);
 

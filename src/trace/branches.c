@@ -22,6 +22,9 @@
  * polygon hits would be missed; this bounds what can be missed to branches
  * shorter than about 2 ds. */
 #define PC_SWEEP_FULL_EVERY 2
+/* A found point may resume a failed branch whose end lies up to this many
+ * sweep steps back (a full search runs every PC_SWEEP_FULL_EVERY checks). */
+#define PC_RESUME_WINDOW (2.0 * PC_SWEEP_FULL_EVERY)
 /* Seeds closer than this fraction of the model size on S are one point. */
 #define PC_SEED_SAME 1e-9
 /* The sweep checks every this fraction of the arc-length step. */
@@ -102,18 +105,25 @@ static projcurve_status trace_birth(pc_tracer *tr, const pc_seed *seed, size_t b
     return st;
 }
 
+/* How a branch is started from a seed. */
+typedef enum seed_kind {
+    SEED_AT_START,   /* a seed at the start of the curve */
+    SEED_BORN,       /* found in mid-curve: traced back to its birth first */
+    SEED_RESUMED     /* continues a branch that failed: forwards only */
+} seed_kind;
+
 /* A new branch through the seed: traced forwards to its end, and first
- * backwards to its birth when it was found in mid-curve. */
-static projcurve_status start_branch(pc_tracer *tr, const pc_seed *seed, int mid_curve)
+ * backwards to its birth when it was born in mid-curve. */
+static projcurve_status start_branch(pc_tracer *tr, const pc_seed *seed, seed_kind kind)
 {
     pc_branch *b = NULL;
     projcurve_status st = pc_result_add_branch(tr->ctx, tr->r, &b);
     if (st != PROJCURVE_OK)
         return st;
     const size_t bi = tr->r->n_branches - 1;
-    b->start = PROJCURVE_START_CURVE_START;
+    b->start = kind == SEED_RESUMED ? PROJCURVE_START_JUMP : PROJCURVE_START_CURVE_START;
     b->end = PROJCURVE_END_FAILED;
-    if (mid_curve) {
+    if (kind == SEED_BORN) {
         tr->r->stats.jumps += 1.0;
         st = trace_birth(tr, seed, bi);
         if (st != PROJCURVE_OK)
@@ -165,6 +175,31 @@ static projcurve_status active_points(pc_tracer *tr, double t, pc_seed_list *out
     return PROJCURVE_OK;
 }
 
+/* Moves each active point (interpolated, in the order of active_points)
+ * onto the exact projection at t with the corrector, so that matching does
+ * not depend on how coarse the branch's steps are. A correction that moves
+ * farther than the branch's segment is long is not trusted (it may have
+ * found another sheet): the interpolated point stays. */
+static void polish_active_points(pc_tracer *tr, double t, pc_seed_list *active)
+{
+    const pc_projector *proj = tr->proj;
+    size_t k = 0;
+    for (size_t i = 0; i < tr->r->n_branches && k < active->count; ++i) {
+        const pc_branch *b = &tr->r->branches[i];
+        if (!branch_covers(b, t))
+            continue;
+        const double *p = b->points + 3 * segment_at(b, t);
+        const double reach = sqrt((p[4] - p[1]) * (p[4] - p[1]) + (p[5] - p[2]) * (p[5] - p[2]));
+        pc_seed *a = &active->items[k++];
+        double uv[2] = {a->u, a->v};
+        if (proj->correct(proj, t, uv, NULL) &&
+            sqrt((uv[0] - a->u) * (uv[0] - a->u) + (uv[1] - a->v) * (uv[1] - a->v)) <= reach) {
+            a->u = uv[0];
+            a->v = uv[1];
+        }
+    }
+}
+
 /* The sweep step at t: half an arc-length step ds of the fastest of the
  * branches alive (speed measured on their polylines) and the curve itself.
  * Half, so that the normal motion of a ray's hits between two checks stays
@@ -197,10 +232,12 @@ static double sweep_step(const pc_tracer *tr, double t)
 }
 
 /* 1 when the found point continues a branch that stopped short of t
- * without a geometric reason (it reached the curve's end a rounding error
- * early, failed, or hit the point limit): within ds of its last vertex and
- * within the sweep step dt in t. Branches that ended on the boundary or a
- * fold are not continued: a point beyond them is a new branch. */
+ * without a geometric reason (the corrector failed, or the curve's end was
+ * reached a rounding error early): its last vertex lies within
+ * PC_RESUME_WINDOW sweep steps dt before t and within 2 ds of the point on
+ * S. Such a point resumes the branch's curve instead of starting one that
+ * would be traced back over it. Branches that ended on the boundary or a
+ * fold are not continued: a point beyond them belongs to another branch. */
 static int continues_branch(const pc_tracer *tr, const pc_seed *p, double dt)
 {
     const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
@@ -208,15 +245,15 @@ static int continues_branch(const pc_tracer *tr, const pc_seed *p, double dt)
     pc_nurbs_surface_eval(s, p->u, p->v, 0, NULL, NULL, &a);
     for (size_t i = 0; i < tr->r->n_branches; ++i) {
         const pc_branch *b = &tr->r->branches[i];
-        if (b->n_points == 0 || b->end == PROJCURVE_END_BOUNDARY ||
-            b->end == PROJCURVE_END_SILHOUETTE)
+        if (b->n_points == 0 ||
+            (b->end != PROJCURVE_END_FAILED && b->end != PROJCURVE_END_CURVE_END))
             continue;
         const double *last = b->points + 3 * (b->n_points - 1);
-        if (last[0] > p->t || p->t - last[0] > dt)
+        if (last[0] > p->t || p->t - last[0] > PC_RESUME_WINDOW * dt)
             continue;
         pc_vec3 e;
         pc_nurbs_surface_eval(s, last[1], last[2], 0, NULL, NULL, &e);
-        if (vec3_dist(a, e) <= tr->ds)
+        if (vec3_dist(a, e) <= 2.0 * tr->ds)
             return 1;
     }
     return 0;
@@ -273,6 +310,7 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
         if (st != PROJCURVE_OK)
             break;
         drop_coincident(tr, &found);
+        polish_active_points(tr, t, &active);
         if (found.count > cap_matched) {
             unsigned char *m = realloc(matched, found.count);
             if (m == NULL) {
@@ -285,8 +323,10 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
         pc_match_seeds(tr->proj->surface, active.items, active.count, found.items, found.count,
                        tr->ds, matched);
         for (size_t k = 0; k < found.count && st == PROJCURVE_OK && !tr->limit_hit; ++k)
-            if (!matched[k] && !continues_branch(tr, &found.items[k], t - t_prev))
-                st = start_branch(tr, &found.items[k], 1);
+            if (!matched[k])
+                st = start_branch(tr, &found.items[k],
+                                  continues_branch(tr, &found.items[k], t - t_prev) ? SEED_RESUMED
+                                                                                   : SEED_BORN);
         if (st != PROJCURVE_OK)
             break;
     }
@@ -318,7 +358,7 @@ projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *p
     projcurve_status st = finder->find(finder, ctx, tr.t_begin, &seeds);
     drop_coincident(&tr, &seeds);
     for (size_t k = 0; k < seeds.count && st == PROJCURVE_OK && !tr.limit_hit; ++k)
-        st = start_branch(&tr, &seeds.items[k], 0);
+        st = start_branch(&tr, &seeds.items[k], SEED_AT_START);
     pc_seed_list_free(&seeds);
     if (st == PROJCURVE_OK && opts->jump_detection && !tr.limit_hit)
         st = sweep(&tr, finder);

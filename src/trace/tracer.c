@@ -161,9 +161,10 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
         return PROJCURVE_OK;
     }
     double scale = 1.0; /* halvings after failed corrections, seed 000 s3.3 */
-    /* Each pass adds a vertex or halves the step; both are bounded (the
-     * vertex budget, and min_step), so this bound is never the one hit. */
-    const size_t max_passes = 4 * tr->max_points + 1000;
+    /* Each pass adds a vertex or halves the step. Vertices are bounded by
+     * the budget, and consecutive halvings by min_step (max_step / min_step
+     * < 2^60), so this bound is never the one hit. */
+    const size_t max_passes = PC_TRACE_MAX_HALVINGS * (tr->max_points + 1);
     for (size_t pass = 0; pass < max_passes; ++pass) {
         const double remaining = sign * (t_stop - cur.t);
         if (remaining <= tr->min_step) {

@@ -25,6 +25,8 @@
 /* A step that would stop short of the end of the curve by less than this
  * fraction of itself is stretched to reach it. */
 #define PC_TRACE_END_SLACK 1e-6
+/* Bound of consecutive step halvings (the step stays above min_step). */
+#define PC_TRACE_MAX_HALVINGS 64
 /* Smallest step, as a fraction of the curve's domain. */
 #define PC_TRACE_MIN_STEP 1e-13
 

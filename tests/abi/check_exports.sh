@@ -28,7 +28,15 @@ header=$(dirname "$0")/../../include/projcurve.h
 for s in $symbols; do
     grep -q "\b$s(" "$header" || { echo "FAIL: $s is exported but not in projcurve.h"; exit 1; }
 done
-echo "$count exported symbols, all projcurve_* and declared in projcurve.h"
+# And every function declared in projcurve.h is exported: no declaration
+# without an implementation.
+declared=$(grep -oE '^PROJCURVE_API [^(]*[ *]projcurve_[a-z0-9_]+\(' "$header" |
+           grep -oE 'projcurve_[a-z0-9_]+\($' | tr -d '(')
+for s in $declared; do
+    grep -qx "$s" <<<"$symbols" || { echo "FAIL: $s is declared in projcurve.h but not exported"; exit 1; }
+done
+echo "$count exported symbols, all projcurve_* and declared in projcurve.h;" \
+     "all $(wc -w <<<"$declared") declared functions exported"
 
 soname=$(readelf -d "$lib" | sed -n 's/.*(SONAME).*\[\(.*\)\].*/\1/p')
 if [[ $soname != "libprojcurve.so.$major" ]]; then
