@@ -114,7 +114,7 @@ int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_si
             fabs(x[1] - x0[1]) > FOOT_MAX_TRAVEL * max_step_v)
             return 0;
     }
-    return 0;
+    return 0; /* iteration cap: not converged, the caller reports nothing */
 }
 
 /* A descent direction for D on the free coordinates: Newton if H is
@@ -193,6 +193,8 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
         if (predicted <= MIN_NOISE_STEP * model_size && previous - d2 <= MIN_NOISE_DECREASE * previous)
             break;
     }
+    /* Also after the iteration cap: the best point reached, which the
+     * line search never lets get worse than the start. */
     uv[0] = x[0];
     uv[1] = x[1];
     return d2;
