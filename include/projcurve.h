@@ -416,8 +416,11 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
                                                              projcurve_result **out);
 
 /* Orthogonal projection of curve onto surface (seed 003, parametric form):
- * every continuous branch of foot points. Same result and statuses as the
- * directional projection (ZERO_DIRECTION aside). */
+ * every continuous branch of foot points (minima, saddles and maxima of the
+ * distance alike). A branch that reaches a centre of curvature of S ends
+ * there with PROJCURVE_END_CURVATURE_CENTRE; one born there starts with
+ * PROJCURVE_START_SILHOUETTE. Same result and statuses as the directional
+ * projection (ZERO_DIRECTION aside). */
 PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
                                                             const projcurve_surface *surface,
                                                             const projcurve_curve *curve,

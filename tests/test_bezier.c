@@ -200,6 +200,63 @@ static void test_bvh(size_t spans_u, size_t spans_v, int queries)
     pc_shape_surface_free(&shape);
 }
 
+typedef struct nearest_log {
+    unsigned char *seen;
+    size_t count;
+    double bound;
+    int prune; /* return the least box distance seen as the bound */
+} nearest_log;
+
+static double log_visit(void *user, size_t index, double box_distance_sq)
+{
+    nearest_log *l = user;
+    l->count++;
+    l->seen[index]++;
+    l->bound = fmin(l->bound, box_distance_sq);
+    return l->prune ? l->bound : INFINITY;
+}
+
+/* The nearest-first walk visits each patch once; with a shrinking bound it
+ * still reaches the least box distance (pruning is only by boxes at least
+ * as far as the bound). */
+static void test_bvh_nearest(void)
+{
+    pc_shape_surface shape = pc_shape_bumpy(21, 30, 20, 0.2, 0);
+    projcurve_surface *s = pc_shape_surface_create(&shape);
+    const size_t n = 600;
+    nearest_log l = {calloc(n, 1), 0, INFINITY, 0};
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 4);
+    for (int k = 0; k < 20; ++k) {
+        const pc_vec3 p = vec3(pc_test_rng_uniform(&rng, -0.5, 1.5), pc_test_rng_uniform(&rng, -0.5, 1.5),
+                               pc_test_rng_uniform(&rng, -1.0, 1.0));
+        memset(l.seen, 0, n);
+        l.count = 0;
+        l.bound = INFINITY;
+        l.prune = 0;
+        pc_bvh_query_nearest(&s->bvh, p, log_visit, &l);
+        CHECK(l.count == n);
+        size_t nearest = 0;
+        for (size_t i = 0; i < n; ++i) {
+            CHECK(l.seen[i] == 1);
+            if (box_dist(s->grid.patches[i].box, p) < box_dist(s->grid.patches[nearest].box, p))
+                nearest = i;
+        }
+        memset(l.seen, 0, n);
+        l.count = 0;
+        l.bound = INFINITY;
+        l.prune = 1;
+        pc_bvh_query_nearest(&s->bvh, p, log_visit, &l);
+        /* The least box distance met equals the least of all (ties aside,
+         * the nearest patch itself). */
+        CHECK_NEAR(sqrt(l.bound), box_dist(s->grid.patches[nearest].box, p), 1e-12);
+        CHECK(l.count < n); /* the bound did prune */
+    }
+    free(l.seen);
+    projcurve_surface_destroy(s);
+    pc_shape_surface_free(&shape);
+}
+
 static int stop_at_first(void *user, size_t index)
 {
     (void)index;
@@ -226,5 +283,6 @@ int main(void)
     test_bvh(1, 1, 20);
     test_bvh(120, 100, 20);
     test_bvh_stop();
+    test_bvh_nearest();
     return pc_test_finish("test_bezier");
 }

@@ -528,22 +528,25 @@ static void test_torus(void)
     const double big_r = 2.0, small_r = 0.5;
     projcurve_surface *s = make_surface(pc_shape_torus(big_r, small_r));
     pc_hit_list hits = {0};
-    /* Lines parallel to x at height z and offset y: four hits where
-     * sqrt(x^2 + y^2) = R +- sqrt(r^2 - z^2). */
-    const double offsets[][2] = {{0.3, 0.2}, {-0.7, 0.1}, {0.05, -0.45}, {1.2, 0.3}};
+    /* Lines parallel to x at height z and offset y meet the torus where
+     * sqrt(x^2 + y^2) = R -+ sqrt(r^2 - z^2) = rho_in, rho_out: four hits
+     * x = -+sqrt(rho^2 - y^2), or two when |y| > rho_in (the line passes
+     * beside the hole). The origin is at x = -5, so lambda = x + 5. */
+    const double offsets[][2] = {{0.3, 0.2}, {-0.7, 0.1}, {0.05, -0.45}, {1.2, 0.3}, {1.9, 0.2}};
     for (size_t k = 0; k < sizeof offsets / sizeof offsets[0]; ++k) {
         const double y = offsets[k][0], z = offsets[k][1];
         const double o[3] = {-5, y, z}, d[3] = {1, 0, 0};
         const double w = sqrt(small_r * small_r - z * z);
+        const double x_out = sqrt((big_r + w) * (big_r + w) - y * y);
+        const double x_in = (big_r - w) * (big_r - w) > y * y ? sqrt((big_r - w) * (big_r - w) - y * y) : NAN;
         double expected[4];
         size_t n_exp = 0;
-        const double rho[2] = {big_r - w, big_r + w};
-        for (int side = -1; side <= 1; side += 2)
-            for (int i = 0; i < 2; ++i) {
-                if (rho[i] * rho[i] < y * y)
-                    continue;
-                expected[n_exp++] = 5.0 + side * sqrt(rho[side < 0 ? 1 - i : i] * rho[side < 0 ? 1 - i : i] - y * y);
-            }
+        expected[n_exp++] = 5.0 - x_out;
+        if (!isnan(x_in)) {
+            expected[n_exp++] = 5.0 - x_in;
+            expected[n_exp++] = 5.0 + x_in;
+        }
+        expected[n_exp++] = 5.0 + x_out;
         const size_t n = hits_of(s, o, d, 0, &hits);
         CHECK(n == n_exp);
         for (size_t h = 0; h < n && h < n_exp; ++h)
@@ -576,6 +579,40 @@ static void test_torus(void)
 }
 
 /* ---- bumpy and folded surfaces ------------------------------------------------------ */
+
+/* Lines through interior patch corners (four patches meet) and points of
+ * interior patch edges of a curved rational surface: that hit once, at
+ * its parameters, not flagged boundary. */
+static void test_curved_corners(void)
+{
+    projcurve_surface *s = make_surface(pc_shape_bumpy(23, 6, 6, 0.3, 1));
+    pc_hit_list hits = {0};
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 24);
+    for (int k = 0; k < 1000; ++k) {
+        const double u = (1 + k % 5) / 6.0;
+        const double v = k % 2 ? (1 + (k / 5) % 5) / 6.0 : pc_test_rng_uniform(&rng, 0.05, 0.95);
+        double f[9], d[3];
+        CHECK_OK(projcurve_surface_eval(NULL, s, u, v, 0, f));
+        random_direction(&rng, d);
+        const double o[3] = {f[0] - 0.9 * d[0], f[1] - 0.9 * d[1], f[2] - 0.9 * d[2]};
+        hits_of(s, o, d, 0, &hits);
+        int at_point = 0;
+        for (size_t h = 0; h < hits.count; ++h) {
+            if (fabs(hits.items[h].u - u) < 1e-6 && fabs(hits.items[h].v - v) < 1e-6) {
+                ++at_point;
+                CHECK_NEAR(hits.items[h].lambda, 0.9, 1e-9);
+                CHECK(!(hits.items[h].flags & PROJCURVE_HIT_BOUNDARY));
+            }
+        }
+        ++pc_test_checks;
+        if (at_point != 1)
+            pc_test_fail_at(__FILE__, __LINE__, "patch corner/edge point (%.17g, %.17g) reported %d times",
+                            u, v, at_point);
+    }
+    pc_hit_list_free(&hits);
+    projcurve_surface_destroy(s);
+}
 
 static void test_bumpy(void)
 {
@@ -713,6 +750,7 @@ int main(void)
     test_far_sphere();
     test_cone_apex();
     test_torus();
+    test_curved_corners();
     test_bumpy();
     test_folded();
     test_patch_subset();

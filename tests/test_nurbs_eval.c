@@ -201,8 +201,10 @@ static void test_degrees(void)
 {
     pc_test_rng rng;
     pc_test_rng_seed(&rng, 99);
-    for (int p = 1; p <= 25; p += (p < 6 ? 1 : 4)) {
-        const int q = 1 + (p * 7) % 25;
+    static const int degrees[][2] = {{1, 8},  {2, 15}, {3, 22}, {4, 4},  {5, 11},  {6, 18},
+                                     {10, 21}, {14, 24}, {18, 2}, {22, 5}, {25, 25}, {25, 1}};
+    for (size_t k = 0; k < sizeof degrees / sizeof *degrees; ++k) {
+        const int p = degrees[k][0], q = degrees[k][1];
         pc_shape_surface s = random_surface(&rng, p, q, (size_t)p + 3, (size_t)q + 2, p % 2);
         /* Degree 25 basis values are sums of up to 26 * 26 terms: allow
          * rounding to grow with the degree. */
@@ -273,6 +275,28 @@ static void test_unclamped(void)
             double ref[3], out[3];
             pc_deboor_curve(&shape, t, ref);
             CHECK_OK(projcurve_curve_eval(NULL, c, t, 0, out));
+            CHECK_NEAR(dist3(out, ref), 0.0, TOL_EXACT);
+        }
+        projcurve_curve_destroy(c);
+        pc_shape_curve_free(&shape);
+    }
+    /* Clamped with an extra knot before the start (multiplicity p + 1 at
+     * the domain start, first control point outside the domain) and an
+     * interior double knot. */
+    {
+        pc_shape_curve shape = pc_shape_random_curve(7, 3, 7);
+        const double knots[11] = {-1, 0, 0, 0, 0, 0.5, 0.5, 1, 1.5, 2, 2.5};
+        for (size_t k = 0; k < 11; ++k)
+            shape.knots[k] = knots[k];
+        projcurve_curve *c = pc_shape_curve_create(&shape);
+        CHECK(c != NULL);
+        double t0 = 0, t1 = 0;
+        CHECK_OK(projcurve_curve_domain(NULL, c, &t0, &t1));
+        CHECK(t0 == 0.0 && t1 == 1.0);
+        for (int k = 0; k <= 50; ++k) {
+            double ref[3], out[3];
+            pc_deboor_curve(&shape, k / 50.0, ref);
+            CHECK_OK(projcurve_curve_eval(NULL, c, k / 50.0, 0, out));
             CHECK_NEAR(dist3(out, ref), 0.0, TOL_EXACT);
         }
         projcurve_curve_destroy(c);

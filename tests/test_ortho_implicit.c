@@ -190,8 +190,27 @@ static void check_against_oracle(const char *what, const projcurve_result *r, co
         }
     }
     CHECK_NEAR(t_prev, t1, 1e-12);
-    printf("%-28s points %5zu pieces %5zu vertex err %.2e piece err %.2e (eps_D %.1e)\n", what,
-           n_points, n_pieces, vertex_err, piece_err, eps_d);
+    /* The pieces joined into one cubic B-spline parametrised by t (double
+     * knots at the vertices, C1): C(t) against the exact foot point. */
+    projcurve_curve *joined = NULL;
+    CHECK_OK(projcurve_result_branch_curve(NULL, r, 0, &joined));
+    double spline_err = 0.0;
+    int degree = 0;
+    CHECK_OK(projcurve_curve_nurbs_info(NULL, joined, &degree, NULL, NULL, NULL));
+    CHECK(degree == 3);
+    for (int j = 0; joined && j <= 2000; ++j) {
+        const double t = t0 + (t1 - t0) * j / 2000.0;
+        double c[3], p[3], q[3];
+        CHECK_OK(projcurve_curve_eval(NULL, joined, t, 0, c));
+        wave_point(w, t, p);
+        shape_foot(s, p, q);
+        spline_err = fmax(spline_err, dist3(c, q));
+    }
+    projcurve_curve_destroy(joined);
+    CHECK(spline_err <= eps_d);
+    printf("%-28s points %5zu pieces %5zu vertex err %.2e piece err %.2e spline err %.2e "
+           "(eps_D %.1e)\n",
+           what, n_points, n_pieces, vertex_err, piece_err, spline_err, eps_d);
     /* Vertices are Newton-converged foot points: 1e-12 relative Newton
      * tolerance on a model of size ~20 plus rounding. */
     CHECK(vertex_err <= 1e-9);

@@ -263,7 +263,7 @@ static projcurve_options *options(double eps_d)
 /* Projects w onto the shape and checks branch count, ends and Hausdorff. */
 static projcurve_result *run(const char *name, pc_shape_surface shape_data, const shape *s,
                              const wave *w, double t0, double t1, size_t expected_branches,
-                             int families[8], projcurve_surface **surf_out)
+                             long long method, int families[8], projcurve_surface **surf_out)
 {
     const double eps_d = 1e-4;
     projcurve_surface *surf = pc_shape_surface_create(&shape_data);
@@ -271,6 +271,7 @@ static projcurve_result *run(const char *name, pc_shape_surface shape_data, cons
     projcurve_curve *curve = NULL;
     CHECK_OK(projcurve_curve_create_callback(NULL, wave_fn, (void *)w, t0, t1, &curve));
     projcurve_options *o = options(eps_d);
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_METHOD, method));
     projcurve_result *r = NULL;
     projcurve_context *ctx = NULL;
     projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx);
@@ -326,8 +327,8 @@ static void test_sphere(void)
     const wave w = {{0, 0, 0}, 13.0, 3.0, {0, 0, 0}, 0};
     int fam[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
     projcurve_surface *surf = NULL;
-    projcurve_result *r = run("sphere", pc_shape_sphere(centre, R), &s, &w, 0.5, 2.5, 2, fam,
-                              &surf);
+    projcurve_result *r = run("sphere", pc_shape_sphere(centre, R), &s, &w, 0.5, 2.5, 2,
+                              PROJCURVE_METHOD_SECOND_ORDER, fam, &surf);
     if (r && projcurve_result_branch_count(r) == 2) {
         expect_whole(r, 0, 0.5, 2.5);
         expect_whole(r, 1, 0.5, 2.5);
@@ -371,25 +372,27 @@ static void test_cylinder_torus_plane(void)
     int fam[8];
     projcurve_surface *surf = NULL;
     /* Cylinder R = 5, z in [0, 10]; the curve at radius 7 over angles
-     * 0.3..1.3: near and far foot points. */
+     * 0.3..1.3: near and far foot points; traced with the RK4 baseline. */
     const shape cyl = {CYLINDER, 5.0, 0};
     const wave wc = {{0, 0, 5}, 7.0, 3.0, {0, 0, 0}, 0};
     projcurve_result *r = run("cylinder", pc_shape_cylinder(5.0, 10.0), &cyl, &wc, 0.3, 1.3, 2,
-                              fam, &surf);
+                              PROJCURVE_METHOD_RK4, fam, &surf);
     projcurve_result_destroy(r);
     projcurve_surface_destroy(surf);
 
     /* Torus (10, 3): four foot points (tube near/far x axis side near/far). */
     const shape tor = {TORUS, 10.0, 3.0};
     const wave wt = {{0, 0, 1}, 11.0, 0.5, {0, 0, 0}, 0};
-    r = run("torus", pc_shape_torus(10.0, 3.0), &tor, &wt, 0.3, 2.8, 4, fam, &surf);
+    r = run("torus", pc_shape_torus(10.0, 3.0), &tor, &wt, 0.3, 2.8, 4,
+            PROJCURVE_METHOD_SECOND_ORDER, fam, &surf);
     projcurve_result_destroy(r);
     projcurve_surface_destroy(surf);
 
     /* Plane S(u, v) = (2u - 1, 3v - 1, 0): a circle inside, one branch. */
     const shape pl = {PLANE, 0, 0};
     const wave wp = {{0, 0.5, 0.3}, 0.8, 0.2, {0, 0, 0}, 0};
-    r = run("plane", pc_shape_plane(3, 3, 2, 2), &pl, &wp, 0.0, 6.0, 1, fam, &surf);
+    r = run("plane", pc_shape_plane(3, 3, 2, 2), &pl, &wp, 0.0, 6.0, 1,
+            PROJCURVE_METHOD_SECOND_ORDER, fam, &surf);
     if (r && projcurve_result_branch_count(r) == 1)
         expect_whole(r, 0, 0.0, 6.0);
     projcurve_result_destroy(r);
@@ -398,7 +401,8 @@ static void test_cylinder_torus_plane(void)
     /* Foot points leaving the plane through x = 1 at t = 1.5: the branch
      * ends on the boundary, exactly at u = 1. */
     const wave wl = {{-0.5, 0.5, 0.3}, 0.0, 0.0, {1, 0, 0}, 0};
-    r = run("plane exit", pc_shape_plane(3, 3, 2, 2), &pl, &wl, 0.0, 2.0, 1, fam, &surf);
+    r = run("plane exit", pc_shape_plane(3, 3, 2, 2), &pl, &wl, 0.0, 2.0, 1,
+            PROJCURVE_METHOD_RK4, fam, &surf);
     if (r && projcurve_result_branch_count(r) == 1) {
         double range[2] = {0, 0}, last[3] = {0, 0, 0};
         projcurve_branch_end end = PROJCURVE_END_FAILED;

@@ -8,6 +8,8 @@
  * tangent to the torus (reported once, flagged).
  */
 #include "check.h"
+#include "intersect/bezier_clip.h"
+#include "intersect/frame_net.h"
 #include "intersect/intersect.h"
 #include "intersect/ray_patch.h"
 #include "ray_oracle.h"
@@ -405,11 +407,96 @@ static void test_tangent(const test_patch *tp)
     pc_hit_list_free(&hits);
 }
 
+/* ---- building blocks ---------------------------------------------------- */
+
+/* A planar net of Q(s, t) = A (s - s0, t - t0) (affine, one root at
+ * (s0, t0)) written as a degree-(m, n) Bezier net by linear precision:
+ * clipping is exact for it, so one round must shrink the box around the
+ * root to the padding, and further rounds converge. */
+static void test_clip_affine(void)
+{
+    const double a[4] = {1.0, 0.4, -0.3, 0.8}, s0 = 0.37, t0 = 0.61;
+    for (int m = 1; m <= 5; m += 2) {
+        const int n = m + 1;
+        double net[2 * 6 * 7];
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= m; ++i) {
+                const double s = (double)i / m - s0, t = (double)j / n - t0;
+                net[2 * (j * (m + 1) + i)] = a[0] * s + a[1] * t;
+                net[2 * (j * (m + 1) + i) + 1] = a[2] * s + a[3] * t;
+            }
+        double box[4] = {0, 1, 0, 1};
+        pc_clip_outcome out = pc_bezier_clip_step(net, m, n, 0.0, box);
+        CHECK(out == PC_CLIP_PROGRESS || out == PC_CLIP_CONVERGED);
+        CHECK(box[0] <= s0 && s0 <= box[1] && box[2] <= t0 && t0 <= box[3]);
+        CHECK(box[1] - box[0] < 1e-5 && box[3] - box[2] < 1e-5);
+        for (int k = 0; k < 4 && out == PC_CLIP_PROGRESS; ++k)
+            out = pc_bezier_clip_step(net, m, n, 0.0, box);
+        CHECK(out == PC_CLIP_CONVERGED);
+        CHECK(box[0] <= s0 && s0 <= box[1] && box[2] <= t0 && t0 <= box[3]);
+        /* Shifted away from the origin: no root, the box empties. */
+        double box2[4] = {0, 1, 0, 1};
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= m; ++i) {
+                const double s = (double)i / m - s0, t = (double)j / n - t0;
+                net[2 * (j * (m + 1) + i)] = a[0] * s + a[1] * t + 5.0;
+                net[2 * (j * (m + 1) + i) + 1] = a[2] * s + a[3] * t;
+            }
+        CHECK(pc_bezier_clip_step(net, m, n, 0.0, box2) == PC_CLIP_EMPTY);
+    }
+}
+
+/* The Jacobian bounds behind certified Newton hold on samples: |J|_F <=
+ * jac_max everywhere and |J(a) - J(b)|_F <= L |a - b| (checked on the
+ * folded bicubic and the rational torus patch, in a random frame). */
+static void test_jacobian_bounds(const test_patch *tp, unsigned long long seed)
+{
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, seed);
+    const double o[3] = {0.1, -0.2, 0.3}, d[3] = {0.3, 0.5, -0.8};
+    pc_ray_frame frame;
+    pc_ray_frame_init(&frame, vec3_load(o), vec3_load(d), 3.0, 1.0, 0);
+    double q[4 * MAX_NET], w_max, w_min;
+    const int np = (tp->patch.deg_u + 1) * (tp->patch.deg_v + 1);
+    /* The bounds concern the whole net: project it even if culled. */
+    pc_ray_frame_project(&frame, &tp->patch, q, &w_max, &w_min);
+    for (int k = 0; k < np; ++k) {
+        const double *cw = tp->cw + 4 * k;
+        q[4 * k + 2] = vec3_dot(frame.d, vec3(cw[0], cw[1], cw[2])) - cw[3] * frame.origin_d;
+    }
+    const pc_frame_net net = {tp->patch.deg_u, tp->patch.deg_v, q};
+    double lipschitz, jac_max;
+    pc_frame_net_jacobian_bounds(&net, &lipschitz, &jac_max);
+    for (int k = 0; k < 2000; ++k) {
+        const double s1 = pc_test_rng_uniform(&rng, 0, 1), t1 = pc_test_rng_uniform(&rng, 0, 1);
+        const double s2 = pc_test_rng_uniform(&rng, 0, 1), t2 = pc_test_rng_uniform(&rng, 0, 1);
+        double d1[4], ds1[4], dt1[4], d2[4], ds2[4], dt2[4];
+        pc_frame_net_eval(&net, s1, t1, d1, ds1, dt1);
+        pc_frame_net_eval(&net, s2, t2, d2, ds2, dt2);
+        const double j1 = sqrt(ds1[0] * ds1[0] + ds1[1] * ds1[1] + dt1[0] * dt1[0] + dt1[1] * dt1[1]);
+        CHECK(j1 <= jac_max * (1 + 1e-12));
+        const double dj = sqrt((ds1[0] - ds2[0]) * (ds1[0] - ds2[0]) + (ds1[1] - ds2[1]) * (ds1[1] - ds2[1]) +
+                               (dt1[0] - dt2[0]) * (dt1[0] - dt2[0]) + (dt1[1] - dt2[1]) * (dt1[1] - dt2[1]));
+        CHECK(dj <= lipschitz * hypot(s1 - s2, t1 - t2) * (1 + 1e-12) + 1e-14);
+        /* The evaluator's derivatives against central differences. */
+        const double h = 1e-6;
+        double dp[4], dm[4];
+        if (s1 > h && s1 < 1 - h) {
+            pc_frame_net_eval(&net, s1 + h, t1, dp, NULL, NULL);
+            pc_frame_net_eval(&net, s1 - h, t1, dm, NULL, NULL);
+            for (int c = 0; c < 4; ++c)
+                CHECK_NEAR(ds1[c], (dp[c] - dm[c]) / (2 * h), 1e-7 * (1 + fabs(ds1[c])));
+        }
+    }
+}
+
 int main(void)
 {
+    test_clip_affine();
     test_plane();
     test_patch torus;
     build_torus(&torus, 2.0, 1.0);
+    test_jacobian_bounds(&torus, 13);
     test_torus_equation(&torus);
     test_tangent(&torus);
     test_shared_edge(&torus);
@@ -419,6 +506,7 @@ int main(void)
     for (int k = 0; k < 4; ++k) {
         test_patch folded;
         build_folded(&folded, &rng);
+        test_jacobian_bounds(&folded, 14 + (unsigned long long)k);
         test_shared_edge(&folded);
         test_against_oracle(&folded, "folded bicubic", 3000, 100 + (unsigned long long)k);
     }

@@ -6,12 +6,18 @@
 #include "projcurve.h"
 
 /* Newton stops when a step is this small in local parameters: a patch's
- * local parameters are O(1), so this is a few ulps. */
+ * local parameters are O(1), so this is a few ulps. From a certified or
+ * converged box it needs 1 to 5 steps; the bound only stops a wandering
+ * iterate (reported as not converged). */
 #define PC_NEWTON_STEP_TOL 1e-14
 #define PC_NEWTON_MAX_ITER 16
 /* Newton gives up when an iterate leaves the patch by more than this. */
 #define PC_NEWTON_ESCAPE 0.5
-/* Levenberg-Marquardt: iteration bound, damping bounds and factor. */
+/* Levenberg-Marquardt: iteration bound (near a double root each step
+ * halves the distance, so 100 reach rounding from any box), damping
+ * relative to trace(J^T J): first value, bound (beyond it no step lowers
+ * the residual: a minimum to rounding), factor; and the step below which
+ * the descent stops. */
 #define PC_MIN_MAX_ITER 100
 #define PC_MIN_DAMPING_START 1e-9
 #define PC_MIN_DAMPING_MAX 1e12

@@ -1,7 +1,8 @@
 /*
  * Line / surface intersection: every hit of origin + lambda * dir with a
  * NURBS surface. BVH and control-net culling choose candidate patches,
- * Bezier clipping isolates each root, Newton polishes it to full precision.
+ * Bezier clipping isolates each root, Newton polishes it to full precision
+ * (docs/intersection.md).
  */
 #ifndef PC_INTERSECT_H
 #define PC_INTERSECT_H
@@ -39,10 +40,12 @@ void pc_hit_list_free(pc_hit_list *list);
  * ray_only, only lambda > 0. dir need not be unit length but must be finite
  * and non-zero (the caller validates). Each hit satisfies the line equation
  * to ~1e-12 of the model size. Hits that coincide (shared patch edges and
- * corners, poles shared by several patches) are reported once. Statuses:
- * OK, NO_MEMORY (OVERFLOW for degrees out of range, which a valid surface
- * never has). The list's scratch is
- * reused: calling again with the same list allocates nothing new. */
+ * corners, poles shared by several patches) are reported once; grazing
+ * hits are flagged PROJCURVE_HIT_TANGENT (known to ~1e-7 of the model
+ * along the line), hits on the domain's edge PROJCURVE_HIT_BOUNDARY.
+ * Statuses: OK, NO_MEMORY (OVERFLOW for degrees out of range, which a valid
+ * surface never has). The list's scratch is reused: calling again with the
+ * same list allocates nothing new. Thread-safe for distinct lists. */
 projcurve_status pc_intersect_line(projcurve_context *ctx, const projcurve_surface *s,
                                    pc_vec3 origin, pc_vec3 dir, int ray_only,
                                    pc_hit_list *hits);

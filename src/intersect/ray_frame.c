@@ -17,6 +17,7 @@
 /* Control values in the ray frame carry rounding errors of a few ulps of
  * the coordinates' magnitude; clipping treats values this small as zero. */
 #define PC_CLIP_ZERO_REL (16.0 * DBL_EPSILON)
+
 void pc_ray_frame_init(pc_ray_frame *frame, pc_vec3 origin, pc_vec3 dir, double size,
                        double magnitude, int ray_only)
 {

@@ -20,6 +20,43 @@ typedef struct vertex {
     int index;
 } vertex;
 
+/* A consecutive pair of vertices farther apart on S than this multiple of
+ * (larger end speed x parameter gap) is not one continuous piece: the
+ * tracer went from one foot point to another (seen where two foot points
+ * annihilate at a fold and the step lands on a third one of the same
+ * Morse index). Arc length is the integral of the speed, which near a fold
+ * grows towards the fold, so a continuous segment stays well inside. */
+#define GAP_FACTOR 10.0
+/* |det| below this at the end of such a gap: the branch ended at a centre
+ * of curvature (as the engine's PC_TRACE_DET_NEAR_FOLD). */
+#define GAP_NEAR_CENTRE 1e-2
+
+/* What the gap test needs at a vertex. */
+typedef struct probe {
+    pc_vec3 x;
+    double speed, det;
+    int known;   /* derivatives() succeeded */
+} probe;
+
+static probe probe_at(const pc_projector *proj, const double *tuv)
+{
+    probe pb = {vec3(0, 0, 0), 0.0, 0.0, 0};
+    pc_proj_point d;
+    pb.known = proj->derivatives(proj, tuv[0], tuv[1], tuv[2], &d);
+    pb.x = d.s;
+    pb.speed = d.speed;
+    pb.det = d.det;
+    return pb;
+}
+
+static int is_gap(const pc_projector *proj, const probe *a, const probe *b, double dt)
+{
+    if (!a->known || !b->known)
+        return 0;
+    const double speed = a->speed > b->speed ? a->speed : b->speed;
+    return vec3_dist(a->x, b->x) > GAP_FACTOR * speed * dt + proj->newton_tol;
+}
+
 static projcurve_status index_at(projcurve_context *ctx, const pc_projector *proj, vertex *x)
 {
     if (!pc_ortho_morse_index(proj, x->t, x->u, x->v, &x->index))
@@ -73,7 +110,8 @@ static projcurve_status bisect(projcurve_context *ctx, const pc_projector *proj,
  * keeps vertices 0..i and ends at a (if beyond vertex i), the new branch
  * appended to r starts at b (if before vertex i + 1) and takes the rest. */
 static projcurve_status split(projcurve_context *ctx, projcurve_result *r, size_t k, size_t i,
-                              const vertex *a, const vertex *b)
+                              const vertex *a, const vertex *b, projcurve_branch_end head_end,
+                              projcurve_branch_start tail_start)
 {
     pc_branch *tail = NULL;
     projcurve_status status = pc_result_add_branch(ctx, r, &tail);
@@ -88,10 +126,10 @@ static projcurve_status split(projcurve_context *ctx, projcurve_result *r, size_
         status = pc_branch_add_point(ctx, tail, 3, head->points + 3 * j);
     if (status != PROJCURVE_OK)
         return status;
-    tail->start = PROJCURVE_START_SILHOUETTE;
+    tail->start = tail_start;
     tail->end = head->end;
     head->n_points = i + 1;
-    head->end = PROJCURVE_END_CURVATURE_CENTRE;
+    head->end = head_end;
     if (a->t > head->points[3 * i]) {
         const double last[3] = {a->t, a->u, a->v};
         status = pc_branch_add_point(ctx, head, 3, last);
@@ -99,29 +137,57 @@ static projcurve_status split(projcurve_context *ctx, projcurve_result *r, size_
     return status;
 }
 
+/* Splits branch k where a crossing or a gap follows vertex i - 1 (cur is
+ * vertex i); *split_done tells whether it did. */
+static projcurve_status check_pair(projcurve_context *ctx, const pc_projector *proj,
+                                   projcurve_result *r, size_t k, size_t i, const vertex *prev,
+                                   const probe *prev_probe, const vertex *cur,
+                                   const probe *cur_probe, int *split_done)
+{
+    const double t_tol = CENTRE_T_TOL_REL * (proj->curve->t1 - proj->curve->t0);
+    *split_done = 0;
+    if (cur->index != prev->index) {
+        vertex a, b;
+        projcurve_status status = bisect(ctx, proj, t_tol, *prev, *cur, &a, &b);
+        if (status == PROJCURVE_OK)
+            status = split(ctx, r, k, i - 1, &a, &b, PROJCURVE_END_CURVATURE_CENTRE,
+                           PROJCURVE_START_SILHOUETTE);
+        *split_done = 1;
+        return status;
+    }
+    if (is_gap(proj, prev_probe, cur_probe, cur->t - prev->t)) {
+        *split_done = 1;
+        return split(ctx, r, k, i - 1, prev, cur,
+                     fabs(prev_probe->det) < GAP_NEAR_CENTRE ? PROJCURVE_END_CURVATURE_CENTRE
+                                                             : PROJCURVE_END_FAILED,
+                     fabs(cur_probe->det) < GAP_NEAR_CENTRE ? PROJCURVE_START_SILHOUETTE
+                                                            : PROJCURVE_START_JUMP);
+    }
+    return PROJCURVE_OK;
+}
+
 projcurve_status pc_ortho_split_at_centres(projcurve_context *ctx, const pc_projector *proj,
                                            projcurve_result *r)
 {
-    const double t_tol = CENTRE_T_TOL_REL * (proj->curve->t1 - proj->curve->t0);
     /* Branches appended by split() are scanned too (k runs to the end). */
     for (size_t k = 0; k < r->n_branches; ++k) {
         vertex prev = {0, 0, 0, 0};
+        probe prev_probe = {vec3(0, 0, 0), 0.0, 0.0, 0};
         for (size_t i = 0; i < r->branches[k].n_points; ++i) {
             const double *pt = r->branches[k].points + 3 * i;
             vertex cur = {pt[0], pt[1], pt[2], 0};
+            const probe cur_probe = probe_at(proj, pt);
             projcurve_status status = index_at(ctx, proj, &cur);
+            int split_done = 0;
+            if (status == PROJCURVE_OK && i > 0)
+                status = check_pair(ctx, proj, r, k, i, &prev, &prev_probe, &cur, &cur_probe,
+                                    &split_done);
             if (status != PROJCURVE_OK)
                 return status;
-            if (i > 0 && cur.index != prev.index) {
-                vertex a, b;
-                status = bisect(ctx, proj, t_tol, prev, cur, &a, &b);
-                if (status == PROJCURVE_OK)
-                    status = split(ctx, r, k, i - 1, &a, &b);
-                if (status != PROJCURVE_OK)
-                    return status;
+            if (split_done)
                 break;
-            }
             prev = cur;
+            prev_probe = cur_probe;
         }
     }
     return PROJCURVE_OK;

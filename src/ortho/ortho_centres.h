@@ -16,7 +16,13 @@
 #include "trace/result.h"
 
 /* Splits every branch of r (points (t, u, v)) at the centres of curvature
- * it crosses. Statuses: OK, NO_MEMORY, CALLBACK. */
+ * it crosses, and where consecutive vertices are not one continuous piece
+ * (farther apart on S than ten times the larger end speed times their
+ * parameter gap: the tracer landed on another foot point, typically where
+ * two foot points annihilate at a fold); such a split ends the first part
+ * at a centre of curvature (|det| < 1e-2 there) or as FAILED, and starts the
+ * second with START_SILHOUETTE (|det| < 1e-2) or START_JUMP.
+ * Statuses: OK, NO_MEMORY, CALLBACK. */
 projcurve_status pc_ortho_split_at_centres(projcurve_context *ctx, const pc_projector *proj,
                                            projcurve_result *r);
 

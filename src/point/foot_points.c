@@ -20,7 +20,7 @@
 #include "point/point.h"
 #include "point/subdivide.h"
 
-#define FEET_FLATNESS 0.05
+#define FEET_FLATNESS 0.15
 /* Two foot points closer than this fraction of the domain in both
  * parameters are one. */
 #define FEET_SAME_PARAM 1e-8

@@ -45,10 +45,10 @@ void pc_foot_list_free(pc_foot_list *list);
 projcurve_status pc_surface_foot_points(projcurve_context *ctx, const projcurve_surface *s,
                                         pc_vec3 p, pc_foot_list *list);
 
-/* Newton on G = 0 from uv (updated in place, kept in the domain), with steps
- * limited to max_step_u, max_step_v (parameter units); it gives up when it
- * strays more than 4 such steps from its start. Returns 1 when it converged
- * to a foot point. */
+/* Newton on G = 0 from uv (updated in place, kept in the domain), damped by
+ * backtracking on |G|^2, with steps limited to max_step_u, max_step_v
+ * (parameter units); it gives up when it strays more than 4 such steps from
+ * its start. Returns 1 when it converged to a foot point. */
 int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
                            double max_step_u, double max_step_v, double uv[2]);
 

@@ -22,7 +22,7 @@
 /* Sub-patches whose control net deviates from a bilinear patch by less
  * than this fraction of their size are not split further: the distance has
  * a single basin there for all but pathological points. */
-#define CLOSEST_FLATNESS 0.05
+#define CLOSEST_FLATNESS 0.15
 /* Newton starts stay this fraction of a sub-patch away from its edges. */
 #define START_MARGIN 0.02
 /* A minimiser result this close (relative to the domain) to a crease is

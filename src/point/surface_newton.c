@@ -19,6 +19,7 @@
 #define FOOT_MAX_ITER 40
 /* Newton gives up beyond this many step limits from its start. */
 #define FOOT_MAX_TRAVEL 4.0
+#define FOOT_MAX_HALVINGS 12
 #define MIN_MAX_ITER 60
 #define MIN_MAX_HALVINGS 40
 /* The minimiser stops when a full step would move S by less than this
@@ -60,6 +61,11 @@ static int is_foot(const local_frame *f, double model_size)
     return 1;
 }
 
+static double g_norm2(const local_frame *f) { return f->g[0] * f->g[0] + f->g[1] * f->g[1]; }
+
+/* Newton on G = 0 damped by backtracking on |G|^2 (the Newton direction
+ * descends |G|^2 wherever H is regular): plain Newton oscillates between
+ * the sides of a strongly curved sub-patch instead of converging. */
 int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
                            double max_step_u, double max_step_v, double uv[2])
 {
@@ -67,13 +73,8 @@ int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_si
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
     const double x0[2] = {x[0], x[1]};
     local_frame f;
+    frame_at(s, p, x, &f);
     for (int it = 0; it < FOOT_MAX_ITER; ++it) {
-        /* Wandering off: the foot point of this basin is not near the start
-         * (the caller starts Newton near every candidate). */
-        if (fabs(x[0] - x0[0]) > FOOT_MAX_TRAVEL * max_step_u ||
-            fabs(x[1] - x0[1]) > FOOT_MAX_TRAVEL * max_step_v)
-            return 0;
-        frame_at(s, p, x, &f);
         if (is_foot(&f, model_size)) {
             uv[0] = x[0];
             uv[1] = x[1];
@@ -87,14 +88,33 @@ int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_si
          * to a far basin in one step. */
         delta[0] = clampd(delta[0], -max_step_u, max_step_u);
         delta[1] = clampd(delta[1], -max_step_v, max_step_v);
-        const double nx[2] = {clampd(x[0] + delta[0], dom[0], dom[1]),
-                              clampd(x[1] + delta[1], dom[2], dom[3])};
-        if (nx[0] == x[0] && nx[1] == x[1])
-            return 0; /* stuck against the boundary: no interior foot point here */
+        local_frame nf;
+        double nx[2];
+        double alpha = 1.0;
+        int accepted = 0;
+        for (int k = 0; k < FOOT_MAX_HALVINGS; ++k, alpha *= 0.5) {
+            nx[0] = clampd(x[0] + alpha * delta[0], dom[0], dom[1]);
+            nx[1] = clampd(x[1] + alpha * delta[1], dom[2], dom[3]);
+            if (nx[0] == x[0] && nx[1] == x[1])
+                return 0; /* stuck against the boundary: no interior foot point here */
+            frame_at(s, p, nx, &nf);
+            if (g_norm2(&nf) < g_norm2(&f)) {
+                accepted = 1;
+                break;
+            }
+        }
+        if (!accepted)
+            return 0; /* a local minimum of |G| that is not a root */
         x[0] = nx[0];
         x[1] = nx[1];
+        f = nf;
+        /* Wandering off: the foot point of this basin is not near the start
+         * (the caller starts Newton near every candidate). */
+        if (fabs(x[0] - x0[0]) > FOOT_MAX_TRAVEL * max_step_u ||
+            fabs(x[1] - x0[1]) > FOOT_MAX_TRAVEL * max_step_v)
+            return 0;
     }
-    return 0;
+    return 0; /* iteration cap: not converged, the caller reports nothing */
 }
 
 /* A descent direction for D on the free coordinates: Newton if H is
@@ -173,6 +193,8 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
         if (predicted <= MIN_NOISE_STEP * model_size && previous - d2 <= MIN_NOISE_DECREASE * previous)
             break;
     }
+    /* Also after the iteration cap: the best point reached, which the
+     * line search never lets get worse than the start. */
     uv[0] = x[0];
     uv[1] = x[1];
     return d2;
