@@ -107,7 +107,8 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     const double residual_error =
         proj->guess_error ? 0.0 : proj->residual(proj, t, uv[0], uv[1]) / proj->model_size;
     int iterations = 0;
-    const int ok = proj->correct(proj, t, uv, &iterations);
+    const int ok = proj->correct_predicted ? proj->correct_predicted(proj, t, h, uv, &iterations)
+                                           : proj->correct(proj, t, uv, &iterations);
     tr->r->stats.newton_iterations += (double)iterations;
     const double stride = norm2(pred[0] - cur->u, pred[1] - cur->v);
     if (!ok || (left && pc_domain_margin(tr->dom, uv[0], uv[1]) <= PC_TRACE_BOUNDARY_TOL)) {
