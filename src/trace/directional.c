@@ -111,6 +111,12 @@ static void jacobian_solve(const jacobian *j, const double r[2], double x[2])
     x[1] = x1;
 }
 
+/* |J^-1|_F^2 (|J^-1|_F bounds |J^-1 x| / |x|) */
+static double jacobian_inverse_norm2(const jacobian *j)
+{
+    return (j->a * j->a + j->b * j->b + j->c * j->c + j->d * j->d) * j->inv_det * j->inv_det;
+}
+
 /* S''[d, d] / 2 = (Suu du^2 + 2 Suv du dv + Svv dv^2) / 2 */
 static pc_vec3 half_second(const pc_vec3 *s, double du, double dv)
 {
@@ -160,57 +166,76 @@ static const double *span_bound(const pc_projector *self)
     return c->m3;
 }
 
-/* The step from the cached evaluation to the zero of the local quadratic
- * model of G, G + J d + E.S''[d, d] / 2 = 0 (E = [e1; e2]), starting from
- * the Newton step d; returns an upper bound of |G| at the point it reaches:
- * the model's own residual plus the cubic Taylor remainder of the span's
- * bound m3 (infinite when the step leaves the span, where that bound does
- * not hold). */
-static double model_step(const pc_projector *self, const pc_vec3 *s, const double g[2],
-                         const jacobian *j, const double *m3, double d[2])
+/* Whether (u + du, v + dv) lies in the span of the cached evaluation,
+ * where its third-derivative bound holds. */
+static int in_span(const pc_projector *self, double du, double dv)
 {
-    const pc_directional_data *dd = dir_data(self);
-    const pc_directional_cache *c = dd->cache;
+    const pc_directional_cache *c = dir_data(self)->cache;
     const pc_nurbs_surface *ns = &self->surface->nurbs;
-    pc_vec3 w = half_second(s, d[0], d[1]);
-    for (int k = 0; k < PC_NEWTON_MODEL_ITER; ++k) {
-        const double r[2] = {-(g[0] + vec3_dot(dd->e1, w)), -(g[1] + vec3_dot(dd->e2, w))};
-        jacobian_solve(j, r, d);
-        w = half_second(s, d[0], d[1]);
-    }
-    const double u = c->u + d[0], v = c->v + d[1];
-    if (!(u >= ns->knots_u[c->span_u] && u <= ns->knots_u[c->span_u + 1] &&
-          v >= ns->knots_v[c->span_v] && v <= ns->knots_v[c->span_v + 1]))
-        return INFINITY;
-    const double r0 = g[0] + j->a * d[0] + j->b * d[1] + vec3_dot(dd->e1, w);
-    const double r1 = g[1] + j->c * d[0] + j->d * d[1] + vec3_dot(dd->e2, w);
-    return sqrt(r0 * r0 + r1 * r1) + pc_span_cubic_remainder(m3, d[0], d[1]);
+    const double u = c->u + du, v = c->v + dv;
+    return u >= ns->knots_u[c->span_u] && u <= ns->knots_u[c->span_u + 1] &&
+           v >= ns->knots_v[c->span_v] && v <= ns->knots_v[c->span_v + 1];
 }
 
-/* Bound of how far q'' at the point reached by the step d moves when it is
- * computed with the second derivatives of the cached evaluation (what
- * shift_cache keeps). With M the span's third-derivative bound,
- * |S''(q + d) - S''| <= M |d| per component, and q'' = J^-1 E (P'' -
- * S''[q', q']) moves by at most |J^-1|_F |dS''[q', q']|. *scale gets the
- * size of the terms that make q'', |J^-1|_F (|P''| + |S''[q', q']|). */
-static double second_drift(const pc_projector *self, const jacobian *j, const double *m3,
-                           const double d[2], double *scale)
+/* Looks for a step d from the cached evaluation whose residual |G(q + d)|
+ * is bounded by `target`, on the local quadratic model G + J d + E S''[d,
+ * d] / 2 of G (E = [e1; e2]): the bound is the model's own residual plus
+ * the cubic Taylor remainder of the span's bound m3. d starts as the
+ * Newton step (model residual E S''[d, d] / 2); while the bound is above
+ * target, d moves towards the model's zero by the fixed point
+ * J d = -(G + E S''[d, d] / 2). Returns 1 when d was found (it stays in
+ * the span, where m3 holds). */
+static int model_step(const pc_projector *self, const double g[2], const jacobian *j,
+                      const double *m3, double target, double d[2])
 {
     const pc_directional_data *dd = dir_data(self);
-    const pc_vec3 *s = dd->cache->surf, *p = dd->cache->curve;
-    double q1[2];
-    const double r1[2] = {vec3_dot(dd->e1, p[1]), vec3_dot(dd->e2, p[1])};
-    jacobian_solve(j, r1, q1);
+    const pc_vec3 *s = dd->cache->surf;
+    pc_vec3 w = half_second(s, d[0], d[1]);
+    double r0 = vec3_dot(dd->e1, w), r1 = vec3_dot(dd->e2, w);
+    for (int k = 0;; ++k) {
+        if (!in_span(self, d[0], d[1]))
+            return 0;
+        /* |r| + remainder <= target, without the square root */
+        const double room = target - pc_span_cubic_remainder(m3, d[0], d[1]);
+        if (room >= 0.0 && r0 * r0 + r1 * r1 <= room * room)
+            return 1;
+        if (k == PC_NEWTON_MODEL_ITER)
+            return 0;
+        const double rhs[2] = {-(g[0] + vec3_dot(dd->e1, w)), -(g[1] + vec3_dot(dd->e2, w))};
+        jacobian_solve(j, rhs, d);
+        w = half_second(s, d[0], d[1]);
+        r0 = g[0] + j->a * d[0] + j->b * d[1] + vec3_dot(dd->e1, w);
+        r1 = g[1] + j->c * d[0] + j->d * d[1] + vec3_dot(dd->e2, w);
+    }
+}
+
+/* The square of a bound of how far q'' at the point reached by the step d
+ * moves when it is computed with the second derivatives of the cached
+ * evaluation (what shift_cache keeps). With M the span's third-derivative
+ * bound, |S''(q + d) - S''| <= M |d| per component, and q'' = J^-1 E (P''
+ * - S''[q', q']) moves by at most |J^-1|_F |dS''[q', q']|. q1 is q' at
+ * the cached evaluation. */
+static double second_drift2(const jacobian *j, const double *m3, const double d[2],
+                            const double q1[2])
+{
     const double x = fabs(d[0]), y = fabs(d[1]);
     const double duu = m3[0] * x + m3[1] * y, duv = m3[1] * x + m3[2] * y,
                  dvv = m3[2] * x + m3[3] * y;
     const double a = fabs(q1[0]), b = fabs(q1[1]);
     const double moved = duu * a * a + 2.0 * duv * a * b + dvv * b * b;
-    const double inv_norm =
-        sqrt(j->a * j->a + j->b * j->b + j->c * j->c + j->d * j->d) * fabs(j->inv_det);
-    const pc_vec3 acc = vec3_scale(half_second(s, q1[0], q1[1]), 2.0);
-    *scale = inv_norm * (sqrt(vec3_dot(p[2], p[2])) + sqrt(vec3_dot(acc, acc)));
-    return inv_norm * moved;
+    return jacobian_inverse_norm2(j) * moved * moved;
+}
+
+/* The square of the size of the terms that make q'' at the cached
+ * evaluation, (|J^-1|_F (|P''| + |S''[q', q']|))^2, the scale of
+ * second_drift2. */
+static double second_scale2(const pc_projector *self, const jacobian *j, const double q1[2])
+{
+    const pc_directional_data *dd = dir_data(self);
+    const pc_vec3 acc = vec3_scale(half_second(dd->cache->surf, q1[0], q1[1]), 2.0);
+    const pc_vec3 p2 = dd->cache->curve[2];
+    const double size = sqrt(vec3_dot(p2, p2)) + sqrt(vec3_dot(acc, acc));
+    return jacobian_inverse_norm2(j) * size * size;
 }
 
 /* Whether the Newton step `step` from the cached evaluation ends the
@@ -229,7 +254,8 @@ static double second_drift(const pc_projector *self, const jacobian *j, const do
 static int final_step(const pc_projector *self, double h, const double g[2], const jacobian *j,
                       const double step[2], double *nu, double *nv)
 {
-    const pc_directional_cache *c = dir_data(self)->cache;
+    const pc_directional_data *dd = dir_data(self);
+    const pc_directional_cache *c = dd->cache;
     const pc_vec3 *s = c->surf;
     const double eps1 = self->newton_tol;
     const double safe = PC_NEWTON_PREDICTED_SAFETY * eps1;
@@ -241,14 +267,20 @@ static int final_step(const pc_projector *self, double h, const double g[2], con
         return 1;
     const double *m3 = span_bound(self);
     if (m3 != NULL) {
-        double d[2] = {step[0], step[1]}, scale;
-        if (!(model_step(self, s, g, j, m3, d) <= safe))
+        double d[2] = {step[0], step[1]};
+        if (!model_step(self, g, j, m3, safe, d))
             return 0;
-        const double drift = second_drift(self, j, m3, d, &scale);
-        const int exact = drift <= PC_NEWTON_SECOND_DRIFT * scale;
-        const int predicted =
-            h != 0.0 && 0.5 * h * h * drift <= PC_PREDICTION_DRIFT * sqrt(d[0] * d[0] + d[1] * d[1]);
-        if (!exact && !predicted)
+        double q1[2];
+        const pc_vec3 p1 = c->curve[1];
+        const double r1[2] = {vec3_dot(dd->e1, p1), vec3_dot(dd->e2, p1)};
+        jacobian_solve(j, r1, q1);
+        const double drift2 = second_drift2(j, m3, d, q1);
+        const double shift2 = 0.25 * h * h * h * h * drift2; /* of the next prediction */
+        const double budget2 =
+            PC_PREDICTION_DRIFT * PC_PREDICTION_DRIFT * (d[0] * d[0] + d[1] * d[1]);
+        const double exact2 = PC_NEWTON_SECOND_DRIFT * PC_NEWTON_SECOND_DRIFT;
+        if (!(h != 0.0 && shift2 <= budget2) &&
+            !(drift2 <= exact2 * second_scale2(self, j, q1)))
             return 0;
         *nu = c->u + d[0];
         *nv = c->v + d[1];

@@ -28,11 +28,6 @@ static int outside(const double dom[4], const double uv[2])
     return uv[0] < dom[0] || uv[0] > dom[1] || uv[1] < dom[2] || uv[1] > dom[3];
 }
 
-static double norm2(double a, double b)
-{
-    return sqrt(a * a + b * b);
-}
-
 /* (u, v) within two strides (parameter length of the step) of a side. */
 static int near_boundary(const double dom[4], const double uv[2], double stride)
 {
@@ -110,23 +105,29 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     const int ok = proj->correct_predicted ? proj->correct_predicted(proj, t, h, uv, &iterations)
                                            : proj->correct(proj, t, uv, &iterations);
     tr->r->stats.newton_iterations += (double)iterations;
-    const double stride = norm2(pred[0] - cur->u, pred[1] - cur->v);
+    const double su = pred[0] - cur->u, sv = pred[1] - cur->v;
+    const double stride2 = su * su + sv * sv; /* squared (u, v) length of the step */
     if (!ok || (left && pc_domain_margin(tr->dom, uv[0], uv[1]) <= PC_TRACE_BOUNDARY_TOL)) {
         /* Near the boundary a failed correction most likely means the
          * branch left between the points: locate the exit rather than halve
          * the step (which would pile vertices up against the boundary). */
-        if (!left && !near_boundary(tr->dom, pred, stride))
+        if (!left && !near_boundary(tr->dom, pred, sqrt(stride2)))
             return STEP_REJECT;
         const int found = pc_locate_exit(tr, cur, h, next);
         return found == 1 ? STEP_EXIT : (found == 0 ? STEP_ACCEPT : STEP_REJECT);
     }
     /* A corrector that moved far from the prediction has left for another
-     * sheet of the projection: cut the step instead. */
-    const double moved = norm2(uv[0] - pred[0], uv[1] - pred[1]);
-    const double noise =
-        PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
-    if (moved > PC_TRACE_MAX_CORRECTION * stride + noise)
-        return STEP_REJECT;
+     * sheet of the projection: cut the step instead. (Squares first: the
+     * usual correction is far below the limit.) */
+    const double mu = uv[0] - pred[0], mv = uv[1] - pred[1];
+    const double moved2 = mu * mu + mv * mv;
+    const double limit = PC_TRACE_MAX_CORRECTION;
+    if (moved2 > limit * limit * stride2) {
+        const double noise =
+            PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
+        if (sqrt(moved2) > limit * sqrt(stride2) + noise)
+            return STEP_REJECT;
+    }
     if (!proj->derivatives(proj, t, uv[0], uv[1], next) || crosses_fold(cur, next))
         return STEP_REJECT;
     record_error(tr, residual_error);
