@@ -88,7 +88,7 @@ typedef struct jacobian {
 } jacobian;
 
 /* Returns 0 when J is singular (|det| <= PC_SINGULAR_DET scale^2). */
-static int jacobian_at(const pc_directional_data *dd, const pc_vec3 *s, jacobian *j)
+static inline int jacobian_at(const pc_directional_data *dd, const pc_vec3 *s, jacobian *j)
 {
     j->a = vec3_dot(dd->e1, s[1]);
     j->b = vec3_dot(dd->e1, s[2]);
@@ -103,7 +103,7 @@ static int jacobian_at(const pc_directional_data *dd, const pc_vec3 *s, jacobian
 }
 
 /* x = J^-1 r */
-static void jacobian_solve(const jacobian *j, const double r[2], double x[2])
+static inline void jacobian_solve(const jacobian *j, const double r[2], double x[2])
 {
     const double x0 = (j->d * r[0] - j->b * r[1]) * j->inv_det;
     const double x1 = (j->a * r[1] - j->c * r[0]) * j->inv_det;
@@ -118,7 +118,7 @@ static double jacobian_inverse_norm2(const jacobian *j)
 }
 
 /* S''[d, d] / 2 = (Suu du^2 + 2 Suv du dv + Svv dv^2) / 2 */
-static pc_vec3 half_second(const pc_vec3 *s, double du, double dv)
+static inline pc_vec3 half_second(const pc_vec3 *s, double du, double dv)
 {
     return vec3_add(vec3_add(vec3_scale(s[3], 0.5 * du * du), vec3_scale(s[4], du * dv)),
                     vec3_scale(s[5], 0.5 * dv * dv));
@@ -364,12 +364,6 @@ static int dir_correct(const pc_projector *self, double t, double uv[2], int *it
     return newton(self, t, 0.0, uv, iterations);
 }
 
-static int dir_correct_predicted(const pc_projector *self, double t, double h, double uv[2],
-                                 int *iterations)
-{
-    return newton(self, t, h, uv, iterations);
-}
-
 /* q' and q'' from differentiating G(q(t), t) = 0 once and twice:
  *   J q'  = [e_i.P']
  *   J q'' = [e_i.P''] - [e_i.(Suu u'^2 + 2 Suv u'v' + Svv v'^2)]
@@ -433,6 +427,14 @@ static int dir_slope(const pc_projector *self, double t, double u, double v, dou
     return isfinite(dq[0]) && isfinite(dq[1]);
 }
 
+static int dir_advance(const pc_projector *self, double t, double h, double uv[2],
+                       int *iterations, pc_proj_point *next)
+{
+    if (!newton(self, t, h, uv, iterations))
+        return 0;
+    return dir_derivatives(self, t, uv[0], uv[1], next) ? 1 : -1;
+}
+
 /* |Dir x (S - P)|: the distance of S(u, v) from the projection line. */
 static double dir_residual(const pc_projector *self, double t, double u, double v)
 {
@@ -459,7 +461,7 @@ void pc_directional_init(pc_projector *proj, pc_directional_data *data,
     proj->newton_tol = newton_tol_rel * proj->model_size;
     proj->newton_max_iter = newton_max_iter;
     proj->correct = dir_correct;
-    proj->correct_predicted = dir_correct_predicted;
+    proj->advance = dir_advance;
     proj->derivatives = dir_derivatives;
     proj->slope = dir_slope;
     proj->residual = dir_residual;

@@ -41,15 +41,18 @@ struct pc_projector {
      * clamped to the surface domain. Returns 1 on convergence, 0 otherwise;
      * *iterations (may be NULL) gets the iteration count. */
     int (*correct)(const pc_projector *self, double t, double uv[2], int *iterations);
-    /* Optional (may be NULL: the engine calls correct()): correct() for a
-     * guess that the tracer predicted over the curve step h (signed) from
-     * its last point. derivatives() right after correct() gives q'' of the
-     * corrected point to ~1e-7 relative; after this one q'' may be less
-     * exact, by an amount that moves the next prediction (over a step of
-     * the same size) by a small fraction of the correction just made, when
-     * that saves an evaluation. */
-    int (*correct_predicted)(const pc_projector *self, double t, double h, double uv[2],
-                             int *iterations);
+    /* Optional (may be NULL: the engine calls correct(), then
+     * derivatives()): the tracer's step in one call. Newton as correct()
+     * from the guess uv that the tracer predicted over the curve step h
+     * (signed) from its last point, then derivatives() at the point
+     * reached into *next. derivatives() right after correct() gives q'' of
+     * the corrected point to ~1e-7 relative; here q'' may be less exact,
+     * by an amount that moves the next prediction (over a step of the same
+     * size) by a small fraction of the correction just made, when that
+     * saves an evaluation. Returns 1 when both succeeded, 0 when the
+     * correction failed, -1 when it converged but derivatives() failed. */
+    int (*advance)(const pc_projector *self, double t, double h, double uv[2], int *iterations,
+                   pc_proj_point *next);
     /* q', q'' and det at (t, u, v). Returns 0 when the Jacobian is singular
      * or a callback failed. */
     int (*derivatives)(const pc_projector *self, double t, double u, double v,

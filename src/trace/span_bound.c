@@ -60,12 +60,3 @@ int pc_span_third_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
     }
     return 1;
 }
-
-double pc_span_cubic_remainder(const double m3[4], double du, double dv)
-{
-    const double x = fabs(du), y = fabs(dv);
-    /* (1/6) sum_k C(3, k) m3[k] |du|^(3-k) |dv|^k */
-    return (m3[0] * x * x * x + 3.0 * m3[1] * x * x * y + 3.0 * m3[2] * x * y * y +
-            m3[3] * y * y * y) /
-           6.0;
-}

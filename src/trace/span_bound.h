@@ -8,6 +8,7 @@
 #ifndef PC_TRACE_SPAN_BOUND_H
 #define PC_TRACE_SPAN_BOUND_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "nurbs/nurbs.h"
@@ -22,6 +23,13 @@ int pc_span_third_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
 
 /* Bound of the cubic Taylor remainder of S for the step (du, dv) inside one
  * span: |S(q + d) - (S + S'd + S''[d, d] / 2)| <= this (Lagrange form). */
-double pc_span_cubic_remainder(const double m3[4], double du, double dv);
+static inline double pc_span_cubic_remainder(const double m3[4], double du, double dv)
+{
+    const double x = fabs(du), y = fabs(dv);
+    /* (1/6) sum_k C(3, k) m3[k] |du|^(3-k) |dv|^k */
+    return (m3[0] * x * x * x + 3.0 * m3[1] * x * x * y + 3.0 * m3[2] * x * y * y +
+            m3[3] * y * y * y) /
+           6.0;
+}
 
 #endif /* PC_TRACE_SPAN_BOUND_H */
