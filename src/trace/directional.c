@@ -159,22 +159,26 @@ static const double *span_bound(const pc_projector *self)
             c->bound_state = -1;
             return NULL;
         }
+        const pc_nurbs_surface *ns = &self->surface->nurbs;
         c->bound_state = 1;
         c->bound_u = c->span_u;
         c->bound_v = c->span_v;
+        c->bound_box[0] = ns->knots_u[c->span_u];
+        c->bound_box[1] = ns->knots_u[c->span_u + 1];
+        c->bound_box[2] = ns->knots_v[c->span_v];
+        c->bound_box[3] = ns->knots_v[c->span_v + 1];
     }
     return c->m3;
 }
 
 /* Whether (u + du, v + dv) lies in the span of the cached evaluation,
- * where its third-derivative bound holds. */
+ * where its third-derivative bound holds (after span_bound()). */
 static int in_span(const pc_projector *self, double du, double dv)
 {
     const pc_directional_cache *c = dir_data(self)->cache;
-    const pc_nurbs_surface *ns = &self->surface->nurbs;
     const double u = c->u + du, v = c->v + dv;
-    return u >= ns->knots_u[c->span_u] && u <= ns->knots_u[c->span_u + 1] &&
-           v >= ns->knots_v[c->span_v] && v <= ns->knots_v[c->span_v + 1];
+    return u >= c->bound_box[0] && u <= c->bound_box[1] && v >= c->bound_box[2] &&
+           v <= c->bound_box[3];
 }
 
 /* Looks for a step d from the cached evaluation whose residual |G(q + d)|
