@@ -194,6 +194,10 @@ static int model_step(const pc_projector *self, const double g[2], const jacobia
 {
     const pc_directional_data *dd = dir_data(self);
     const pc_vec3 *s = dd->cache->surf;
+    /* the model's zero lies within ~|J^-1 S'' d| |d| of the Newton step:
+     * a remainder above target there is above it at the zero too */
+    if (!(pc_span_cubic_remainder(m3, d[0], d[1]) <= target))
+        return 0;
     pc_vec3 w = half_second(s, d[0], d[1]);
     double r0 = vec3_dot(dd->e1, w), r1 = vec3_dot(dd->e2, w);
     for (int k = 0;; ++k) {
