@@ -22,6 +22,7 @@ typedef struct pc_directional_cache {
     double t, u, v;
     pc_vec3 surf[6];           /* S, Su, Sv, Suu, Suv, Svv at (u, v) */
     pc_vec3 curve[3];          /* P, P', P'' at t */
+    double frame_d1[2], frame_d2[2]; /* [e1.P'; e2.P'], [e1.P''; e2.P''] */
     size_t span_u, span_v;     /* knot span of the evaluation in surf */
     /* Third-derivative bound of one span (span_bound.h), kept while the
      * evaluations stay in it: bound_state 1 = m3 holds the bound of span
