@@ -31,7 +31,8 @@
 #define MIN_NOISE_DECREASE 1e-14
 
 typedef struct local_frame {
-    pc_vec3 d[6]; /* S, Su, Sv, Suu, Suv, Svv */
+    size_t hint_u, hint_v; /* spans of the last evaluation: steps stay near */
+    pc_vec3 d[6];          /* S, Su, Sv, Suu, Suv, Svv */
     pc_vec3 r;
     double g[2];
     double h[3];  /* H11, H12, H22 */
@@ -39,7 +40,7 @@ typedef struct local_frame {
 
 static void frame_at(const pc_nurbs_surface *s, pc_vec3 p, const double uv[2], local_frame *f)
 {
-    pc_nurbs_surface_eval(s, uv[0], uv[1], 2, NULL, NULL, f->d);
+    pc_nurbs_surface_eval(s, uv[0], uv[1], 2, &f->hint_u, &f->hint_v, f->d);
     f->r = vec3_sub(f->d[0], p);
     f->g[0] = vec3_dot(f->r, f->d[1]);
     f->g[1] = vec3_dot(f->r, f->d[2]);
@@ -72,7 +73,7 @@ int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_si
     const double *dom = s->domain;
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
     const double x0[2] = {x[0], x[1]};
-    local_frame f;
+    local_frame f = {0};
     frame_at(s, p, x, &f);
     for (int it = 0; it < FOOT_MAX_ITER; ++it) {
         if (is_foot(&f, model_size)) {
@@ -88,7 +89,7 @@ int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_si
          * to a far basin in one step. */
         delta[0] = clampd(delta[0], -max_step_u, max_step_u);
         delta[1] = clampd(delta[1], -max_step_v, max_step_v);
-        local_frame nf;
+        local_frame nf = {.hint_u = f.hint_u, .hint_v = f.hint_v};
         double nx[2];
         double alpha = 1.0;
         int accepted = 0;
@@ -148,7 +149,7 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
 {
     const double *dom = s->domain;
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
-    local_frame f;
+    local_frame f = {0};
     frame_at(s, p, x, &f);
     double d2 = vec3_dot(f.r, f.r);
     for (int it = 0; it < MIN_MAX_ITER; ++it) {
@@ -168,7 +169,7 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
             vec3_norm(vec3_add(vec3_scale(f.d[1], delta[0]), vec3_scale(f.d[2], delta[1])));
         double alpha = 1.0;
         int accepted = 0;
-        local_frame nf;
+        local_frame nf = {.hint_u = f.hint_u, .hint_v = f.hint_v};
         double nx[2];
         for (int k = 0; k < MIN_MAX_HALVINGS; ++k, alpha *= 0.5) {
             nx[0] = clampd(x[0] + alpha * delta[0], dom[0], dom[1]);
