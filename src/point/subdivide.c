@@ -265,7 +265,8 @@ double pc_subpatch_flatness(const pc_subpatch *sp, int p, int q)
             const double s = (double)i * step_s;
             const double e[3] = {x[0] - (a[0] + s * d[0]), x[1] - (a[1] + s * d[1]),
                                  x[2] - (a[2] + s * d[2])};
-            worst = fmax(worst, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+            const double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+            worst = e2 > worst ? e2 : worst; /* fmax would be a libm call */
         }
     }
     const double diag = box_diagonal(sp->box);
