@@ -69,16 +69,25 @@ typedef struct stack_item {
     int depth;
 } stack_item;
 
+/* Cartesian points of a homogeneous net and their box, with min/max in
+ * registers (no branch per coordinate: the comparisons are unpredictable). */
 static void cartesian(const double *cw, size_t n, double *xyz, double box[6])
 {
-    box_empty(box);
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = 0; i < n; ++i) {
         const double w = cw[4 * i + 3];
         /* Polynomial nets (w = 1, also after subdivision) skip the division. */
         const double inv_w = w == 1.0 ? 1.0 : 1.0 / w;
-        for (size_t k = 0; k < 3; ++k)
-            xyz[3 * i + k] = cw[4 * i + k] * inv_w;
-        box_add_point(box, xyz + 3 * i);
+        for (size_t k = 0; k < 3; ++k) {
+            const double x = cw[4 * i + k] * inv_w;
+            xyz[3 * i + k] = x;
+            lo[k] = x < lo[k] ? x : lo[k];
+            hi[k] = x > hi[k] ? x : hi[k];
+        }
+    }
+    for (int k = 0; k < 3; ++k) {
+        box[k] = lo[k];
+        box[k + 3] = hi[k];
     }
 }
 
