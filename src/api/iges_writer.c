@@ -229,7 +229,7 @@ static projcurve_status add_cubic_pcurve(projcurve_context *ctx, projcurve_iges_
         goto cleanup;
     for (size_t j = 0; j < 4; ++j)
         knots[n_ctrl + j] = range[1];
-    const pc_nurbs_curve c = {3, n_ctrl, knots, cw, 0, knots[0], range[1]};
+    const pc_nurbs_curve c = {3, n_ctrl, knots, cw, 0, knots[0], range[1], NULL};
     pc_text_buf b = {0};
     pc_iges_format_curve(&b, &c, 1);
     st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PARAMETRIC_PART, &b, de);
