@@ -8,9 +8,22 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds=${1:-${PROJCURVE_FUZZ_SECONDS:-60}}
+if ! [[ $seconds =~ ^[1-9][0-9]*$ ]]; then
+    echo "fuzz.sh: seconds per target must be a positive integer, not '$seconds'" >&2
+    exit 2
+fi
+# Fuzzing is part of CI: a machine that cannot build the targets fails it.
 if ! command -v clang >/dev/null; then
-    echo "clang not found: fuzzing skipped"
-    exit 0
+    echo "fuzz.sh: clang not found (the fuzz targets need clang's libFuzzer)" >&2
+    exit 1
+fi
+probe=$(mktemp -d)
+trap 'rm -rf "$probe"' EXIT
+echo 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { return d && n; }' \
+    >"$probe/probe.c"
+if ! clang -fsanitize=fuzzer "$probe/probe.c" -o "$probe/probe" 2>/dev/null; then
+    echo "fuzz.sh: clang cannot link -fsanitize=fuzzer (Debian/Ubuntu: libclang-rt-N-dev)" >&2
+    exit 1
 fi
 
 cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo \

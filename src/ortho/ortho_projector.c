@@ -254,6 +254,8 @@ void pc_ortho_projector_init(pc_projector *proj, pc_ortho_cache *cache,
     proj->newton_max_iter = newton_max_iter;
     proj->correct = ortho_correct;
     proj->derivatives = ortho_derivatives;
+    proj->advance = NULL;
+    proj->slope = NULL; /* q' needs S's second derivatives here (K) */
     proj->residual = ortho_residual;
     proj->data = cache;
     proj->guess_error = NULL;
