@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "nurbs/input.h"
 #include "nurbs/nurbs.h"
+#include "nurbs/span_poly.h"
 
 projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, int degree,
                                      size_t n_ctrl, const double *ctrl, const double *weights,
@@ -45,6 +46,7 @@ projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, 
     c->rational = rational;
     c->t0 = b.knots[degree];
     c->t1 = b.knots[b.n_ctrl];
+    c->poly = pc_curve_polys_build(c); /* optional: NULL only costs speed */
     return PROJCURVE_OK;
 }
 
@@ -54,6 +56,8 @@ void pc_nurbs_curve_free(pc_nurbs_curve *c)
         return;
     free(c->knots);
     free(c->cw);
+    free(c->poly);
     c->knots = NULL;
     c->cw = NULL;
+    c->poly = NULL;
 }

@@ -1,11 +1,13 @@
 /*
  * NURBS curve point and derivatives up to order 3, evaluated in the tracing
- * loop for every step. Degrees up to PC_SMALL_DEGREE use the eight-wide basis
- * of basis_small.h, specialised per degree; higher degrees the generic
- * basis routine. No allocation.
+ * loop for every step. Degrees up to PC_POLY_MAX_DEGREE use the per-span
+ * monomial form (span_poly.h) by Horner's scheme; otherwise degrees up to
+ * PC_SMALL_DEGREE use the eight-wide basis of basis_small.h, specialised per
+ * degree, and higher degrees the generic basis routine. No allocation.
  */
 #include "nurbs/basis_small.h"
 #include "nurbs/nurbs.h"
+#include "nurbs/span_poly.h"
 
 /* Binomial coefficients up to 3 for the quotient rule. */
 static const double k_binom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
@@ -45,6 +47,39 @@ PC_HOT_CLONES static void small_curve_ders(const pc_nurbs_curve *c, size_t span,
     contract(c->cw + 4 * (span - (size_t)p), b.d[0], PC_SMALL_ORDER, p, n_deriv, a);
 }
 
+/* Homogeneous derivatives from the monomial form, degree P constant. */
+#define PC_CURVE_POLY(P)                                                                     \
+    static void poly_ders_##P(const double *c, double x, double a[PC_MAX_DERIV + 1][4])      \
+    {                                                                                        \
+        pc_horner_ders(c, 4, P, PC_MAX_DERIV, x, a);                                         \
+    }
+PC_CURVE_POLY(1)
+PC_CURVE_POLY(2)
+PC_CURVE_POLY(3)
+PC_CURVE_POLY(4)
+PC_CURVE_POLY(5)
+
+/* d^k A / dt^k = k! b[k] from the scaled Horner sums. */
+static const double k_factorial[PC_MAX_DERIV + 1] = {1, 1, 2, 6};
+
+PC_HOT_CLONES static void poly_curve_ders(const pc_nurbs_curve *c, size_t span, double t,
+                                          double a[PC_MAX_DERIV + 1][4])
+{
+    const int p = c->degree;
+    const double *coef = c->poly + (span - (size_t)p) * 4 * ((size_t)p + 1);
+    const double x = t - c->knots[span];
+    switch (p) {
+    case 1: poly_ders_1(coef, x, a); break;
+    case 2: poly_ders_2(coef, x, a); break;
+    case 3: poly_ders_3(coef, x, a); break;
+    case 4: poly_ders_4(coef, x, a); break;
+    default: poly_ders_5(coef, x, a); break;
+    }
+    for (int k = 2; k <= PC_MAX_DERIV; ++k)
+        for (int m = 0; m < 4; ++m)
+            a[k][m] *= k_factorial[k];
+}
+
 void pc_nurbs_curve_eval(const pc_nurbs_curve *c, double t, int n_deriv, size_t *hint,
                          pc_vec3 *out)
 {
@@ -57,7 +92,9 @@ void pc_nurbs_curve_eval(const pc_nurbs_curve *c, double t, int n_deriv, size_t 
     if (hint != NULL)
         *hint = span;
     double a[PC_MAX_DERIV + 1][4];
-    if (c->degree <= PC_SMALL_DEGREE) {
+    if (c->poly != NULL) {
+        poly_curve_ders(c, span, t, a);
+    } else if (c->degree <= PC_SMALL_DEGREE) {
         small_curve_ders(c, span, t, n_deriv, a);
     } else {
         pc_basis basis;

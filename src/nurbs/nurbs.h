@@ -22,6 +22,7 @@ typedef struct pc_nurbs_curve {
     double *cw;     /* 4 * n_ctrl homogeneous control points */
     int rational;
     double t0, t1;  /* domain = [knots[degree], knots[n_ctrl]] */
+    double *poly;   /* monomial form per span (span_poly.h), or NULL */
 } pc_nurbs_curve;
 
 typedef struct pc_nurbs_surface {

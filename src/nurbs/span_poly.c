@@ -105,3 +105,29 @@ double *pc_span_polys_build(const pc_nurbs_surface *s)
     }
     return poly;
 }
+
+double *pc_curve_polys_build(const pc_nurbs_curve *c)
+{
+    if (c->degree > PC_POLY_MAX_DEGREE)
+        return NULL;
+    const int p = c->degree;
+    const size_t spans = c->n_ctrl - (size_t)p, per_span = 4 * ((size_t)p + 1);
+    double *poly = calloc(spans * per_span, sizeof(double));
+    if (poly == NULL)
+        return NULL;
+    for (size_t k = 0; k < spans; ++k) {
+        const size_t span = k + (size_t)p;
+        if (!(c->knots[span] < c->knots[span + 1]))
+            continue; /* empty span: never evaluated */
+        double basis[PC_POLY_ORDER][PC_POLY_ORDER];
+        span_basis_monomials(c->knots, span, p, basis);
+        double *out = poly + k * per_span;
+        for (int a = 0; a <= p; ++a) {
+            const double *pt = c->cw + 4 * (k + (size_t)a);
+            for (int i = 0; i <= p; ++i)
+                for (int m = 0; m < 4; ++m)
+                    out[4 * i + m] += basis[a][i] * pt[m];
+        }
+    }
+    return poly;
+}

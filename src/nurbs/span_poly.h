@@ -32,6 +32,11 @@ static inline size_t pc_span_poly_len(int p, int q)
  * PC_POLY_MAX_BYTES or memory is short (evaluation then uses B-splines). */
 double *pc_span_polys_build(const pc_nurbs_surface *s);
 
+/* Monomial form of a curve: per span, (p + 1) homogeneous 4-vectors C_i,
+ * coefficients of (t - t_k)^i; span k at (k - p) (p + 1) 4-vectors. NULL
+ * when the degree exceeds PC_POLY_MAX_DEGREE or memory is short. */
+double *pc_curve_polys_build(const pc_nurbs_curve *c);
+
 /* Values and scaled derivatives b[d] = (1/d!) d^d f / dx^d, d <= n, of the
  * degree-P polynomial with 4-vector coefficients c[0], c[stride], ... at x:
  * Horner's scheme carried to the derivatives (each b[d] is the Horner sum
@@ -39,7 +44,7 @@ double *pc_span_polys_build(const pc_nurbs_surface *s);
  * and n give straight-line code with P (n + 1) - n (n + 1) / 2 multiply-adds
  * per coordinate. */
 static PC_ALWAYS_INLINE void pc_horner_ders(const double *c, size_t stride, int P, int n,
-                                            double x, double b[3][4])
+                                            double x, double b[PC_MAX_DERIV + 1][4])
 {
     const double *top = c + (size_t)P * stride;
     for (int m = 0; m < 4; ++m)
@@ -68,13 +73,13 @@ static PC_ALWAYS_INLINE void pc_span_poly_eval(const double *c, int p, int q, in
     double rows[3][PC_POLY_ORDER][4]; /* rows[d][j] = (1/d!) d^d/dx^d of row j */
     PC_UNROLL
     for (int j = 0; j <= q; ++j) {
-        double b[3][4];
+        double b[PC_MAX_DERIV + 1][4];
         pc_horner_ders(c + 4 * (size_t)j * ((size_t)p + 1), 4, p, n_deriv, x, b);
         for (int d = 0; d <= n_deriv; ++d)
             for (int m = 0; m < 4; ++m)
                 rows[d][j][m] = b[d][m];
     }
-    double b[3][4];
+    double b[PC_MAX_DERIV + 1][4];
     pc_horner_ders(rows[0][0], 4, q, n_deriv, y, b); /* A00, A01, A02 / 2 */
     for (int m = 0; m < 4; ++m) {
         a[PC_D00][m] = b[0][m];
