@@ -1,9 +1,10 @@
 /*
- * The third-derivative bounds of a span (trace/span_bound.h), on which the
+ * The derivative bounds of a span (trace/span_bound.h), on which the
  * corrector's one-evaluation acceptance rests: checked against central
  * differences of the library's second derivatives sampled densely over each
  * span (the bound must hold everywhere and, from a control net, be within a
- * modest factor of the true maximum), and the cubic remainder bound against
+ * modest factor of the true maximum), the second-derivative bounds against
+ * the evaluated second derivatives, and the cubic remainder bound against
  * the true Taylor remainder of S for random steps inside a span.
  */
 #include <math.h>
@@ -47,15 +48,16 @@ static void third_fd(const pc_nurbs_surface *s, double u, double v, double out[4
 static void check_spans(const projcurve_surface *surface, const char *name)
 {
     const pc_nurbs_surface *s = &surface->nurbs;
-    double worst_ratio = 0.0, loosest = 0.0;
+    double worst_ratio = 0.0, loosest = 0.0, worst_second = 0.0;
     for (size_t su = (size_t)s->deg_u; su < s->n_u; ++su)
         for (size_t sv = (size_t)s->deg_v; sv < s->n_v; ++sv) {
             const double u0 = s->knots_u[su], u1 = s->knots_u[su + 1];
             const double v0 = s->knots_v[sv], v1 = s->knots_v[sv + 1];
             if (!(u1 > u0) || !(v1 > v0))
                 continue;
-            double m3[4];
+            double m3[4], m2[3];
             CHECK(pc_span_third_bound(s, su, sv, m3));
+            CHECK(pc_span_second_bound(s, su, sv, m2));
             double seen[4] = {0, 0, 0, 0};
             for (int i = 0; i < SAMPLES; ++i)
                 for (int j = 0; j < SAMPLES; ++j) {
@@ -64,6 +66,16 @@ static void check_spans(const projcurve_surface *surface, const char *name)
                     const double v = v0 + 2 * FD_H + (v1 - v0 - 4 * FD_H) * j / (SAMPLES - 1);
                     double d3[4];
                     third_fd(s, u, v, d3);
+                    pc_vec3 d2[6]; /* second derivatives: exact, must be within m2 */
+                    second(s, u, v, d2);
+                    for (int k = 0; k < 3; ++k) {
+                        if (m2[k] > 0.0)
+                            worst_second = fmax(worst_second, vec3_norm(d2[3 + k]) / m2[k]);
+                        else
+                            /* degree 1 in that direction: zero up to the
+                             * evaluation's rounding */
+                            CHECK(vec3_norm(d2[3 + k]) <= 1e-12 * (m2[0] + m2[1] + m2[2]));
+                    }
                     for (int k = 0; k < 4; ++k) {
                         seen[k] = fmax(seen[k], d3[k]);
                         if (m3[k] > 0.0)
@@ -78,7 +90,9 @@ static void check_spans(const projcurve_surface *surface, const char *name)
         }
     printf("%s: sampled / bound <= %.6f, bound / sampled max <= %.2f\n", name, worst_ratio,
            loosest);
+    printf("%s: second derivatives / bound <= %.6f\n", name, worst_second);
     CHECK(worst_ratio <= 1.0 + FD_SLACK);
+    CHECK(worst_second <= 1.0 + 1e-12);
     CHECK(loosest <= LOOSE_FACTOR);
 }
 

@@ -165,6 +165,10 @@ static const double *span_bound(const pc_projector *self)
             return NULL;
         }
         const pc_nurbs_surface *ns = &self->surface->nurbs;
+        double m2[3];
+        pc_span_second_bound(ns, c->span_u, c->span_v, m2);
+        c->m2_max = fmax(m2[0], fmax(m2[1], m2[2]));
+        c->m3_max = fmax(fmax(c->m3[0], c->m3[1]), fmax(c->m3[2], c->m3[3]));
         c->bound_state = 1;
         c->bound_u = c->span_u;
         c->bound_v = c->span_v;
@@ -253,6 +257,32 @@ static double second_scale2(const pc_projector *self, const jacobian *j, const d
     return jacobian_inverse_norm2(j) * size * size;
 }
 
+/* The cheap form of the tests below for the small steps of fine tracing,
+ * from the span's largest bounds M2, M3 and l = |du| + |dv|: the residual
+ * the Newton step d leaves, E S''[d, d] / 2 + cubic remainder, is at most
+ * M2 l^2 / 2 + M3 l^3 / 6, and q'' at q + d computed with the kept second
+ * derivatives moves by at most |J^-1|_F M3 l (|u'| + |v'|)^2. Accepts the
+ * step when the first is below target and the second within the
+ * prediction budget (h != 0) or PC_NEWTON_SECOND_DRIFT of q''. */
+static int small_step(const pc_projector *self, double h, const jacobian *j,
+                      const double step[2], double target)
+{
+    const pc_directional_cache *c = dir_data(self)->cache;
+    const double x = fabs(step[0]), y = fabs(step[1]), l = x + y;
+    if (!(0.5 * c->m2_max * l * l + c->m3_max * l * l * l / 6.0 <= target) ||
+        !in_span(self, step[0], step[1]))
+        return 0;
+    double q1[2];
+    jacobian_solve(j, c->frame_d1, q1);
+    const double speed = fabs(q1[0]) + fabs(q1[1]);
+    const double moved = c->m3_max * l * speed * speed;
+    const double drift2 = jacobian_inverse_norm2(j) * moved * moved;
+    const double shift2 = 0.25 * h * h * h * h * drift2; /* of the next prediction */
+    if (h != 0.0 && shift2 <= PC_PREDICTION_DRIFT * PC_PREDICTION_DRIFT * (x * x + y * y))
+        return 1;
+    return drift2 <= PC_NEWTON_SECOND_DRIFT * PC_NEWTON_SECOND_DRIFT * second_scale2(self, j, q1);
+}
+
 /* Whether the Newton step `step` from the cached evaluation ends the
  * correction without evaluating S again; *nu, *nv get the point it then
  * reaches. Accepted are: the paper's first test (s3.3), the step's image
@@ -281,6 +311,8 @@ static int final_step(const pc_projector *self, double h, const double g[2], con
     if (moved2 <= eps1 * eps1) /* seed 000 s3.3 test 1 */
         return 1;
     const double *m3 = span_bound(self);
+    if (m3 != NULL && small_step(self, h, j, step, safe))
+        return 1;
     if (m3 != NULL) {
         double d[2] = {step[0], step[1]};
         if (!model_step(self, g, j, m3, safe, d))

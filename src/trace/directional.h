@@ -30,6 +30,7 @@ typedef struct pc_directional_cache {
     int bound_state;
     size_t bound_u, bound_v;
     double m3[4];
+    double m2_max, m3_max;     /* largest second / third derivative bound */
     double bound_box[4];       /* that span: u0, u1, v0, v1 */
     double guess_error;        /* seed 000 eq. (3.8) of the last guess */
     int callback_failed;       /* a curve callback failed at some point */

@@ -1,6 +1,6 @@
 /*
- * Third-derivative bounds of a polynomial B-spline surface over one span
- * (span_bound.h). The derivative of a degree-p B-spline with knots U and
+ * Second- and third-derivative bounds of a polynomial B-spline surface over
+ * one span (span_bound.h). The derivative of a degree-p B-spline with knots U and
  * control points P_i is the degree p-1 B-spline with control points
  *   P'_i = p (P_i+1 - P_i) / (U_i+p+1 - U_i+1)
  * (The NURBS Book eq. (3.8)); applied a times in u and b times in v to the
@@ -30,18 +30,17 @@ static void differentiate(pc_vec3 *pts, size_t stride, int deg, int order, const
     }
 }
 
-int pc_span_third_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
-                        double m3[4])
+/* out[k] >= max |d^order S / du^(order-k) dv^k| over the span, k = 0..order. */
+static void span_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v, int order,
+                       double *out)
 {
-    if (s->rational)
-        return 0;
     const int p = s->deg_u, q = s->deg_v;
     const size_t first_u = span_u - (size_t)p, first_v = span_v - (size_t)q;
     const size_t row = (size_t)p + 1;
     pc_vec3 block[PC_MAX_ORDER * PC_MAX_ORDER];
-    for (int k = 0; k <= 3; ++k) {
-        const int a = 3 - k, b = k; /* orders in u and v */
-        m3[k] = 0.0;
+    for (int k = 0; k <= order; ++k) {
+        const int a = order - k, b = k; /* orders in u and v */
+        out[k] = 0.0;
         if (a > p || b > q)
             continue; /* that derivative vanishes */
         for (int j = 0; j <= q; ++j)
@@ -56,7 +55,24 @@ int pc_span_third_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
             differentiate(&block[i], row, q, b, s->knots_v, first_v);
         for (int j = 0; j <= q - b; ++j)
             for (int i = 0; i <= p - a; ++i)
-                m3[k] = fmax(m3[k], vec3_norm(block[(size_t)j * row + (size_t)i]));
+                out[k] = fmax(out[k], vec3_norm(block[(size_t)j * row + (size_t)i]));
     }
+}
+
+int pc_span_third_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
+                        double m3[4])
+{
+    if (s->rational)
+        return 0;
+    span_bound(s, span_u, span_v, 3, m3);
+    return 1;
+}
+
+int pc_span_second_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
+                         double m2[3])
+{
+    if (s->rational)
+        return 0;
+    span_bound(s, span_u, span_v, 2, m2);
     return 1;
 }

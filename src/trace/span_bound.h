@@ -21,6 +21,11 @@
 int pc_span_third_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
                         double m3[4]);
 
+/* The same for the second derivatives: m2[k] >= max |d^2 S / du^(2-k)
+ * dv^k| over the span (k = 0..2). Returns 0 for a rational surface. */
+int pc_span_second_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
+                         double m2[3]);
+
 /* Bound of the cubic Taylor remainder of S for the step (du, dv) inside one
  * span: |S(q + d) - (S + S'd + S''[d, d] / 2)| <= this (Lagrange form). */
 static inline double pc_span_cubic_remainder(const double m3[4], double du, double dv)
