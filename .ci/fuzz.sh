@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes every file reader with libFuzzer for a bounded time.
 #   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 60; PROJCURVE_FUZZ_SECONDS also works)
+#   PROJCURVE_FUZZ_KEEP_CORPUS=1 keeps the corpus of earlier runs.
 # Builds the targets of tests/fuzz with clang (-DPROJCURVE_FUZZ=ON) in
 # build-fuzz/, seeds each from ../shared, and stops at the first crash,
 # leak or hang (the reproducer is left in build-fuzz/artifacts/).
@@ -8,9 +9,22 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds=${1:-${PROJCURVE_FUZZ_SECONDS:-60}}
+if ! [[ $seconds =~ ^[1-9][0-9]*$ ]]; then
+    echo "fuzz.sh: seconds per target must be a positive integer, not '$seconds'" >&2
+    exit 2
+fi
+# Fuzzing is part of CI: a machine that cannot build the targets fails it.
 if ! command -v clang >/dev/null; then
-    echo "clang not found: fuzzing skipped"
-    exit 0
+    echo "fuzz.sh: clang not found (the fuzz targets need clang's libFuzzer)" >&2
+    exit 1
+fi
+probe=$(mktemp -d)
+trap 'rm -rf "$probe"' EXIT
+echo 'int LLVMFuzzerTestOneInput(const unsigned char *d, unsigned long n) { return d && n; }' \
+    >"$probe/probe.c"
+if ! clang -fsanitize=fuzzer "$probe/probe.c" -o "$probe/probe" 2>/dev/null; then
+    echo "fuzz.sh: clang cannot link -fsanitize=fuzzer (Debian/Ubuntu: libclang-rt-N-dev)" >&2
+    exit 1
 fi
 
 cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -27,6 +41,12 @@ declare -A seeds=(
 mkdir -p build-fuzz/artifacts
 for reader in iges step gismo teapot; do
     corpus=build-fuzz/corpus/$reader
+    # Each run starts from the seeds: a corpus grown by earlier runs takes
+    # longer to load than the time budget (PROJCURVE_FUZZ_KEEP_CORPUS=1
+    # keeps it for longer local runs).
+    if [[ ${PROJCURVE_FUZZ_KEEP_CORPUS:-0} != 1 ]]; then
+        rm -rf "$corpus"
+    fi
     mkdir -p "$corpus"
     for seed in ${seeds[$reader]}; do
         if [[ -d $seed ]]; then cp -n "$seed"/*.igs "$corpus"/ 2>/dev/null || true

@@ -162,7 +162,19 @@ typedef enum projcurve_option {
     PROJCURVE_OPT_COMPOSE = 10,
     /* integer: 1 = detect branches born in mid-curve (default), 0 = trace
      * only the branches seeded at the start of the curve. */
-    PROJCURVE_OPT_JUMP_DETECTION = 11
+    PROJCURVE_OPT_JUMP_DETECTION = 11,
+    /* integer: degree of each composed piece's pcurve (u, v)(s), 1 or 3
+     * (2 is rejected with OUT_OF_RANGE; projcurve_option_info gives the
+     * bounds [1, 3]). 1 (default): straight segments in (u, v), composed
+     * pieces of degree p + q (seed 000 s4). 3: the cubic Hermite through
+     * two exact points of the projection with the exact tangents there,
+     * composed pieces of degree 3 (p + q); far fewer pieces at tight eps_D
+     * (error O(h^4) instead of O(h^2)) and joints G1 wherever S is smooth.
+     * Surfaces with 3 (p + q) > 2 PROJCURVE_MAX_DEGREE use degree 1; a piece
+     * whose cubic would leave its Bezier patch (or where q' is not
+     * available, e.g. at a fold) is a straight segment: read each piece's
+     * degree with projcurve_result_piece_pcurve. */
+    PROJCURVE_OPT_PCURVE_DEGREE = 12
 } projcurve_option;
 
 #define PROJCURVE_METHOD_SECOND_ORDER 0
@@ -536,6 +548,20 @@ PROJCURVE_API projcurve_status projcurve_result_piece(projcurve_context *ctx,
                                                       int *degree, double *ctrl,
                                                       double *weights, double range[2],
                                                       double uv_range[4]);
+
+/* The pcurve of one composed piece: the piece is S(u(s), v(s)) for s in
+ * [0, 1], where (u, v)(s) is the Bezier curve of degree *degree (1 or 3, see
+ * PROJCURVE_OPT_PCURVE_DEGREE) with the *degree + 1 control points written
+ * to uv_ctrl as (u, v) pairs; uv_ctrl must hold PROJCURVE_MAX_PCURVE_POINTS
+ * pairs. s runs the same way as the piece's curve parameter range. Either
+ * output may be NULL. Statuses: OK, NULL_ARGUMENT, INDEX, INVALID_ARGUMENT
+ * (a result of an implicit surface: no (u, v)). Thread-safe for distinct
+ * contexts (the result is only read). */
+#define PROJCURVE_MAX_PCURVE_POINTS 4
+PROJCURVE_API projcurve_status projcurve_result_piece_pcurve(projcurve_context *ctx,
+                                                             const projcurve_result *result,
+                                                             size_t branch, size_t piece,
+                                                             int *degree, double *uv_ctrl);
 
 /* The whole branch as one NURBS curve handle (pieces joined, knots at the
  * joins), usable with the curve functions; release with

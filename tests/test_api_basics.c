@@ -109,6 +109,7 @@ static const option_case option_cases[] = {
     {PROJCURVE_OPT_MAX_PIECES, PROJCURVE_OPTION_INTEGER, 1, 1099511627776.0, 1e6, 0},
     {PROJCURVE_OPT_COMPOSE, PROJCURVE_OPTION_INTEGER, 0, 1, 1, 0},
     {PROJCURVE_OPT_JUMP_DETECTION, PROJCURVE_OPTION_INTEGER, 0, 1, 1, 0},
+    {PROJCURVE_OPT_PCURVE_DEGREE, PROJCURVE_OPTION_INTEGER, 1, 3, 1, 0},
 };
 #define N_OPTION_CASES (sizeof option_cases / sizeof option_cases[0])
 
@@ -128,7 +129,7 @@ static void test_option_info(void)
     }
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    const int unknown[] = {0, -1, 12, 1000};
+    const int unknown[] = {0, -1, 13, 1000};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         double untouched = 42.0;
         CHECK_STATUS(projcurve_option_info(ctx, (projcurve_option)unknown[i], NULL, NULL, NULL,
@@ -236,6 +237,26 @@ static void test_options_values(void)
     projcurve_context_destroy(ctx);
 }
 
+/* PCURVE_DEGREE takes 1 or 3: the 2 inside its bounds is refused too. */
+static void test_pcurve_degree_choices(void)
+{
+    projcurve_context *ctx = NULL;
+    projcurve_options *opts = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    CHECK_OK(projcurve_options_create(ctx, &opts));
+    CHECK_OK(projcurve_options_set_int(ctx, opts, PROJCURVE_OPT_PCURVE_DEGREE, 3));
+    const long long bad[] = {2, 0, 4, -3};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; ++i)
+        CHECK_STATUS(projcurve_options_set_int(ctx, opts, PROJCURVE_OPT_PCURVE_DEGREE, bad[i]),
+                     PROJCURVE_ERR_OUT_OF_RANGE);
+    CHECK(strstr(projcurve_context_message(ctx), "PCURVE_DEGREE") != NULL);
+    long long v = 0;
+    CHECK_OK(projcurve_options_get_int(ctx, opts, PROJCURVE_OPT_PCURVE_DEGREE, &v));
+    CHECK(v == 3);
+    projcurve_options_destroy(opts);
+    projcurve_context_destroy(ctx);
+}
+
 static void test_options_bad_handles(void)
 {
     projcurve_context *ctx = NULL;
@@ -256,7 +277,7 @@ static void test_options_bad_handles(void)
     CHECK_STATUS(projcurve_options_get_int(ctx, opts, k_i, NULL), PROJCURVE_ERR_NULL_ARGUMENT);
     CHECK(v == 3.0 && iv == 3);
 
-    const int unknown[] = {0, -5, 12, 77};
+    const int unknown[] = {0, -5, 13, 77};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         const projcurve_option k = (projcurve_option)unknown[i];
         CHECK_STATUS(projcurve_options_set_double(ctx, opts, k, 1.0), PROJCURVE_ERR_UNKNOWN_OPTION);
@@ -278,5 +299,6 @@ int main(void)
     test_option_info();
     test_options_values();
     test_options_bad_handles();
+    test_pcurve_degree_choices();
     return pc_test_finish("test_api_basics");
 }

@@ -121,10 +121,23 @@ static void iges_cases(void)
     CHECK_OK(read_mem(text, len, &surfaces));
     CHECK(surfaces == 1);
 
-    /* Truncated anywhere: an error or (at a record boundary) a shorter model. */
-    for (size_t cut = 0; cut < len; cut += 61)
-        (void)read_mem(text, cut, NULL);
-    expect_error(text, 2000, PROJCURVE_ERR_PARSE, "IGES", "truncated in the P section");
+    /* Truncated anywhere after the first record and before the sequence
+     * number of the last (whose loss costs nothing): a PARSE error that
+     * names the IGES line or says the file is truncated. */
+    for (size_t cut = 81; cut + 8 < len; cut += 37) {
+        const projcurve_status st = read_mem(text, cut, NULL);
+        const char *msg = projcurve_context_message(ctx);
+        if (st != PROJCURVE_ERR_PARSE ||
+            (strstr(msg, "IGES line") == NULL && strstr(msg, "truncated") == NULL))
+            pc_test_fail_at(__FILE__, __LINE__, "cut at %zu of %zu: %s \"%s\"", cut, len,
+                            projcurve_status_string(st), msg);
+        ++pc_test_checks;
+    }
+    expect_error(text, 2000, PROJCURVE_ERR_PARSE, "IGES line 25: only 56 columns",
+                 "truncated in the P section");
+    expect_error(text, 24 * 81, PROJCURVE_ERR_PARSE, "no terminate (T) record",
+                 "truncated at a line end");
+    CHECK_OK(read_mem(text, len - 1, NULL)); /* only the last line end missing */
 
     /* Wrong column layout: every record shifted right by one column. */
     {
@@ -140,6 +153,44 @@ static void iges_cases(void)
         expect_error(shifted, n, PROJCURVE_ERR_PARSE, "line 1", "shifted columns");
         free(shifted);
     }
+    /* Every record shifted left or right by one column, still 80 wide. */
+    {
+        char *left = malloc(len + 1), *right = malloc(len + 1);
+        size_t nl = 0, nr = 0;
+        for (size_t start = 0; start < len;) {
+            const char *eol = memchr(text + start, '\n', len - start);
+            const size_t end = eol ? (size_t)(eol - text) : len;
+            for (size_t i = start + 1; i < end; ++i)
+                left[nl++] = text[i];
+            left[nl++] = ' ';
+            right[nr++] = ' ';
+            for (size_t i = start; i + 1 < end; ++i)
+                right[nr++] = text[i];
+            left[nl++] = right[nr++] = '\n';
+            start = end + 1;
+        }
+        expect_error(left, nl, PROJCURVE_ERR_PARSE, "line 1: the section letter 'S' is in column 72",
+                     "columns shifted left");
+        expect_error(right, nr, PROJCURVE_ERR_PARSE, "line 1: the section letter 'S' is in column 74",
+                     "columns shifted right");
+        free(left);
+        free(right);
+    }
+    /* Lines lost in the middle of the parameter section: the terminate
+     * record's counts disagree. */
+    {
+        const size_t record = 81, drop_from = 20 * record, drop = 5 * record;
+        char *holed = malloc(len);
+        memcpy(holed, text, drop_from);
+        memcpy(holed + drop_from, text + drop_from + drop, len - drop_from - drop);
+        expect_error(holed, len - drop, PROJCURVE_ERR_PARSE,
+                     "terminate record counts 55 P records, the file has 50", "lost lines");
+        free(holed);
+    }
+    /* A parameter record carrying another entity's DE back pointer. */
+    check_replaced_record(text, len, "0000001P0000004", "0000003P0000004", PROJCURVE_ERR_PARSE,
+                          "line 13: parameter record belongs to DE 3, expected DE 1",
+                          "wrong back pointer");
     /* A section letter that is not one. */
     check_replaced_record(text, len, "G0000002", "X0000002", PROJCURVE_ERR_PARSE, "line 3",
                    "bad section letter");
@@ -445,6 +496,55 @@ static void reference_bombs(void)
     free(step.s);
 }
 
+/* Reads a generated file of n entities and expects the error. */
+static void expect_iges_error(const int *types, char *const *params, size_t n,
+                              projcurve_status status, const char *needle, const char *what)
+{
+    size_t len;
+    char *text = iges_file(types, params, n, &len);
+    expect_error(text, len, status, needle, what);
+    free(text);
+}
+
+/* Pointers between entities that lead nowhere, counts that cannot be,
+ * and values the geometry checks refuse, each named by its entity. */
+static void pointers_and_counts(void)
+{
+    char line[] = "1,1,0,0,1,0,0.,0.,1.,1.,1.,1.,0.,0.,0.,1.,0.,0.,0.,1.;";
+    char bad_member[] = "2,1,99;", even_member[] = "1,2;", huge_composite[] = "2000000000,1;";
+    char negative_composite[] = "-3,1;";
+    char cos_bad[] = "1,0,1,7,0;", cos_curve_bad[] = "1,0,0,41,0;";
+    const int curve_102[2] = {126, 102}, curve_142[2] = {126, 142};
+    char *p[2] = {line, bad_member};
+    expect_iges_error(curve_102, p, 2, PROJCURVE_ERR_PARSE, "DE 3: pointer 99",
+                      "composite member past the directory");
+    p[1] = even_member;
+    expect_iges_error(curve_102, p, 2, PROJCURVE_ERR_PARSE, "DE 3: pointer 2",
+                      "composite member at an even DE");
+    p[1] = huge_composite;
+    expect_iges_error(curve_102, p, 2, PROJCURVE_ERR_PARSE, "DE 3", "absurd member count");
+    p[1] = negative_composite;
+    expect_iges_error(curve_102, p, 2, PROJCURVE_ERR_PARSE, "DE 3", "negative member count");
+    p[1] = cos_bad;
+    expect_iges_error(curve_142, p, 2, PROJCURVE_ERR_PARSE, "DE 3: pointer 7",
+                      "142 parameter curve past the directory");
+    p[1] = cos_curve_bad;
+    expect_iges_error(curve_142, p, 2, PROJCURVE_ERR_PARSE, "DE 3: pointer 41",
+                      "142 3D curve past the directory");
+
+    /* A weight of zero reaches the curve validation, named by the entity. */
+    char zero_weight[] = "1,1,0,0,0,0,0.,0.,1.,1.,0.,1.,0.,0.,0.,1.,0.,0.,0.,1.;";
+    const int curve[1] = {126};
+    char *one[1] = {zero_weight};
+    expect_iges_error(curve, one, 1, PROJCURVE_ERR_BAD_WEIGHT, "IGES entity 126 at DE 1",
+                      "zero weight");
+    /* More knots claimed than the record holds. */
+    char short_curve[] = "40,1,0,0,1,0,0.,0.,1.,1.;";
+    one[0] = short_curve;
+    expect_iges_error(curve, one, 1, PROJCURVE_ERR_PARSE, "IGES entity 126 at DE 1",
+                      "count beyond the parameters");
+}
+
 static void api_misuse(void)
 {
     projcurve_model *m = NULL;
@@ -479,6 +579,7 @@ int main(void)
     mutate("data/real/teapot_newell_spd.txt", 200, 5);
     iges_cases();
     reference_bombs();
+    pointers_and_counts();
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_malformed");
 }

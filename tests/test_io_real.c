@@ -193,6 +193,71 @@ static void check_nets(projcurve_context *ctx)
     }
 }
 
+typedef struct degree_tally {
+    int du, dv;
+    int count;
+} degree_tally;
+
+/* The file's surfaces have these degrees, this many of each (SOURCES.md);
+ * single_span: every surface is one Bezier patch. */
+static void check_degrees(projcurve_context *ctx, const char *name, const degree_tally *want,
+                          size_t n_want, int single_span)
+{
+    char rel[256];
+    snprintf(rel, sizeof rel, "data/real/%s", name);
+    projcurve_model *m = load(ctx, rel);
+    if (m == NULL)
+        return;
+    int got[16] = {0}, other = 0, multi_span = 0;
+    for (size_t i = 0; i < projcurve_model_surface_count(m); ++i) {
+        int a, b;
+        size_t su, sv;
+        CHECK_OK(projcurve_surface_info(ctx, projcurve_model_surface(m, i), &a, &b, NULL, NULL,
+                                        &su, &sv, NULL));
+        multi_span += (su != 1 || sv != 1);
+        size_t k = 0;
+        while (k < n_want && !(want[k].du == a && want[k].dv == b))
+            ++k;
+        if (k < n_want)
+            ++got[k];
+        else
+            ++other;
+    }
+    for (size_t k = 0; k < n_want; ++k)
+        if (got[k] != want[k].count)
+            pc_test_fail_at(__FILE__, __LINE__, "%s: %d surfaces of degree (%d,%d), SOURCES.md "
+                            "says %d", name, got[k], want[k].du, want[k].dv, want[k].count);
+    CHECK(other == 0);
+    if (single_span)
+        CHECK(multi_span == 0);
+    pc_test_checks += (int)n_want;
+    projcurve_model_destroy(m);
+}
+
+static void check_degree_tallies(projcurve_context *ctx)
+{
+    static const degree_tally hammer[] = {{2, 2, 12}, {1, 2, 15}, {1, 1, 14}, {3, 1, 4}};
+    static const degree_tally bearing[] = {{3, 3, 87}, {3, 1, 69}, {5, 3, 18},
+                                           {4, 3, 18}, {1, 3, 11}, {6, 3, 4},
+                                           {1, 1, 4},  {2, 3, 1},  {8, 3, 1}};
+    check_degrees(ctx, "hammer.iges", hammer, sizeof hammer / sizeof *hammer, 0);
+    check_degrees(ctx, "bearing.iges", bearing, sizeof bearing / sizeof *bearing, 1);
+    /* test-joinsurf_01.stp: one 5 x 21 net with 2 x 18 spans, one 4 x 18
+     * with 1 x 15; shroud_kaplan.xml: two 15 x 10 nets, 13 x 8 spans. */
+    projcurve_model *m = load(ctx, "data/real/test-joinsurf_01.stp");
+    if (m) {
+        check_shape(ctx, m, 0, 3, 3, 4, 18, 1, 15);
+        check_shape(ctx, m, 1, 3, 3, 5, 21, 2, 18);
+        projcurve_model_destroy(m);
+    }
+    m = load(ctx, "data/real/shroud_kaplan.xml");
+    if (m) {
+        check_shape(ctx, m, 0, 2, 2, 15, 10, 13, 8);
+        check_shape(ctx, m, 1, 2, 2, 15, 10, 13, 8);
+        projcurve_model_destroy(m);
+    }
+}
+
 static void check_cases(projcurve_context *ctx)
 {
     static const char *const cases[] = {
@@ -224,6 +289,7 @@ int main(void)
     check_shapes(ctx);
     check_linkrods_degrees(ctx);
     check_nets(ctx);
+    check_degree_tallies(ctx);
     check_cases(ctx);
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_real");

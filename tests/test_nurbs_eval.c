@@ -127,6 +127,13 @@ static void check_three_routes(const pc_shape_surface *shape, pc_test_rng *rng, 
             dscale = fmax(dscale, vec3_norm(basis[d]));
         for (int d = 1; d < 6; ++d)
             CHECK_NEAR(vec3_dist(basis[d], bez[d]), 0.0, tol_points * 10.0 * (dscale + scale));
+        /* Orders 0 and 1 have evaluators of their own: same leading values. */
+        for (int order = 0; order < 2; ++order) {
+            pc_vec3 low[3];
+            pc_nurbs_surface_eval(&s->nurbs, u, v, order, NULL, NULL, low);
+            for (int d = 0; d < (order == 0 ? 1 : 3); ++d)
+                CHECK_NEAR(vec3_dist(low[d], basis[d]), 0.0, tol_points * (dscale + scale));
+        }
     }
     projcurve_surface_destroy(s);
 }
@@ -211,6 +218,18 @@ static void test_degrees(void)
         check_three_routes(&s, &rng, 20, TOL_EXACT * (1.0 + (p + q) / 10.0));
         pc_shape_surface_free(&s);
     }
+    /* The degree pairs with evaluators of their own (monomial form), the
+     * run-time-degree path just above them, polynomial and rational. */
+    static const int fast[][2] = {{3, 3}, {2, 2}, {1, 1}, {3, 1}, {1, 3},
+                                  {5, 5}, {5, 1}, {2, 3}, {7, 7}, {7, 4}};
+    for (size_t k = 0; k < sizeof fast / sizeof *fast; ++k)
+        for (int rational = 0; rational <= 1; ++rational) {
+            const int p = fast[k][0], q = fast[k][1];
+            pc_shape_surface s =
+                random_surface(&rng, p, q, (size_t)p + 4, (size_t)q + 3, rational);
+            check_three_routes(&s, &rng, 40, TOL_EXACT * (1.0 + (p + q) / 10.0));
+            pc_shape_surface_free(&s);
+        }
 }
 
 /* Curves: de Boor vs library, derivatives to order 3 vs differences. */

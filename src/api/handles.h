@@ -46,6 +46,7 @@ struct projcurve_options {
     long long max_pieces;
     long long compose;
     long long jump_detection;
+    long long pcurve_degree;   /* 1 or 3: PROJCURVE_OPT_PCURVE_DEGREE */
 };
 
 /* Fills o with every default (used when the caller passes NULL options). */

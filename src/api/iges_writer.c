@@ -1,22 +1,24 @@
 /*
  * Public IGES writer: surfaces (128), curves (126) and projection results,
- * each composed branch as its 3D curve (126), its (u, v) pcurve (126 of
- * degree 1 through the traced points, in the plane z = 0) and a curve on
- * surface (142, "projection of a curve onto the surface") tying them to the
- * surface. A surface is written once however often it is added (entities
+ * each composed branch as its 3D curve (126), its (u, v) pcurve (126 in the
+ * plane z = 0: the pieces' pcurves joined, so that S composed with it is the
+ * 3D curve; the traced points as a polyline for a branch not composed) and a
+ * curve on surface (142, "projection of a curve onto the surface") tying
+ * them to the surface. A surface is written once however often it is added (entities
  * are compared by their parameter text, i.e. exactly).
  */
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/branch_pcurve.h"
 #include "api/handles.h"
 #include "common/error.h"
 #include "io/iges_write.h"
 
 #define PC_IGES_CURVE_ON_SURFACE 142
 #define PC_IGES_COS_PROJECTION 1 /* CRTN: created as a projection */
-#define PC_IGES_COS_PREFER_3D 2  /* PREF: the 3D curve is exact, the pcurve a polyline */
-#define PC_IGES_COS_PREFER_2D 1
+#define PC_IGES_COS_PREFER_BOTH 3 /* PREF: S o pcurve and the 3D curve are the same curve */
+#define PC_IGES_COS_PREFER_2D 1   /* only the pcurve (traced points, not composed) */
 
 struct projcurve_iges_writer {
     pc_iges_out out;
@@ -98,7 +100,7 @@ projcurve_status projcurve_iges_writer_add_curve(projcurve_context *ctx,
 
 /* The branch's traced (u, v) points as a degree-1 pcurve in z = 0,
  * parametrised by the curve parameter t (repeated t values dropped). */
-static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
+static projcurve_status add_traced_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
                                    const projcurve_result *r, size_t branch, size_t *de)
 {
     size_t n = 0;
@@ -147,6 +149,25 @@ cleanup:
     return st;
 }
 
+/* The pcurve of a composed branch (its pieces' (u, v) curves joined), or
+ * of one that is not composed (its traced points). */
+static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   const projcurve_result *r, size_t branch, size_t *de)
+{
+    projcurve_curve *pcurve = NULL;
+    projcurve_status st = pc_branch_pcurve(ctx, r, branch, &pcurve);
+    if (st == PROJCURVE_ERR_INVALID_ARGUMENT)
+        return add_traced_pcurve(ctx, w, r, branch, de);
+    if (st != PROJCURVE_OK)
+        return st;
+    pc_text_buf b = {0};
+    pc_iges_format_curve(&b, &pcurve->nurbs, 1);
+    st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PARAMETRIC_PART, &b, de);
+    free(b.text);
+    projcurve_curve_destroy(pcurve);
+    return st;
+}
+
 static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer *w,
                                    size_t surface_de, const projcurve_result *r, size_t branch)
 {
@@ -169,7 +190,7 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
     pc_text_buf_int(&b, (long long)surface_de);
     pc_text_buf_int(&b, (long long)pcurve_de);
     pc_text_buf_int(&b, (long long)curve_de);
-    pc_text_buf_int(&b, curve_de ? PC_IGES_COS_PREFER_3D : PC_IGES_COS_PREFER_2D);
+    pc_text_buf_int(&b, curve_de ? PC_IGES_COS_PREFER_BOTH : PC_IGES_COS_PREFER_2D);
     pc_text_buf_end(&b);
     size_t de;
     st = pc_iges_out_add(ctx, &w->out, PC_IGES_CURVE_ON_SURFACE, 0, PC_IGES_STATUS_INDEPENDENT, &b,

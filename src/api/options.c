@@ -56,7 +56,38 @@ static const pc_option_desc pc_option_table[] = {
      0.0, 1.0, 0, 1.0, PC_FIELD(compose)},
     {PROJCURVE_OPT_JUMP_DETECTION, "JUMP_DETECTION", PROJCURVE_OPTION_INTEGER,
      0.0, 1.0, 0, 1.0, PC_FIELD(jump_detection)},
+    {PROJCURVE_OPT_PCURVE_DEGREE, "PCURVE_DEGREE", PROJCURVE_OPTION_INTEGER,
+     1.0, 3.0, 0, 1.0, PC_FIELD(pcurve_degree)},
 };
+
+/* Integer options whose bounds admit values that mean nothing: the values
+ * allowed (bounds from the table above still apply). */
+typedef struct pc_option_choices {
+    projcurve_option key;
+    long long values[2];
+    size_t count;
+} pc_option_choices;
+
+static const pc_option_choices pc_option_choice_table[] = {
+    {PROJCURVE_OPT_PCURVE_DEGREE, {1, 3}, 2}, /* straight or cubic Hermite pcurves */
+};
+
+#define PC_OPTION_CHOICE_COUNT (sizeof pc_option_choice_table / sizeof pc_option_choice_table[0])
+
+/* 1 when value is one of key's choices, or key has no list of choices. */
+static int pc_option_value_allowed(projcurve_option key, long long value)
+{
+    for (size_t i = 0; i < PC_OPTION_CHOICE_COUNT; ++i) {
+        const pc_option_choices *c = &pc_option_choice_table[i];
+        if (c->key != key)
+            continue;
+        for (size_t k = 0; k < c->count; ++k)
+            if (c->values[k] == value)
+                return 1;
+        return 0;
+    }
+    return 1;
+}
 
 #define PC_OPTION_COUNT (sizeof pc_option_table / sizeof pc_option_table[0])
 
@@ -183,6 +214,9 @@ projcurve_status projcurve_options_set_int(projcurve_context *ctx, projcurve_opt
     if (value < lo || value > hi)
         return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE, "option %s: %lld is outside [%lld, %lld]",
                        d->name, value, lo, hi);
+    if (!pc_option_value_allowed(key, value))
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE, "option %s: %lld is not one of the allowed values",
+                       d->name, value);
     *pc_option_int(opts, d) = value;
     return PROJCURVE_OK;
 }

@@ -136,6 +136,27 @@ projcurve_status projcurve_result_piece(projcurve_context *ctx, const projcurve_
     return PROJCURVE_OK;
 }
 
+projcurve_status projcurve_result_piece_pcurve(projcurve_context *ctx,
+                                               const projcurve_result *result, size_t branch,
+                                               size_t piece, int *degree, double *uv_ctrl)
+{
+    const pc_branch *b = NULL;
+    projcurve_status st = get_branch(ctx, result, branch, &b);
+    if (st != PROJCURVE_OK)
+        return st;
+    if (piece >= b->n_pieces)
+        return pc_fail(ctx, PROJCURVE_ERR_INDEX, "piece %zu of %zu", piece, b->n_pieces);
+    if (result->point_dim != 3)
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "a result on an implicit surface has no (u, v) pcurve");
+    const pc_piece *p = &b->pieces[piece];
+    if (degree)
+        *degree = p->uv_degree;
+    if (uv_ctrl)
+        memcpy(uv_ctrl, p->uv_ctrl, 2 * (size_t)(p->uv_degree + 1) * sizeof *uv_ctrl);
+    return PROJCURVE_OK;
+}
+
 /* Homogeneous control points (w x, w y, w z, w) of a piece raised to
  * degree `to` by repeated degree elevation:
  * Q_i = i/(n+1) P_(i-1) + (1 - i/(n+1)) P_i. hw holds 4 * (to + 1). */

@@ -25,6 +25,10 @@ typedef struct pc_patch_grid {
     pc_bezier_patch *patches;
     double *breaks_u;         /* spans_u + 1 distinct knot values */
     double *breaks_v;         /* spans_v + 1 */
+    /* Per break: 1 where the surface may be only C^0 across it (the domain
+     * boundary, or a knot of multiplicity >= degree). */
+    unsigned char *crease_u;  /* spans_u + 1 */
+    unsigned char *crease_v;  /* spans_v + 1 */
     double *cw;               /* storage of all patch nets */
 } pc_patch_grid;
 

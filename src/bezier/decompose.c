@@ -51,6 +51,23 @@ static void fill_patches(pc_patch_grid *grid, const pc_nurbs_surface *s, const d
         }
 }
 
+/* flags[k] for the spans + 1 breaks of one direction: the ends, and the
+ * knots repeated at least degree times (one pass: both lists ascend). */
+static void crease_flags(const double *knots, size_t n_ctrl, int degree, const double *breaks,
+                         size_t spans, unsigned char *flags)
+{
+    const size_t n_knots = n_ctrl + (size_t)degree + 1;
+    size_t i = 0;
+    for (size_t k = 0; k <= spans; ++k) {
+        while (i < n_knots && knots[i] < breaks[k])
+            ++i;
+        size_t mult = 0;
+        while (i + mult < n_knots && knots[i + mult] == breaks[k])
+            ++mult;
+        flags[k] = k == 0 || k == spans || mult >= (size_t)degree;
+    }
+}
+
 projcurve_status pc_patch_grid_build(projcurve_context *ctx, pc_patch_grid *grid,
                                      const pc_nurbs_surface *s)
 {
@@ -74,9 +91,12 @@ projcurve_status pc_patch_grid_build(projcurve_context *ctx, pc_patch_grid *grid
     grid->patches = malloc(n_patches * sizeof(pc_bezier_patch));
     grid->breaks_u = malloc((grid->spans_u + 1) * sizeof(double));
     grid->breaks_v = malloc((grid->spans_v + 1) * sizeof(double));
+    grid->crease_u = malloc(grid->spans_u + 1);
+    grid->crease_v = malloc(grid->spans_v + 1);
     grid->cw = malloc(n_doubles * sizeof(double));
     if (rows_u == NULL || big == NULL || grid->patches == NULL || grid->breaks_u == NULL ||
-        grid->breaks_v == NULL || grid->cw == NULL) {
+        grid->breaks_v == NULL || grid->crease_u == NULL || grid->crease_v == NULL ||
+        grid->cw == NULL) {
         free(rows_u);
         free(big);
         pc_patch_grid_free(grid);
@@ -85,6 +105,8 @@ projcurve_status pc_patch_grid_build(projcurve_context *ctx, pc_patch_grid *grid
     }
     pc_bezier_breaks(s->knots_u, s->n_u, s->deg_u, grid->breaks_u);
     pc_bezier_breaks(s->knots_v, s->n_v, s->deg_v, grid->breaks_v);
+    crease_flags(s->knots_u, s->n_u, s->deg_u, grid->breaks_u, grid->spans_u, grid->crease_u);
+    crease_flags(s->knots_v, s->n_v, s->deg_v, grid->breaks_v, grid->spans_v, grid->crease_v);
     for (size_t j = 0; j < s->n_v; ++j)
         pc_bezier_extract(s->knots_u, s->n_u, s->deg_u, s->cw + 4 * s->n_u * j, 4,
                           rows_u + 4 * big_nu * j);
@@ -102,6 +124,8 @@ void pc_patch_grid_free(pc_patch_grid *grid)
     free(grid->patches);
     free(grid->breaks_u);
     free(grid->breaks_v);
+    free(grid->crease_u);
+    free(grid->crease_v);
     free(grid->cw);
     memset(grid, 0, sizeof *grid);
 }

@@ -14,6 +14,19 @@
 void pc_compose_segment(const pc_bezier_patch *patch, const double uv0[2], const double uv1[2],
                         double *cw_out);
 
+/* Largest degree of a pcurve pc_compose_poly composes. */
+#define PC_COMPOSE_POLY_MAX_DEGREE 3
+
+/* Control points of S(u(s), v(s)), s in [0, 1], where (u, v)(s) is the
+ * Bezier curve of `degree` (1..PC_COMPOSE_POLY_MAX_DEGREE) with the
+ * degree + 1 (u, v) control points uv_ctrl, all inside `patch`'s box (then
+ * the whole curve is). Writes degree (deg_u + deg_v) + 1 homogeneous points
+ * (4 doubles each) to cw_out and returns that degree; -1 (nothing written)
+ * when the degree is out of range or the result's degree would exceed
+ * 2 PROJCURVE_MAX_DEGREE. */
+int pc_compose_poly(const pc_bezier_patch *patch, int degree, const double *uv_ctrl,
+                    double *cw_out);
+
 /* Cartesian control points (3 doubles each) and weights of a rational Bezier
  * curve given by degree + 1 homogeneous points (4 doubles each); weights must
  * be non-zero (they are positive for a NURBS patch). */

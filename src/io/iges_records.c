@@ -1,7 +1,15 @@
+#include <ctype.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "common/error.h"
 #include "io/iges.h"
+
+/* How far from column 73 a section letter is looked for to explain a
+ * record whose columns are shifted. */
+#define PC_IGES_MAX_SHIFT 8
+/* Digits of the sequence number that must follow such a letter. */
+#define PC_IGES_MIN_SHIFTED_DIGITS 4
 
 static int section_index(char letter)
 {
@@ -23,6 +31,30 @@ static int has_line_ends(const char *data, size_t len)
     return memchr(data, '\n', probe) != NULL || len <= PC_IGES_RECORD;
 }
 
+/* Column 73 holds no section letter: says where the letter is when the
+ * record looks shifted (a letter followed by digits to the end of the
+ * record a few columns away), so the message names the real fault. */
+static projcurve_status misplaced_letter(projcurve_context *ctx, const char *line, size_t len,
+                                         size_t line_no, char letter)
+{
+    for (size_t c = PC_IGES_DATA_COLUMNS - PC_IGES_MAX_SHIFT;
+         c <= PC_IGES_DATA_COLUMNS + PC_IGES_MAX_SHIFT && c + 1 < len; ++c) {
+        if (c == PC_IGES_DATA_COLUMNS || section_index(line[c]) < 0)
+            continue;
+        size_t d = c + 1, digits = 0;
+        for (; d < len && (isdigit((unsigned char)line[d]) || line[d] == ' '); ++d)
+            digits += isdigit((unsigned char)line[d]) != 0;
+        if (d == len && digits >= PC_IGES_MIN_SHIFTED_DIGITS)
+            return pc_fail(ctx, PROJCURVE_ERR_PARSE,
+                           "IGES line %zu: the section letter '%c' is in column %zu, not 73: "
+                           "the columns are shifted",
+                           line_no, line[c], c + 1);
+    }
+    return pc_fail(ctx, PROJCURVE_ERR_PARSE,
+                   "IGES line %zu: column 73 holds '%c', not a section letter (S, G, D, P, T)",
+                   line_no, (letter >= 32 && letter < 127) ? letter : '?');
+}
+
 static projcurve_status add_record(pc_iges_file *f, const char *line, size_t len, size_t line_no,
                                    int *last_section, size_t *counts, int counting)
 {
@@ -40,9 +72,7 @@ static projcurve_status add_record(pc_iges_file *f, const char *line, size_t len
                        "IGES line %zu: compressed or binary IGES is not supported", line_no);
     const int s = section_index(letter);
     if (s < 0)
-        return pc_fail(ctx, PROJCURVE_ERR_PARSE,
-                       "IGES line %zu: column 73 holds '%c', not a section letter (S, G, D, P, T)",
-                       line_no, (letter >= 32 && letter < 127) ? letter : '?');
+        return misplaced_letter(ctx, line, len, line_no, letter);
     if (s < *last_section)
         return pc_fail(ctx, PROJCURVE_ERR_PARSE,
                        "IGES line %zu: section %c after a later section", line_no, letter);
@@ -109,6 +139,40 @@ static projcurve_status walk(pc_iges_file *f, const char *data, size_t len, size
     return PROJCURVE_OK;
 }
 
+/* The terminate record "S0000001G0000004D0000026P0000521" counts the
+ * records of the other sections: a file cut short or missing lines (a
+ * partial copy or transfer) is caught here, with the section that differs,
+ * instead of surfacing later as an entity whose parameters are missing. */
+static projcurve_status check_terminate(const pc_iges_file *f)
+{
+    const pc_iges_section *t = &f->sec[4];
+    if (t->count == 0)
+        return pc_fail(f->ctx, PROJCURVE_ERR_PARSE,
+                       "IGES: no terminate (T) record at the end: the file is truncated");
+    const char *rec = t->records[0];
+    for (int s = 0; s < 4; ++s) {
+        const char *field = rec + 8 * s;
+        char digits[8];
+        memcpy(digits, field + 1, 7);
+        digits[7] = '\0';
+        char *end = NULL;
+        const long n = strtol(digits, &end, 10);
+        while (end != NULL && *end == ' ')
+            ++end;
+        if (field[0] != "SGDP"[s] || end == digits || end == NULL || *end != '\0' || n < 0)
+            return pc_fail(f->ctx, PROJCURVE_ERR_PARSE,
+                           "IGES line %zu: the terminate record does not count the sections "
+                           "('%.32s')",
+                           t->lines[0], rec);
+        if ((size_t)n != f->sec[s].count)
+            return pc_fail(f->ctx, PROJCURVE_ERR_PARSE,
+                           "IGES line %zu: the terminate record counts %ld %c records, the file "
+                           "has %zu: records are missing or the file is truncated",
+                           t->lines[0], n, "SGDP"[s], f->sec[s].count);
+    }
+    return PROJCURVE_OK;
+}
+
 projcurve_status pc_iges_split(pc_iges_file *f, const char *data, size_t len)
 {
     size_t counts[5] = {0};
@@ -123,6 +187,9 @@ projcurve_status pc_iges_split(pc_iges_file *f, const char *data, size_t len)
             return pc_fail(f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES records");
     }
     st = walk(f, data, len, counts, 0);
+    if (st != PROJCURVE_OK)
+        return st;
+    st = check_terminate(f);
     if (st != PROJCURVE_OK)
         return st;
     if (f->sec[1].count == 0)

@@ -6,6 +6,9 @@
 #define PC_IGES_LETTER_COLUMN 72
 /* Columns a first record may be off by and still be recognised. */
 #define PC_IGES_SHIFT_TOLERANCE 8
+/* Of the 7-column sequence number, at least this many columns must
+ * follow the letter (fewer when the record is shifted right). */
+#define PC_IGES_MIN_SEQUENCE_DIGITS 4
 
 static size_t skip_space_and_bom(const char *data, size_t len)
 {
@@ -36,7 +39,7 @@ static int looks_like_iges(const char *data, size_t len)
     size_t at = first;
     while (at > 0 && (isdigit((unsigned char)data[at - 1]) || data[at - 1] == ' '))
         --at;
-    if (at == 0 || first - at < 7)
+    if (at == 0 || first - at < PC_IGES_MIN_SEQUENCE_DIGITS)
         return 0;
     const char c = data[at - 1];
     return c == 'S' || c == 'G' || c == 'C' || c == 'B';

@@ -5,6 +5,10 @@
 
 #include "common/error.h"
 
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
 /* Splitting into Bezier segments inserts knots one by one (each insertion
  * moves the points after it): curves whose splitting would cost more point
  * moves than this are refused rather than joined slowly. */
@@ -13,9 +17,6 @@
 /* A quarter turn: arcs are split into Bezier segments no wider than this so
  * that every middle weight cos(angle / 2) stays >= cos(pi / 4). */
 #define PC_ARC_MAX_SEGMENT (M_PI / 2.0)
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 void pc_io_affine_identity(pc_io_affine *a)
 {
@@ -333,6 +334,46 @@ static projcurve_status hcurve_bezier(projcurve_context *ctx, pc_arena *arena,
     return PROJCURVE_OK;
 }
 
+/* Appends the Bezier segments of h (raised to degree o->p) to o, whose
+ * first q points and kq knots are filled; *t is the running parameter. A
+ * part after the first must start where the previous one ended. */
+static projcurve_status append_part(projcurve_context *ctx, const hcurve *h, size_t index,
+                                    double gap_tol, hcurve *o, size_t *q, size_t *kq, double *t)
+{
+    const size_t p = (size_t)h->p, P = (size_t)o->p;
+    double scale = 1.0;
+    if (*q > 0) {
+        const double *end = o->pw + 4 * (*q - 1), *start = h->pw;
+        double gap = 0.0;
+        for (size_t c = 0; c < 3; ++c) {
+            const double d = end[c] / end[3] - start[c] / start[3];
+            gap += d * d;
+        }
+        if (!(sqrt(gap) <= gap_tol))
+            return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                           "part %zu does not start where part %zu ends (gap %g)", index + 1,
+                           index, sqrt(gap));
+        /* Scaling a rational part's weights leaves it unchanged and makes
+         * the homogeneous points agree at the join. */
+        scale = end[3] / start[3];
+    }
+    double seg[4 * (PROJCURVE_MAX_DEGREE + 1)];
+    for (size_t s = 0; s + 1 < h->n; s += p) {
+        memcpy(seg, h->pw + 4 * s, 4 * (p + 1) * sizeof(double));
+        for (int e = (int)p; e < o->p; ++e)
+            bezier_elevate(seg, e);
+        for (size_t j = (*q == 0) ? 0 : 1; j <= P; ++j) { /* a join shares its point */
+            for (size_t c = 0; c < 4; ++c)
+                o->pw[4 * *q + c] = seg[4 * j + c] * scale;
+            ++*q;
+        }
+        *t += h->u[s + p + 1] - h->u[s + p];
+        for (size_t k = 0; k < P; ++k)
+            o->u[(*kq)++] = *t;
+    }
+    return PROJCURVE_OK;
+}
+
 projcurve_status pc_io_curve_join(projcurve_context *ctx, pc_arena *arena,
                                   const pc_io_curve *parts, size_t n_parts, double gap_tol,
                                   pc_io_curve *out)
@@ -347,7 +388,6 @@ projcurve_status pc_io_curve_join(projcurve_context *ctx, pc_arena *arena,
     int deg = 1;
     for (size_t i = 0; i < n_parts; ++i)
         deg = parts[i].degree > deg ? parts[i].degree : deg;
-    const size_t P = (size_t)deg;
     hcurve *bz = pc_arena_calloc(arena, n_parts, sizeof *bz);
     if (bz == NULL)
         return no_memory(ctx);
@@ -358,49 +398,22 @@ projcurve_status pc_io_curve_join(projcurve_context *ctx, pc_arena *arena,
             return st;
         n_seg += (bz[i].n - 1) / (size_t)bz[i].p;
     }
-    hcurve o = {.p = deg, .n = n_seg * P + 1};
+    /* Output: n_seg * deg + 1 points; knots t0 (deg + 1 times), each join
+     * deg times, the end once more. */
+    hcurve o = {.p = deg, .n = n_seg * (size_t)deg + 1};
     o.cap = o.n;
     o.pw = arena_doubles(arena, 4 * o.n);
-    o.u = arena_doubles(arena, o.n + P + 1);
+    o.u = arena_doubles(arena, o.n + (size_t)deg + 1);
     if (o.pw == NULL || o.u == NULL)
         return no_memory(ctx);
-    double seg[4 * (PROJCURVE_MAX_DEGREE + 1)];
     double t = bz[0].u[0];
     size_t q = 0, kq = 0;
-    for (size_t k = 0; k <= P; ++k)
+    for (size_t k = 0; k <= (size_t)deg; ++k)
         o.u[kq++] = t;
     for (size_t i = 0; i < n_parts; ++i) {
-        const hcurve *h = &bz[i];
-        const size_t p = (size_t)h->p;
-        double scale = 1.0;
-        if (i > 0) {
-            const double *end = o.pw + 4 * (q - 1);
-            const double *start = h->pw;
-            double gap = 0.0;
-            for (size_t c = 0; c < 3; ++c) {
-                const double d = end[c] / end[3] - start[c] / start[3];
-                gap += d * d;
-            }
-            if (!(sqrt(gap) <= gap_tol))
-                return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
-                               "part %zu does not start where part %zu ends (gap %g)", i + 1, i,
-                               sqrt(gap));
-            scale = end[3] / start[3];
-        }
-        for (size_t s = 0; s + 1 < h->n; s += p) {
-            memcpy(seg, h->pw + 4 * s, 4 * (p + 1) * sizeof(double));
-            for (int e = (int)p; e < deg; ++e)
-                bezier_elevate(seg, e);
-            const size_t first = (q == 0) ? 0 : 1; /* a join shares its point */
-            for (size_t j = first; j <= P; ++j) {
-                for (size_t c = 0; c < 4; ++c)
-                    o.pw[4 * q + c] = seg[4 * j + c] * scale;
-                ++q;
-            }
-            t += h->u[s + p + 1] - h->u[s + p];
-            for (size_t k = 0; k < P; ++k)
-                o.u[kq++] = t;
-        }
+        projcurve_status st = append_part(ctx, &bz[i], i, gap_tol, &o, &q, &kq, &t);
+        if (st != PROJCURVE_OK)
+            return st;
     }
     o.u[kq] = t;
     return hcurve_to_io(ctx, arena, &o, out);

@@ -249,6 +249,71 @@ static projcurve_status typed(parser *p, int depth, pc_step_node **out)
     return list_items(p, depth, n);
 }
 
+static projcurve_status out_of_memory(const parser *p)
+{
+    return pc_fail(p->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory parsing STEP");
+}
+
+/* '...' (with '' for a quote) or "..." (binary): the text between. */
+static projcurve_status string_value(parser *p, pc_step_node *n)
+{
+    const char *s = p->f->text;
+    const char quote = s[p->pos];
+    const size_t start = ++p->pos;
+    while (p->pos < p->end) {
+        if (s[p->pos] == quote) {
+            if (quote == '\'' && p->pos + 1 < p->end && s[p->pos + 1] == '\'') {
+                p->pos += 2;
+                continue;
+            }
+            break;
+        }
+        ++p->pos;
+    }
+    if (p->pos >= p->end)
+        return syntax(p, "a string is not closed");
+    n->text = s + start;
+    n->len = p->pos - start;
+    ++p->pos;
+    return PROJCURVE_OK;
+}
+
+/* .NAME. */
+static projcurve_status enum_value(parser *p, pc_step_node *n)
+{
+    const char *s = p->f->text;
+    const size_t start = ++p->pos;
+    while (p->pos < p->end && is_name_char(s[p->pos]))
+        ++p->pos;
+    if (p->pos >= p->end || s[p->pos] != '.')
+        return syntax(p, "an enumeration is not closed by '.'");
+    n->text = s + start;
+    n->len = p->pos - start;
+    ++p->pos;
+    return PROJCURVE_OK;
+}
+
+static projcurve_status ref_value(parser *p, pc_step_node *n)
+{
+    const char *s = p->f->text;
+    char *e = NULL;
+    const long id = strtol(s + p->pos + 1, &e, 10);
+    if (e == s + p->pos + 1 || (size_t)(e - s) > p->end)
+        return syntax(p, "bad reference");
+    n->ref = id;
+    p->pos = (size_t)(e - s);
+    return PROJCURVE_OK;
+}
+
+static projcurve_status number_value(parser *p, pc_step_node *n)
+{
+    const size_t used = pc_text_parse_real(p->f->text + p->pos, p->end - p->pos, &n->number);
+    if (used == 0)
+        return syntax(p, "a number is malformed");
+    p->pos += used;
+    return PROJCURVE_OK;
+}
+
 static projcurve_status value(parser *p, int depth, pc_step_node **out)
 {
     if (depth > PC_STEP_MAX_DEPTH)
@@ -256,77 +321,36 @@ static projcurve_status value(parser *p, int depth, pc_step_node **out)
     skip(p);
     if (p->pos >= p->end)
         return syntax(p, "a value is missing");
-    const char *s = p->f->text;
-    const char c = s[p->pos];
-    pc_step_node *n = NULL;
-    if (c == '(') {
-        n = new_node(p, PC_STEP_LIST);
-        if (n == NULL)
-            return pc_fail(p->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory parsing STEP");
-        *out = n;
-        return list_items(p, depth, n);
-    }
+    const char c = p->f->text[p->pos];
     if (isalpha((unsigned char)c) || c == '_')
         return typed(p, depth, out);
-    if (c == '$' || c == '*') {
-        n = new_node(p, c == '$' ? PC_STEP_OMITTED : PC_STEP_DERIVED);
-        ++p->pos;
-    } else if (c == '#') {
-        n = new_node(p, PC_STEP_REF);
-        char *e = NULL;
-        const long id = strtol(s + p->pos + 1, &e, 10);
-        if (n == NULL || e == s + p->pos + 1 || (size_t)(e - s) > p->end)
-            return n == NULL ? pc_fail(p->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory")
-                             : syntax(p, "bad reference");
-        n->ref = id;
-        p->pos = (size_t)(e - s);
-    } else if (c == '\'' || c == '"') {
-        n = new_node(p, PC_STEP_STRING);
-        const size_t start = ++p->pos;
-        while (p->pos < p->end) {
-            if (s[p->pos] == c) {
-                if (c == '\'' && p->pos + 1 < p->end && s[p->pos + 1] == '\'') {
-                    p->pos += 2;
-                    continue;
-                }
-                break;
-            }
-            ++p->pos;
-        }
-        if (p->pos >= p->end)
-            return syntax(p, "a string is not closed");
-        if (n != NULL) {
-            n->text = s + start;
-            n->len = p->pos - start;
-        }
-        ++p->pos;
-    } else if (c == '.') {
-        n = new_node(p, PC_STEP_ENUM);
-        const size_t start = ++p->pos;
-        while (p->pos < p->end && is_name_char(s[p->pos]))
-            ++p->pos;
-        if (p->pos >= p->end || s[p->pos] != '.')
-            return syntax(p, "an enumeration is not closed by '.'");
-        if (n != NULL) {
-            n->text = s + start;
-            n->len = p->pos - start;
-        }
-        ++p->pos;
-    } else if (isdigit((unsigned char)c) || c == '-' || c == '+') {
-        n = new_node(p, PC_STEP_NUMBER);
-        if (n == NULL)
-            return pc_fail(p->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory parsing STEP");
-        const size_t used = pc_text_parse_real(s + p->pos, p->end - p->pos, &n->number);
-        if (used == 0)
-            return syntax(p, "a number is malformed");
-        p->pos += used;
-    } else {
+    pc_step_kind kind;
+    if (c == '(')
+        kind = PC_STEP_LIST;
+    else if (c == '$' || c == '*')
+        kind = c == '$' ? PC_STEP_OMITTED : PC_STEP_DERIVED;
+    else if (c == '#')
+        kind = PC_STEP_REF;
+    else if (c == '\'' || c == '"')
+        kind = PC_STEP_STRING;
+    else if (c == '.')
+        kind = PC_STEP_ENUM;
+    else if (isdigit((unsigned char)c) || c == '-' || c == '+')
+        kind = PC_STEP_NUMBER;
+    else
         return syntax(p, "unexpected character");
-    }
+    pc_step_node *n = new_node(p, kind);
     if (n == NULL)
-        return pc_fail(p->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory parsing STEP");
+        return out_of_memory(p);
     *out = n;
-    return PROJCURVE_OK;
+    switch (kind) {
+    case PC_STEP_LIST: return list_items(p, depth, n);
+    case PC_STEP_REF: return ref_value(p, n);
+    case PC_STEP_STRING: return string_value(p, n);
+    case PC_STEP_ENUM: return enum_value(p, n);
+    case PC_STEP_NUMBER: return number_value(p, n);
+    default: ++p->pos; return PROJCURVE_OK; /* $ or * */
+    }
 }
 
 projcurve_status pc_step_parse(const pc_step_file *f, const pc_step_instance *inst,

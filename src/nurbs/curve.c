@@ -1,5 +1,5 @@
 /*
- * NURBS curves: creation from user arrays and evaluation with derivatives.
+ * NURBS curves: creation from user arrays (evaluation: curve_eval.c).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "nurbs/input.h"
 #include "nurbs/nurbs.h"
+#include "nurbs/span_poly.h"
 
 projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, int degree,
                                      size_t n_ctrl, const double *ctrl, const double *weights,
@@ -45,6 +46,7 @@ projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, 
     c->rational = rational;
     c->t0 = b.knots[degree];
     c->t1 = b.knots[b.n_ctrl];
+    c->poly = pc_curve_polys_build(c); /* optional: NULL only costs speed */
     return PROJCURVE_OK;
 }
 
@@ -54,46 +56,8 @@ void pc_nurbs_curve_free(pc_nurbs_curve *c)
         return;
     free(c->knots);
     free(c->cw);
+    free(c->poly);
     c->knots = NULL;
     c->cw = NULL;
-}
-
-/* Binomial coefficients up to 3 for the quotient rule. */
-static const double k_binom[4][4] = {{1, 0, 0, 0}, {1, 1, 0, 0}, {1, 2, 1, 0}, {1, 3, 3, 1}};
-
-void pc_nurbs_curve_eval(const pc_nurbs_curve *c, double t, int n_deriv, size_t *hint,
-                         pc_vec3 *out)
-{
-    if (!(t >= c->t0))
-        t = c->t0;
-    if (t > c->t1)
-        t = c->t1;
-    const size_t span = pc_knot_span(c->knots, c->n_ctrl, c->degree, t, hint ? *hint : 0);
-    if (hint != NULL)
-        *hint = span;
-    pc_basis basis;
-    pc_basis_ders(c->knots, span, c->degree, t, n_deriv, &basis);
-    double(*ders)[PC_MAX_ORDER] = basis.d;
-
-    /* Homogeneous derivatives A^(k) (xyz) and w^(k). */
-    double a[PC_MAX_DERIV + 1][4] = {{0}};
-    const double *cw = c->cw + 4 * (span - (size_t)c->degree);
-    for (int k = 0; k <= n_deriv; ++k)
-        for (int j = 0; j <= c->degree; ++j)
-            for (int m = 0; m < 4; ++m)
-                a[k][m] += ders[k][j] * cw[4 * j + m];
-    if (!c->rational) {
-        for (int k = 0; k <= n_deriv; ++k)
-            out[k] = vec3(a[k][0], a[k][1], a[k][2]);
-        return;
-    }
-    /* Quotient rule: C^(k) = (A^(k) - sum_{i=1..k} binom(k,i) w^(i) C^(k-i)) / w
-     * (The NURBS Book, eq. 4.8). */
-    const double inv_w = 1.0 / a[0][3];
-    for (int k = 0; k <= n_deriv; ++k) {
-        pc_vec3 v = vec3(a[k][0], a[k][1], a[k][2]);
-        for (int i = 1; i <= k; ++i)
-            v = vec3_axpy(v, -k_binom[k][i] * a[i][3], out[k - i]);
-        out[k] = vec3_scale(v, inv_w);
-    }
+    c->poly = NULL;
 }

@@ -16,8 +16,8 @@ size_t pc_size_mul(size_t a, size_t b)
 
 /* The span of a clamped knot vector is searched in [degree, n_ctrl - 1]. A
  * valid hint (the span of the previous call, or its right neighbour, which
- * is where a sequential caller moves to) answers in O(1); otherwise a binary
- * search does it in O(log n). */
+ * is where a sequential caller moves to) answers in O(1); otherwise a
+ * branch-free binary search does it in O(log n). */
 size_t pc_knot_span(const double *knots, size_t n_ctrl, int degree, double t, size_t hint)
 {
     const size_t lo_span = (size_t)degree;
@@ -37,13 +37,15 @@ size_t pc_knot_span(const double *knots, size_t n_ctrl, int degree, double t, si
         if (hint < hi_span && knots[hint + 1] <= t && t < knots[hint + 2])
             return hint + 1;
     }
-    size_t lo = lo_span, hi = n_ctrl; /* invariant: knots[lo] <= t < knots[hi] */
-    while (hi - lo > 1) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (t < knots[mid])
-            hi = mid;
-        else
-            lo = mid;
+    /* Largest k in [lo_span, hi_span] with knots[k] <= t (then t <
+     * knots[k + 1]), by halving a range without a data-dependent branch:
+     * random queries would mispredict every other step of a classic
+     * bisection, which cost more than the evaluation itself. */
+    size_t lo = lo_span, len = n_ctrl - lo_span;
+    while (len > 1) {
+        const size_t half = len / 2;
+        lo = knots[lo + half] <= t ? lo + half : lo;
+        len -= half;
     }
     return lo;
 }

@@ -22,6 +22,7 @@ typedef struct pc_nurbs_curve {
     double *cw;     /* 4 * n_ctrl homogeneous control points */
     int rational;
     double t0, t1;  /* domain = [knots[degree], knots[n_ctrl]] */
+    double *poly;   /* monomial form per span (span_poly.h), or NULL */
 } pc_nurbs_curve;
 
 typedef struct pc_nurbs_surface {
@@ -36,6 +37,9 @@ typedef struct pc_nurbs_surface {
      * evaluation path does no division (pc_knot_inverses); NULL = computed
      * on the fly. */
     double *inv_u, *inv_v;
+    /* Monomial coefficients of every span pair (span_poly.h), which the
+     * fast evaluators use; NULL = evaluate in B-spline form. */
+    double *poly;
 } pc_nurbs_surface;
 
 /* Span index k with knots[k] <= t < knots[k+1] inside [degree, n_ctrl - 1]

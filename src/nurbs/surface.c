@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "nurbs/input.h"
 #include "nurbs/nurbs.h"
+#include "nurbs/span_poly.h"
 
 static double *copy_knots(const double *knots, size_t n)
 {
@@ -86,6 +87,7 @@ projcurve_status pc_nurbs_surface_init(projcurve_context *ctx, pc_nurbs_surface 
         pc_nurbs_surface_free(s);
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for knot tables");
     }
+    s->poly = pc_span_polys_build(s); /* optional: NULL only costs speed */
     return PROJCURVE_OK;
 
 cleanup:
@@ -105,5 +107,6 @@ void pc_nurbs_surface_free(pc_nurbs_surface *s)
     free(s->cw);
     free(s->inv_u);
     free(s->inv_v);
-    s->knots_u = s->knots_v = s->cw = s->inv_u = s->inv_v = NULL;
+    free(s->poly);
+    s->knots_u = s->knots_v = s->cw = s->inv_u = s->inv_v = s->poly = NULL;
 }

@@ -23,12 +23,28 @@ static projcurve_status grow(projcurve_context *ctx, pc_ortho_finder_state *st, 
     return PROJCURVE_OK;
 }
 
-/* Every local foot point of P(t) (projcurve_surface_foot_points). */
+/* The points of the branches alive at st->skip_t (see ortho_seeds.h). */
+static projcurve_status known_points(projcurve_context *ctx, const pc_ortho_finder_state *st,
+                                     pc_seed_list *out)
+{
+    projcurve_status status = PROJCURVE_OK;
+    for (size_t i = 0; status == PROJCURVE_OK && i < st->known.count; ++i)
+        status = pc_seed_list_push(ctx, out, st->known.items[i].t, st->known.items[i].u,
+                                   st->known.items[i].v);
+    return status;
+}
+
+/* Every local foot point of P(t) (projcurve_surface_foot_points), or the
+ * known ones where may_jump asked for no search. */
 static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx, double t,
                                    pc_seed_list *out)
 {
     pc_ortho_finder_state *st = self->state;
     out->count = 0;
+    const int skip = st->skip_due && t == st->skip_t;
+    st->skip_due = 0;
+    if (skip)
+        return known_points(ctx, st, out);
     pc_vec3 p;
     if (pc_curve_eval(st->curve, t, 0, NULL, &p) != PROJCURVE_OK)
         return pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "curve callback failed at t = %.17g", t);
@@ -55,13 +71,24 @@ static int ortho_may_jump(pc_seed_finder *self, double t, const pc_seed *active,
                           size_t n_active, double ds)
 {
     pc_ortho_finder_state *st = self->state;
-    (void)active;
     (void)ds;
     int search = 0;
     if (!st->started || n_active != st->last_active || t - st->last_full_t >= st->interval)
         search = 1;
     st->started = 1;
     st->last_active = n_active;
+    st->skip_due = 0;
+    if (!search) {
+        /* Keep the active points for a find the engine may run anyway;
+         * where they cannot be kept (no memory), that find searches. */
+        st->known.count = 0;
+        int kept = 1;
+        for (size_t i = 0; kept && i < n_active; ++i)
+            kept = pc_seed_list_push(NULL, &st->known, active[i].t, active[i].u,
+                                     active[i].v) == PROJCURVE_OK;
+        st->skip_due = kept;
+        st->skip_t = t;
+    }
     if (search)
         st->last_full_t = t;
     return search;
@@ -72,6 +99,7 @@ static void ortho_reset(pc_seed_finder *self)
     pc_ortho_finder_state *st = self->state;
     st->started = 0;
     st->last_active = 0;
+    st->skip_due = 0;
     st->last_full_t = st->curve->t0;
 }
 
@@ -83,6 +111,7 @@ void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
     state->interval = (curve->t1 - curve->t0) / PC_ORTHO_JUMP_CHECKS;
     state->uv = NULL;
     state->capacity = 0;
+    state->known = (pc_seed_list){0};
     finder->find = ortho_find;
     finder->may_jump = ortho_may_jump;
     finder->reset = ortho_reset;
@@ -95,4 +124,5 @@ void pc_ortho_finder_free(pc_ortho_finder_state *state)
     free(state->uv);
     state->uv = NULL;
     state->capacity = 0;
+    pc_seed_list_free(&state->known);
 }

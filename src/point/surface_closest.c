@@ -36,8 +36,8 @@ typedef struct closest_search {
     double best_d2;
     pc_surface_point best;
     const pc_bezier_patch *patch; /* the patch being walked */
-    unsigned char *crease_u;      /* per break: the domain boundary or a */
-    unsigned char *crease_v;      /* knot of multiplicity >= degree */
+    const unsigned char *crease_u; /* the grid's crease flags */
+    const unsigned char *crease_v;
 } closest_search;
 
 /* Parameters of the control point of the sub-patch nearest to p (control
@@ -125,23 +125,6 @@ static int touches_crease(const closest_search *cs, const pc_subpatch *sp)
            (sp->v1 >= pt->v1 && cs->crease_v[pt->iv + 1]);
 }
 
-/* flags[k] for each of the spans + 1 breaks of one direction. */
-static unsigned char *crease_flags(const double *knots, size_t n_ctrl, int degree,
-                                   const double *breaks, size_t spans)
-{
-    unsigned char *flags = malloc(spans + 1);
-    if (flags == NULL)
-        return NULL;
-    const size_t n_knots = n_ctrl + (size_t)degree + 1;
-    for (size_t k = 0; k <= spans; ++k) {
-        size_t mult = 0;
-        for (size_t i = 0; i < n_knots; ++i)
-            mult += knots[i] == breaks[k];
-        flags[k] = k == 0 || k == spans || mult >= (size_t)degree;
-    }
-    return flags;
-}
-
 static pc_subdiv_action decide_closest(void *user, const pc_subpatch *sp)
 {
     closest_search *cs = user;
@@ -177,18 +160,15 @@ static double visit_patch(void *user, size_t patch_index, double box_distance_sq
 projcurve_status pc_surface_closest(projcurve_context *ctx, const projcurve_surface *s,
                                     pc_vec3 p, pc_surface_point *out)
 {
-    closest_search cs = {.s = s, .p = p, .best_d2 = INFINITY};
+    closest_search cs = {.s = s,
+                         .p = p,
+                         .best_d2 = INFINITY,
+                         .crease_u = s->grid.crease_u,
+                         .crease_v = s->grid.crease_v};
     const pc_nurbs_surface *n = &s->nurbs;
-    cs.crease_u = crease_flags(n->knots_u, n->n_u, n->deg_u, s->grid.breaks_u, s->grid.spans_u);
-    cs.crease_v = crease_flags(n->knots_v, n->n_v, n->deg_v, s->grid.breaks_v, s->grid.spans_v);
-    projcurve_status st = cs.crease_u && cs.crease_v
-                              ? pc_subdiv_work_init(ctx, &cs.work, n->deg_u, n->deg_v)
-                              : pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory");
-    if (st != PROJCURVE_OK) {
-        free(cs.crease_u);
-        free(cs.crease_v);
+    const projcurve_status st = pc_subdiv_work_init(ctx, &cs.work, n->deg_u, n->deg_v);
+    if (st != PROJCURVE_OK)
         return st;
-    }
     cs.best.u = cs.best.v = NAN; /* nothing found yet */
     pc_bvh_query_nearest(&s->bvh, p, visit_patch, &cs);
     pc_subdiv_work_free(&cs.work);
@@ -196,8 +176,6 @@ projcurve_status pc_surface_closest(projcurve_context *ctx, const projcurve_surf
         cs.best.u = s->nurbs.domain[0];
         cs.best.v = s->nurbs.domain[2];
     }
-    free(cs.crease_u);
-    free(cs.crease_v);
     pc_nurbs_surface_eval(&s->nurbs, cs.best.u, cs.best.v, 0, NULL, NULL, &cs.best.q);
     cs.best.dist = vec3_dist(cs.best.q, p);
     *out = cs.best;

@@ -31,7 +31,8 @@
 #define MIN_NOISE_DECREASE 1e-14
 
 typedef struct local_frame {
-    pc_vec3 d[6]; /* S, Su, Sv, Suu, Suv, Svv */
+    size_t hint_u, hint_v; /* spans of the last evaluation: steps stay near */
+    pc_vec3 d[6];          /* S, Su, Sv, Suu, Suv, Svv */
     pc_vec3 r;
     double g[2];
     double h[3];  /* H11, H12, H22 */
@@ -39,7 +40,7 @@ typedef struct local_frame {
 
 static void frame_at(const pc_nurbs_surface *s, pc_vec3 p, const double uv[2], local_frame *f)
 {
-    pc_nurbs_surface_eval(s, uv[0], uv[1], 2, NULL, NULL, f->d);
+    pc_nurbs_surface_eval(s, uv[0], uv[1], 2, &f->hint_u, &f->hint_v, f->d);
     f->r = vec3_sub(f->d[0], p);
     f->g[0] = vec3_dot(f->r, f->d[1]);
     f->g[1] = vec3_dot(f->r, f->d[2]);
@@ -73,6 +74,7 @@ int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_si
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
     const double x0[2] = {x[0], x[1]};
     local_frame f;
+    f.hint_u = f.hint_v = 0;
     frame_at(s, p, x, &f);
     for (int it = 0; it < FOOT_MAX_ITER; ++it) {
         if (is_foot(&f, model_size)) {
@@ -88,7 +90,9 @@ int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_si
          * to a far basin in one step. */
         delta[0] = clampd(delta[0], -max_step_u, max_step_u);
         delta[1] = clampd(delta[1], -max_step_v, max_step_v);
-        local_frame nf;
+        local_frame nf; /* no initialiser: zeroing it costs more than a step */
+        nf.hint_u = f.hint_u;
+        nf.hint_v = f.hint_v;
         double nx[2];
         double alpha = 1.0;
         int accepted = 0;
@@ -149,8 +153,11 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
     const double *dom = s->domain;
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
     local_frame f;
+    f.hint_u = f.hint_v = 0;
     frame_at(s, p, x, &f);
     double d2 = vec3_dot(f.r, f.r);
+    const double step_tol2 = (MIN_STEP_TOL * model_size) * (MIN_STEP_TOL * model_size);
+    const double noise_step2 = (MIN_NOISE_STEP * model_size) * (MIN_NOISE_STEP * model_size);
     for (int it = 0; it < MIN_MAX_ITER; ++it) {
         /* Active set: a coordinate on its bound whose gradient pushes out. */
         const int free_dir[2] = {
@@ -164,11 +171,15 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
             break; /* no descent left at rounding level */
         /* Predicted displacement of S for the full step: converged when it
          * is at rounding level of the model. */
-        const double predicted =
-            vec3_norm(vec3_add(vec3_scale(f.d[1], delta[0]), vec3_scale(f.d[2], delta[1])));
+        const pc_vec3 moved = vec3_add(vec3_scale(f.d[1], delta[0]), vec3_scale(f.d[2], delta[1]));
+        const double predicted2 = vec3_dot(moved, moved); /* squared: no sqrt latency */
+        if (predicted2 <= step_tol2)
+            break; /* the step would move S by rounding noise: not worth an evaluation */
         double alpha = 1.0;
         int accepted = 0;
-        local_frame nf;
+        local_frame nf; /* no initialiser: zeroing it costs more than a step */
+        nf.hint_u = f.hint_u;
+        nf.hint_v = f.hint_v;
         double nx[2];
         for (int k = 0; k < MIN_MAX_HALVINGS; ++k, alpha *= 0.5) {
             nx[0] = clampd(x[0] + alpha * delta[0], dom[0], dom[1]);
@@ -186,11 +197,9 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
         x[1] = nx[1];
         f = nf;
         d2 = vec3_dot(f.r, f.r);
-        if (predicted <= MIN_STEP_TOL * model_size)
-            break;
         /* At rounding level the gradient is noise and Newton's step with
          * it: stop once small steps no longer lower the distance. */
-        if (predicted <= MIN_NOISE_STEP * model_size && previous - d2 <= MIN_NOISE_DECREASE * previous)
+        if (predicted2 <= noise_step2 && previous - d2 <= MIN_NOISE_DECREASE * previous)
             break;
     }
     /* Also after the iteration cap: the best point reached, which the

@@ -75,7 +75,7 @@ static projcurve_status load_branch(projcurve_context *ctx, const pc_branch *b,
     out->count = 0;
     for (size_t k = 0; k < n; ++k) {
         const double *q = p + 3 * (*descending ? n - 1 - k : k);
-        const pc_rvertex v = {q[0], q[1], q[2], k == 0 || k + 1 == n, 0};
+        const pc_rvertex v = {.t = q[0], .u = q[1], .v = q[2], .fixed = k == 0 || k + 1 == n};
         if (out->count > 0 && !(v.t > out->items[out->count - 1].t))
             continue;
         const projcurve_status st = pc_vertex_list_push(ctx, out, &v);
@@ -136,13 +136,16 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
     for (size_t k = 1, start = 0; k < l->crossed.count && st == PROJCURVE_OK; ++k) {
         if (!l->crossed.items[k].fixed)
             continue;
-        if (l->crossed.items[start].gap) /* out's last vertex is that gap vertex */
-            st = pc_refine_output(r, &l->out, &l->crossed.items[k]);
+        const pc_rvertex *from = &l->crossed.items[start], *to = &l->crossed.items[k];
+        if (from->gap) /* out's last vertex is that gap vertex */
+            st = pc_refine_output(r, &l->out, to);
         else
-            st = pc_refine_march(r, &l->crossed.items[start], &l->crossed.items[k], &l->out);
+            st = r->pcurve_degree == 3 ? pc_refine_march_cubic(r, from, to, &l->out)
+                                       : pc_refine_march(r, from, to, &l->out);
         start = k;
     }
-    if (st == PROJCURVE_OK && r->forced > 0)
+    /* (the angle pass splits straight segments; cubic pieces are G1) */
+    if (st == PROJCURVE_OK && r->forced > 0 && r->pcurve_degree == 1)
         st = pc_refine_angles(r, &l->out, &l->scratch);
     return st;
 }
@@ -185,7 +188,12 @@ static projcurve_status store_run(pc_refiner *r, pc_branch *b, const pc_vertex_l
     for (size_t k = 0; k + 1 < n && st == PROJCURVE_OK; ++k) {
         const pc_rvertex *a = &v[descending ? n - 1 - k : k];
         const pc_rvertex *e = &v[descending ? n - 2 - k : k + 1];
-        st = add_piece(r, b, pc_refine_common_patch(r, a, e), a, e);
+        int done = 0;
+        if (r->pcurve_degree == 3) /* the later vertex holds the segment's pcurve */
+            st = pc_refine_add_cubic_piece(r, b, a, e, descending ? a : e, r->nurbs->rational,
+                                           &done);
+        if (st == PROJCURVE_OK && !done)
+            st = add_piece(r, b, pc_refine_common_patch(r, a, e), a, e);
     }
     b->n_points = 0;
     for (size_t k = 0; k < n && st == PROJCURVE_OK; ++k) {
@@ -282,6 +290,9 @@ static void refiner_init(pc_refiner *r, projcurve_context *ctx, const pc_project
     r->min_move = PC_REFINE_MIN_MOVE_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
     r->snap = PC_REFINE_SNAP_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
     r->snap_far = PC_REFINE_SNAP_FAR_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
+    /* cubic pcurves only where the composed degree fits (projcurve.h) */
+    const int sum = s->nurbs.deg_u + s->nurbs.deg_v;
+    r->pcurve_degree = o->pcurve_degree == 3 && 3 * sum <= 2 * PROJCURVE_MAX_DEGREE ? 3 : 1;
 }
 
 projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projector *proj,

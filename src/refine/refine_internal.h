@@ -9,6 +9,7 @@
  *   split.c      the subdivision loop: knot lines, then Hausdorff (eps_D)
  *   march.c      the vertices: a step-controlled march along the exact curve
  *   angle.c      joint angle control (eps_T)
+ *   march_cubic.c, cubic.c   the same march with cubic Hermite pcurves
  *   refine.c     the driver: options, branches, composition, statistics
  */
 #ifndef PC_REFINE_INTERNAL_H
@@ -19,6 +20,7 @@
 #include "api/handles.h"
 #include "bezier/bezier.h"
 #include "trace/projector.h"
+#include "trace/result.h"
 
 /* Largest degree of a composed piece and its homogeneous storage. */
 #define PC_PIECE_MAX_DEGREE (2 * PROJCURVE_MAX_DEGREE)
@@ -35,6 +37,13 @@ typedef struct pc_rvertex {
     double t, u, v;
     int fixed;
     int gap; /* 0, or a pc_gap_kind */
+    /* Cubic pcurves (march_cubic.c): when in_cubic is 1, the segment ending
+     * here is the cubic Hermite from the previous vertex with the (u, v)
+     * derivatives in_d0 there and in_d1 here (q' per unit t, one-sided at
+     * knot lines). Meaningful only in cubic mode, where every vertex after
+     * a branch's first sets it. */
+    int in_cubic;
+    double in_d0[2], in_d1[2];
 } pc_rvertex;
 
 /* Why a segment is a gap: the corrector failed, or the vertex before it is
@@ -74,6 +83,7 @@ typedef struct pc_refiner {
     int last_singular;   /* the last pc_refine_exact_tangent was at a vertex
                             with |det J| below the fold threshold */
     size_t hint_u, hint_v;
+    int pcurve_degree;   /* 1 (straight segments) or 3 (cubic Hermite) */
 } pc_refiner;
 
 /* vertices.c */
@@ -145,6 +155,31 @@ pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rve
  * LIMIT_REACHED, NO_MEMORY. */
 projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
                                  pc_vertex_list *out);
+
+/* march_cubic.c: pc_refine_march for cubic pcurves: the same contract, and
+ * every vertex appended says through in_cubic how its segment is made
+ * (cubic Hermite, or a straight segment where the cubic would leave its
+ * patch or q' is not available). */
+projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
+                                       pc_vertex_list *out);
+
+/* cubic.c: the (u, v) derivative q' of the exact projection at v, with S's
+ * derivatives taken inside `patch` (one-sided on its boundary, where S may
+ * have a crease). Returns 1 on success. */
+int pc_refine_uv_tangent(pc_refiner *r, const pc_rvertex *v, const pc_bezier_patch *patch,
+                         double d[2]);
+/* cubic.c: the Hermite pcurve of the segment a-b (a.t < b.t) with the
+ * derivatives d0 at a and d1 at b, as Bezier control points uv[8]; 0 when
+ * they leave patch's box (beyond rounding, which is clamped away). */
+int pc_refine_hermite(const pc_refiner *r, const pc_bezier_patch *patch, const pc_rvertex *a,
+                      const pc_rvertex *b, const double d0[2], const double d1[2], double uv[8]);
+/* cubic.c: composes the segment from-to whose pcurve `seg` holds (seg is the
+ * later of the two in t; from may be either end) and appends it to branch
+ * b. *done is 0 (nothing appended) when seg holds no cubic or it cannot be
+ * composed: the caller then makes the straight piece. */
+projcurve_status pc_refine_add_cubic_piece(pc_refiner *r, pc_branch *b, const pc_rvertex *from,
+                                           const pc_rvertex *to, const pc_rvertex *seg,
+                                           int rational, int *done);
 
 /* angle.c: inserts vertices until every joint angle is within eps_T (needed
  * only where the march had to force a segment);

@@ -41,10 +41,27 @@ struct pc_projector {
      * clamped to the surface domain. Returns 1 on convergence, 0 otherwise;
      * *iterations (may be NULL) gets the iteration count. */
     int (*correct)(const pc_projector *self, double t, double uv[2], int *iterations);
+    /* Optional (may be NULL: the engine calls correct(), then
+     * derivatives()): the tracer's step in one call. Newton as correct()
+     * from the guess uv that the tracer predicted over the curve step h
+     * (signed) from its last point, then derivatives() at the point
+     * reached into *next. derivatives() right after correct() gives q'' of
+     * the corrected point to ~1e-7 relative; here q'' may be less exact,
+     * by an amount that moves the next prediction (over a step of the same
+     * size) by a small fraction of the correction just made, when that
+     * saves an evaluation. Returns 1 when both succeeded, 0 when the
+     * correction failed, -1 when it converged but derivatives() failed. */
+    int (*advance)(const pc_projector *self, double t, double h, double uv[2], int *iterations,
+                   pc_proj_point *next);
     /* q', q'' and det at (t, u, v). Returns 0 when the Jacobian is singular
      * or a callback failed. */
     int (*derivatives)(const pc_projector *self, double t, double u, double v,
                        pc_proj_point *out);
+    /* Optional (may be NULL): q' alone at (t, u, v), a point that need not
+     * lie on the projection curve, from first derivatives of S only. The
+     * RK4 baseline's stages need nothing more; when NULL they call
+     * derivatives(). Returns 0 like derivatives(). */
+    int (*slope)(const pc_projector *self, double t, double u, double v, double dq[2]);
     /* Residual |F| in model units (distance of S(u, v) from the exact
      * projection condition), for tests and error estimates. */
     double (*residual)(const pc_projector *self, double t, double u, double v);

@@ -135,7 +135,18 @@ projcurve_status pc_branch_add_piece(projcurve_context *ctx, pc_branch *b, int d
     memcpy(pc->uv, uv, sizeof pc->uv);
     pc->ctrl = c;
     pc->weights = w;
+    pc->uv_degree = 1;
+    memcpy(pc->uv_ctrl, uv, sizeof pc->uv);
     return PROJCURVE_OK;
+}
+
+void pc_branch_set_last_pcurve(pc_branch *b, int degree, const double *uv_ctrl)
+{
+    if (b->n_pieces == 0 || degree < 1 || degree + 1 > PROJCURVE_MAX_PCURVE_POINTS)
+        return;
+    pc_piece *pc = &b->pieces[b->n_pieces - 1];
+    pc->uv_degree = degree;
+    memcpy(pc->uv_ctrl, uv_ctrl, 2 * (size_t)(degree + 1) * sizeof *uv_ctrl);
 }
 
 void pc_branch_clear_pieces(pc_branch *b)

@@ -18,6 +18,10 @@ typedef struct pc_piece {
     double uv[4];    /* u(t0), v(t0), u(t1), v(t1) */
     double *ctrl;    /* 3 * (degree + 1) */
     double *weights; /* degree + 1 */
+    /* The pcurve: the piece is S(uv(s)), uv(s) the Bezier curve of degree
+     * uv_degree (1 or 3) with these (u, v) control points. */
+    int uv_degree;
+    double uv_ctrl[2 * PROJCURVE_MAX_PCURVE_POINTS];
 } pc_piece;
 
 typedef struct pc_branch {
@@ -61,6 +65,10 @@ projcurve_status pc_branch_insert_point(projcurve_context *ctx, pc_branch *b, in
 projcurve_status pc_branch_add_piece(projcurve_context *ctx, pc_branch *b, int degree,
                                      double t0, double t1, const double uv[4],
                                      const double *ctrl, const double *weights);
+/* Sets the pcurve of the branch's last piece (pc_branch_add_piece makes it
+ * the straight segment between the piece's (u, v) ends): degree 1..3 with
+ * degree + 1 (u, v) control points. */
+void pc_branch_set_last_pcurve(pc_branch *b, int degree, const double *uv_ctrl);
 /* Removes every piece of the branch (when recomposing). */
 void pc_branch_clear_pieces(pc_branch *b);
 /* Removes the branch at index i, keeping the order of the others. */

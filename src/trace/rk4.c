@@ -7,9 +7,13 @@
 #include "trace/tracer.h"
 
 /* f(t, q) = q' at a point that need not lie on the projection curve: the
- * projector's first-derivative formula is defined there too. */
+ * projector's first-derivative formula is defined there too. Its slope()
+ * needs first derivatives of S only, as the method of [16]; projectors
+ * without one give q' through derivatives(). */
 static int slope(const pc_projector *proj, double t, double u, double v, double k[2])
 {
+    if (proj->slope != NULL)
+        return proj->slope(proj, t, u, v, k);
     pc_proj_point p;
     if (!proj->derivatives(proj, t, u, v, &p))
         return 0;

@@ -28,11 +28,6 @@ static int outside(const double dom[4], const double uv[2])
     return uv[0] < dom[0] || uv[0] > dom[1] || uv[1] < dom[2] || uv[1] > dom[3];
 }
 
-static double norm2(double a, double b)
-{
-    return sqrt(a * a + b * b);
-}
-
 /* (u, v) within two strides (parameter length of the step) of a side. */
 static int near_boundary(const double dom[4], const double uv[2], double stride)
 {
@@ -48,13 +43,20 @@ static double clamp(double x, double lo, double hi)
 
 static projcurve_status add_vertex(pc_tracer *tr, pc_branch *b, double t, double u, double v)
 {
-    const double p[3] = {t, u, v};
-    projcurve_status st = pc_branch_add_point(tr->ctx, b, 3, p);
-    if (st == PROJCURVE_OK) {
-        tr->n_points++;
-        tr->r->stats.points += 1.0;
+    if (b->n_points < b->cap_points) { /* the usual case, without a call */
+        double *p = b->points + 3 * b->n_points++;
+        p[0] = t;
+        p[1] = u;
+        p[2] = v;
+    } else {
+        const double p[3] = {t, u, v};
+        const projcurve_status st = pc_branch_add_point(tr->ctx, b, 3, p);
+        if (st != PROJCURVE_OK)
+            return st;
     }
-    return st;
+    tr->n_points++;
+    tr->r->stats.points += 1.0;
+    return PROJCURVE_OK;
 }
 
 /* Step length in t (positive) at the current point, before halvings. */
@@ -107,26 +109,42 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     const double residual_error =
         proj->guess_error ? 0.0 : proj->residual(proj, t, uv[0], uv[1]) / proj->model_size;
     int iterations = 0;
-    const int ok = proj->correct(proj, t, uv, &iterations);
+    /* derived: 1 = *next holds the derivatives at the corrected point,
+     * -1 = they failed there, 0 = not computed yet */
+    int derived = 0, ok;
+    if (proj->advance != NULL) {
+        derived = proj->advance(proj, t, h, uv, &iterations, next);
+        ok = derived != 0;
+    } else {
+        ok = proj->correct(proj, t, uv, &iterations);
+    }
     tr->r->stats.newton_iterations += (double)iterations;
-    const double stride = norm2(pred[0] - cur->u, pred[1] - cur->v);
+    const double su = pred[0] - cur->u, sv = pred[1] - cur->v;
+    const double stride2 = su * su + sv * sv; /* squared (u, v) length of the step */
     if (!ok || (left && pc_domain_margin(tr->dom, uv[0], uv[1]) <= PC_TRACE_BOUNDARY_TOL)) {
         /* Near the boundary a failed correction most likely means the
          * branch left between the points: locate the exit rather than halve
          * the step (which would pile vertices up against the boundary). */
-        if (!left && !near_boundary(tr->dom, pred, stride))
+        if (!left && !near_boundary(tr->dom, pred, sqrt(stride2)))
             return STEP_REJECT;
         const int found = pc_locate_exit(tr, cur, h, next);
         return found == 1 ? STEP_EXIT : (found == 0 ? STEP_ACCEPT : STEP_REJECT);
     }
     /* A corrector that moved far from the prediction has left for another
-     * sheet of the projection: cut the step instead. */
-    const double moved = norm2(uv[0] - pred[0], uv[1] - pred[1]);
-    const double noise =
-        PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
-    if (moved > PC_TRACE_MAX_CORRECTION * stride + noise)
-        return STEP_REJECT;
-    if (!proj->derivatives(proj, t, uv[0], uv[1], next) || crosses_fold(cur, next))
+     * sheet of the projection: cut the step instead. (Squares first: the
+     * usual correction is far below the limit.) */
+    const double mu = uv[0] - pred[0], mv = uv[1] - pred[1];
+    const double moved2 = mu * mu + mv * mv;
+    const double limit = PC_TRACE_MAX_CORRECTION;
+    if (moved2 > limit * limit * stride2) {
+        const double noise =
+            PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
+        if (sqrt(moved2) > limit * sqrt(stride2) + noise)
+            return STEP_REJECT;
+    }
+    if (derived == 0)
+        derived = proj->derivatives(proj, t, uv[0], uv[1], next) ? 1 : -1;
+    if (derived < 0 || crosses_fold(cur, next))
         return STEP_REJECT;
     record_error(tr, residual_error);
     return STEP_ACCEPT;
@@ -155,9 +173,11 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
         if (st != PROJCURVE_OK)
             return st;
     }
-    pc_proj_point cur;
-    if (!proj->derivatives(proj, seed->t, seed->u, seed->v, &cur)) {
-        *why = stall_reason(&cur);
+    /* the current point and the one being tried, swapped on acceptance */
+    pc_proj_point points[2];
+    pc_proj_point *cur = &points[0], *next = &points[1];
+    if (!proj->derivatives(proj, seed->t, seed->u, seed->v, cur)) {
+        *why = stall_reason(cur);
         return PROJCURVE_OK;
     }
     double scale = 1.0; /* halvings after failed corrections, seed 000 s3.3 */
@@ -166,28 +186,27 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
      * < 2^60), so this bound is never the one hit. */
     const size_t max_passes = PC_TRACE_MAX_HALVINGS * (tr->max_points + 1);
     for (size_t pass = 0; pass < max_passes; ++pass) {
-        const double remaining = sign * (t_stop - cur.t);
+        const double remaining = sign * (t_stop - cur->t);
         if (remaining <= tr->min_step) {
             *why = PROJCURVE_END_CURVE_END;
             return PROJCURVE_OK;
         }
-        if (fabs(cur.det) < PC_TRACE_DET_FOLD) {
+        if (fabs(cur->det) < PC_TRACE_DET_FOLD) {
             *why = PROJCURVE_END_SILHOUETTE;
             return PROJCURVE_OK;
         }
-        double h = nominal_step(tr, &cur) * scale;
+        double h = nominal_step(tr, cur) * scale;
         if (h < tr->min_step) {
-            *why = stall_reason(&cur);
+            *why = stall_reason(cur);
             return PROJCURVE_OK;
         }
         /* never step over the end of the curve: land exactly on it (a
          * step within rounding of the end is stretched to it, so that the
          * end is never missed by a sliver) */
         const double t_next =
-            h >= remaining - PC_TRACE_END_SLACK * h ? t_stop : cur.t + sign * h;
+            h >= remaining - PC_TRACE_END_SLACK * h ? t_stop : cur->t + sign * h;
         tr->r->stats.steps += 1.0;
-        pc_proj_point next;
-        const step_outcome out = try_step(tr, &cur, t_next, &next);
+        const step_outcome out = try_step(tr, cur, t_next, next);
         if (out == STEP_REJECT) {
             scale *= 0.5;
             continue;
@@ -197,14 +216,16 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             *why = PROJCURVE_END_LIMIT;
             return PROJCURVE_OK;
         }
-        st = add_vertex(tr, b, next.t, next.u, next.v);
+        st = add_vertex(tr, b, next->t, next->u, next->v);
         if (st != PROJCURVE_OK)
             return st;
         if (out == STEP_EXIT) {
             *why = PROJCURVE_END_BOUNDARY;
             return PROJCURVE_OK;
         }
+        pc_proj_point *const done = cur;
         cur = next;
+        next = done;
         scale = scale < 0.5 ? 2.0 * scale : 1.0;
     }
     *why = PROJCURVE_END_FAILED;

@@ -10,6 +10,8 @@ import shutil
 import subprocess
 import sys
 
+import iges_geometry
+
 failures = []
 
 
@@ -71,6 +73,7 @@ def part_demo(exe, shared, work):
     for name, branches in (("example1", 1), ("freeform", 1)):
         with open(os.path.join(work, name + ".json")) as f:
             data = json.load(f)
+        check_json_schema(data, name)
         check(len(data["branches"]) == branches, f"{name}: {len(data['branches'])} branches")
         for b in data["branches"]:
             check(b["start"] == "curve_start" and b["end"] == "curve_end",
@@ -102,6 +105,185 @@ def manifest(shared):
     return rows
 
 
+START_KINDS = {"curve_start", "jump", "boundary", "silhouette"}
+END_KINDS = {"curve_end", "boundary", "silhouette", "curvature_centre", "limit", "failed"}
+# The fields the --json output must have, with their types.
+BRANCH_FIELDS = {"surface": int, "curve": int, "t_range": list, "pieces": int, "degree": int,
+                 "control_points": int, "start": str, "end": str}
+
+
+def check_json_schema(data, what):
+    check(isinstance(data.get("time_ms"), (int, float)) and data["time_ms"] >= 0,
+          f"{what}: time_ms is a number >= 0")
+    check(isinstance(data.get("branches"), list), f"{what}: branches is a list")
+    for b in data.get("branches", []):
+        for key, kind in BRANCH_FIELDS.items():
+            check(isinstance(b.get(key), kind) and not isinstance(b.get(key), bool),
+                  f"{what}: branch field {key} is a {kind.__name__}: {b.get(key)!r}")
+        check(len(b.get("t_range", [])) == 2 and b["t_range"][0] <= b["t_range"][1],
+              f"{what}: t_range {b.get('t_range')}")
+        check(b.get("start") in START_KINDS, f"{what}: start {b.get('start')!r}")
+        check(b.get("end") in END_KINDS, f"{what}: end {b.get('end')!r}")
+
+
+def sub(a, b):
+    return [x - y for x, y in zip(a, b)]
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def norm(a):
+    return dot(a, a) ** 0.5
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def partials(surface, u, v):
+    """S_u, S_v by central differences (step 1e-6 of the domain: error ~1e-12 relative)."""
+    d = surface.domain
+    hu, hv = 1e-6 * (d[1] - d[0]), 1e-6 * (d[3] - d[2])
+    su = [(a - b) / (2 * hu) for a, b in zip(surface.eval(u + hu, v), surface.eval(u - hu, v))]
+    sv = [(a - b) / (2 * hv) for a, b in zip(surface.eval(u, v + hv), surface.eval(u, v - hv))]
+    return su, sv
+
+
+def ray_hit(surface, origin, direction, u, v):
+    """Newton on S(u, v) = origin + s * direction from (u, v); None when it
+    does not converge in 30 steps or leaves the domain."""
+    d = surface.domain
+    s = dot(sub(surface.eval(u, v), origin), direction) / dot(direction, direction)
+    m = det = None
+    for step in range(30):
+        p = surface.eval(u, v)
+        r = sub(p, [o + s * k for o, k in zip(origin, direction)])
+        if norm(r) < 1e-12 * (1.0 + norm(p)):
+            return p
+        if step % 4 == 0:  # the Jacobian is refreshed now and then, not every step
+            su, sv = partials(surface, u, v)
+            m = [su, sv, [-k for k in direction]]   # columns of the Jacobian
+            det = dot(m[0], cross(m[1], m[2]))
+        if det == 0.0:
+            return None
+        # Cramer's rule for J x = -r
+        du = -dot(r, cross(m[1], m[2])) / det
+        dv = -dot(m[0], cross(r, m[2])) / det
+        ds = -dot(m[0], cross(m[1], r)) / det
+        u, v, s = u + du, v + dv, s + ds
+        if not (d[0] <= u <= d[1] and d[2] <= v <= d[3]):
+            return None
+    return None
+
+
+FOOT_STEPS = 3  # Newton steps towards the foot on E(t)
+
+
+def exact_deviation(surface, curve, direction, q, nodes, uv, tol):
+    """Largest distance from the 3D curve at the middle of each traced span
+    to the exact projected curve E(t) = C(t) + s Dir on S, and the number of
+    spans where Newton found no exact point. Any point of E bounds that
+    distance from above: first E at the same t (the composed curve's
+    parameter is close to t, not equal); where that exceeds eps_D, the
+    parameter is moved towards the foot, t += (X - E)·E' / |E'|^2, and
+    the smallest distance seen is kept."""
+    def exact(t, i):
+        f = (t - nodes[i]) / (nodes[i + 1] - nodes[i])
+        return ray_hit(surface, curve.eval(t), direction, uv[i][0] + f * (uv[i + 1][0] - uv[i][0]),
+                       uv[i][1] + f * (uv[i + 1][1] - uv[i][1]))
+
+    worst, missed = 0.0, 0
+    for i in range(len(nodes) - 1):
+        t = 0.5 * (nodes[i] + nodes[i + 1])
+        x, e = q.eval(t), exact(t, i)
+        if e is None:
+            missed += 1
+            continue
+        d = norm(sub(x, e))
+        h = 1e-4 * (nodes[i + 1] - nodes[i])
+        for _ in range(FOOT_STEPS if d > tol else 0):
+            ea, eb = exact(t - h, i), exact(t + h, i)
+            if ea is None or eb is None:
+                break
+            tangent = [(p - m) / (2 * h) for p, m in zip(eb, ea)]
+            t += dot(sub(x, e), tangent) / dot(tangent, tangent)
+            e = exact(t, i)
+            if e is None:
+                break
+            d = min(d, norm(sub(x, e)))
+        worst = max(worst, d)
+    return worst, missed
+
+
+def check_branch_geometry(name, case, b, written, curve):
+    """A branch judged from the written IGES alone: its pcurve nodes are
+    traced points, which must satisfy the projection condition; the 3D
+    curve must pass within eps_D of them and, between them, of the exact
+    projection found by Newton's method on the ray."""
+    surface, pcurve, q = written
+    tol = float(case["tol_dist"])
+    size = max(norm(sub(surface.eval(surface.domain[0], surface.domain[2]),
+                        surface.eval(surface.domain[1], surface.domain[3]))), 1.0)
+    nodes = pcurve.knots[1:-1]
+    uv = [[h[0] / h[3], h[1] / h[3]] for h in pcurve.points]
+    check(abs(nodes[0] - b["t_range"][0]) <= 1e-12 and abs(nodes[-1] - b["t_range"][1]) <= 1e-12,
+          f"{name}: JSON t_range {b['t_range']} vs the pcurve's {nodes[0]}..{nodes[-1]}")
+    ortho = case["mode"] == "orthogonal"
+    direction = [float(case[k]) for k in ("dir_x", "dir_y", "dir_z")]
+    worst_residual = worst_node = 0.0
+    for t, (u, v) in zip(nodes, uv):
+        p, c = surface.eval(u, v), curve.eval(t)
+        if ortho:
+            su, sv = partials(surface, u, v)
+            n = cross(su, sv)
+            n = [k / norm(n) for k in n]
+            pc = sub(p, c)
+            residual = norm(sub(pc, [dot(pc, n) * k for k in n]))
+        else:
+            residual = norm(cross(sub(p, c), direction)) / norm(direction)
+        worst_residual = max(worst_residual, residual)
+        if q is not None:
+            worst_node = max(worst_node, norm(sub(q.eval(t), p)))
+    check(worst_residual <= tol * 1e-3,
+          f"{name}: traced point off its projection condition by {worst_residual:.3g}")
+    check(worst_node <= tol, f"{name}: 3D curve {worst_node:.3g} from the traced points")
+    if q is None:
+        check(b["pieces"] == 0, f"{name}: pieces without a 3D curve")
+        return
+    check(b["degree"] == q.degree and b["control_points"] == len(q.points),
+          f"{name}: JSON degree/control points {b['degree']}/{b['control_points']} vs "
+          f"the IGES 126 {q.degree}/{len(q.points)}")
+    check(b["pieces"] == q.distinct_spans(),
+          f"{name}: JSON pieces {b['pieces']} vs {q.distinct_spans()} spans in the IGES 126")
+    # the 142 is one curve: S(pcurve(t)) is the 3D curve at every t
+    apart = 0.0
+    for i in range(len(nodes) - 1):
+        for f in (0.25, 0.5, 0.75):
+            t = nodes[i] + f * (nodes[i + 1] - nodes[i])
+            u, v, _ = pcurve.eval(t)
+            apart = max(apart, norm(sub(q.eval(t), surface.eval(u, v))))
+    check(apart <= 1e-12 * size, f"{name}: S(pcurve(t)) is {apart:.3g} from the 3D curve")
+    if not ortho:
+        worst_mid, missed = exact_deviation(surface, curve, direction, q, nodes, uv, tol)
+        check(missed <= max(1, len(nodes) // 50),
+              f"{name}: Newton found {len(nodes) - 1 - missed} of {len(nodes) - 1} midpoints")
+        check(worst_mid <= tol, f"{name}: 3D curve {worst_mid:.3g} from the exact projection "
+                                f"between traced points (eps_D {tol})")
+    # how the branch starts and ends
+    on_edge = lambda u, v: min(abs(u - surface.domain[0]), abs(u - surface.domain[1]),
+                               abs(v - surface.domain[2]), abs(v - surface.domain[3]))
+    for kind, t, (u, v), end_t in ((b["start"], nodes[0], uv[0], curve.t0),
+                                   (b["end"], nodes[-1], uv[-1], curve.t1)):
+        if kind in ("curve_start", "curve_end"):
+            check(abs(t - end_t) <= 1e-12, f"{name}: {kind} at t = {t}, the curve ends at {end_t}")
+        elif kind == "boundary":
+            span = max(surface.domain[1] - surface.domain[0], surface.domain[3] - surface.domain[2])
+            check(on_edge(u, v) <= 1e-9 * span,
+                  f"{name}: '{kind}' at (u, v) = ({u}, {v}), not on the domain edge")
+
+
 def part_cases(exe, shared, work):
     os.makedirs(work, exist_ok=True)
     for case in manifest(shared):
@@ -119,9 +301,15 @@ def part_cases(exe, shared, work):
             continue
         with open(out_json) as f:
             data = json.load(f)
+        check_json_schema(data, name)
         expected = int(case["expected_branches"])
         got = len(data["branches"])
         check(got == expected, f"{name}: {got} branches, MANIFEST expects {expected}")
+        written = iges_geometry.branches(os.path.join(work, name + ".igs"))
+        check(len(written) == got, f"{name}: {len(written)} curves on surface (142) written")
+        curve = iges_geometry.input_curves(igs)[0]
+        for b, w in zip(data["branches"], written):
+            check_branch_geometry(name, case, b, w, curve)
         tol = float(case["tol_dist"])
         for b in data["branches"]:
             # traced points satisfy the projection condition far below eps_D,

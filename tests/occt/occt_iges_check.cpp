@@ -1,21 +1,30 @@
 // Open CASCADE reads the IGES files libprojcurve writes.
 //
-// Writes (1) two surfaces and two curves, (2) a surface with a hand-made
+// Writes (1) two surfaces and a curve, (2) a surface with a hand-made
 // projection result (one branch: pcurve 126, 3D curve 126, curve on surface
 // 142) and (3) the projections of two cases of ../shared/cases, then loads each with IGESControl_Reader: the load must succeed, the
 // model must hold exactly the entities written (by type), and the
-// transferred shapes must be non-null with faces/edges where expected.
+// transferred shapes must be non-null with faces/edges where expected. For
+// (1) the geometry OCCT builds must be ours: its surfaces and curve agree
+// with the library's evaluation at sample parameters to 1e-12 relative.
+#include <BRep_Tool.hxx>
+#include <Geom_Curve.hxx>
+#include <Geom_Surface.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Reader.hxx>
 #include <IGESData_IGESEntity.hxx>
 #include <IGESData_IGESModel.hxx>
 #include <TopAbs_ShapeEnum.hxx>
 #include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Shape.hxx>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
+#include <vector>
 
 extern "C" {
 #include "check.h"
@@ -79,6 +88,83 @@ void check_file(const std::string &path, const std::map<int, int> &expected, int
     std::printf("%s: %d entities, %d faces, %d edges\n", path.c_str(), total, faces, edges);
     CHECK(faces >= min_faces);
     CHECK(edges >= min_edges);
+}
+
+// Samples per direction when comparing OCCT's geometry with ours, and the
+// agreement asked: the file holds every double exactly (17 digits), so
+// only the evaluation's rounding separates the two.
+constexpr int kSamples = 7;
+constexpr double kAgreeRel = 1e-12;
+
+double distance(const gp_Pnt &a, const double b[3])
+{
+    return std::sqrt((a.X() - b[0]) * (a.X() - b[0]) + (a.Y() - b[1]) * (a.Y() - b[1]) +
+                     (a.Z() - b[2]) * (a.Z() - b[2]));
+}
+
+// Largest distance between a face's surface and ours over a grid of our
+// domain (OCCT keeps the parameters of entity 128).
+double surface_gap(const TopoDS_Shape &face, const projcurve_surface *s)
+{
+    Handle(Geom_Surface) g = BRep_Tool::Surface(TopoDS::Face(face));
+    double d[4], gap = 0.0;
+    CHECK_OK(projcurve_surface_domain(ctx, s, d));
+    for (int i = 0; i < kSamples; ++i)
+        for (int j = 0; j < kSamples; ++j) {
+            const double u = d[0] + (d[1] - d[0]) * i / (kSamples - 1.0);
+            const double v = d[2] + (d[3] - d[2]) * j / (kSamples - 1.0);
+            double p[3];
+            CHECK_OK(projcurve_surface_eval(ctx, s, u, v, 0, p));
+            gap = std::max(gap, distance(g->Value(u, v), p));
+        }
+    return gap;
+}
+
+double curve_gap(const TopoDS_Shape &edge, const projcurve_curve *c)
+{
+    Standard_Real first = 0.0, last = 0.0;
+    Handle(Geom_Curve) g = BRep_Tool::Curve(TopoDS::Edge(edge), first, last);
+    if (g.IsNull())
+        return HUGE_VAL;
+    double t0, t1, gap = 0.0;
+    CHECK_OK(projcurve_curve_domain(ctx, c, &t0, &t1));
+    for (int i = 0; i < kSamples; ++i) {
+        const double t = t0 + (t1 - t0) * i / (kSamples - 1.0);
+        double p[3];
+        CHECK_OK(projcurve_curve_eval(ctx, c, t, 0, p));
+        gap = std::max(gap, distance(g->Value(t), p));
+    }
+    return gap;
+}
+
+// Every surface and curve written has a face / an edge in OCCT's transfer
+// of path that matches it; scale is the size of the geometry.
+void check_same_geometry(const std::string &path, const std::vector<const projcurve_surface *> &ss,
+                         const std::vector<const projcurve_curve *> &cs, double scale)
+{
+    IGESControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+        return; // reported by check_file
+    reader.TransferRoots();
+    const TopoDS_Shape shape = reader.OneShape();
+    for (const projcurve_surface *s : ss) {
+        double best = HUGE_VAL;
+        for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next())
+            best = std::min(best, surface_gap(e.Current(), s));
+        if (!(best <= kAgreeRel * scale))
+            pc_test_fail_at(__FILE__, __LINE__, "%s: no OCCT face within %g of a surface (%g)",
+                            path.c_str(), kAgreeRel * scale, best);
+        ++pc_test_checks;
+    }
+    for (const projcurve_curve *c : cs) {
+        double best = HUGE_VAL;
+        for (TopExp_Explorer e(shape, TopAbs_EDGE); e.More(); e.Next())
+            best = std::min(best, curve_gap(e.Current(), c));
+        if (!(best <= kAgreeRel * scale))
+            pc_test_fail_at(__FILE__, __LINE__, "%s: no OCCT edge within %g of the curve (%g)",
+                            path.c_str(), kAgreeRel * scale, best);
+        ++pc_test_checks;
+    }
 }
 
 projcurve_surface *plane()
@@ -170,6 +256,7 @@ int main(int argc, char **argv)
     CHECK_OK(projcurve_iges_writer_write(ctx, w, geometry.c_str()));
     projcurve_iges_writer_destroy(w);
     check_file(geometry, {{128, 2}, {126, 1}}, 2, 1);
+    check_same_geometry(geometry, {s1, s2}, {c}, 10.0);
 
     projcurve_result *r = line_result();
     CHECK_OK(projcurve_iges_writer_create(ctx, &w));

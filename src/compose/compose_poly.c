@@ -1,0 +1,185 @@
+/*
+ * Composition of a polynomial parameter curve (u, v)(s), s in [0, 1], of
+ * degree d (Bezier control points in (u, v)) with a tensor-product Bezier
+ * patch of degree (p, q): the result S(u(s), v(s)) is a Bezier curve of
+ * degree d (p + q), exactly on S (rational when the patch is: homogeneous
+ * control points make it the same code). See docs/refine_compose.md.
+ *
+ * With local patch parameters x(s) = (u(s) - u0) / (u1 - u0) and y(s)
+ * likewise, both degree-d Bernstein polynomials,
+ *
+ *   C(s) = sum_j [ sum_i P_ij B_i^p(x(s)) ] B_j^q(y(s)),
+ *
+ * and every factor is a polynomial in s kept in Bernstein form:
+ * B_i^p(x) = C(p, i) x^i (1 - x)^(p - i), where x^a and (1 - x)^a come from
+ * repeated Bernstein products. The product of f = sum a_i B_i^m and
+ * g = sum b_j B_j^n is
+ *
+ *   f g = sum_k [ sum_{i+j=k} C(m, i) C(n, j) / C(m + n, k) a_i b_j ] B_k^(m+n)
+ *
+ * (Farouki & Rajan 1988). When the pcurve's control points lie in the
+ * patch's box, x and 1 - x have non-negative Bernstein coefficients, so every
+ * basis product is a sum of non-negative terms: no cancellation, and C's
+ * control points are as accurate as an evaluation of the patch. For d = 1
+ * this is the same curve as pc_compose_segment's blossoming.
+ */
+#include "compose.h"
+
+#include "projcurve.h"
+
+/* Largest pcurve degree and largest composed degree. */
+#define PC_POLY_MAX_ORDER (PROJCURVE_MAX_DEGREE + 1)
+#define PC_POLY_MAX_COEFS (2 * PROJCURVE_MAX_DEGREE + 1)
+/* Patches up to this order per direction with a cubic pcurve use small stack
+ * tables (bicubic is 4); the large ones cost page probes on every call. */
+#define PC_POLY_SMALL_ORDER 8
+#define PC_POLY_SMALL_COEFS (PC_COMPOSE_POLY_MAX_DEGREE * (PC_POLY_SMALL_ORDER - 1) + 1)
+
+#if defined(__GNUC__)
+#define PC_POLY_NOINLINE __attribute__((noinline))
+#else
+#define PC_POLY_NOINLINE
+#endif
+
+/* Scratch tables, `stride` doubles per row: pow_x and pow_1x hold x^a and
+ * (1 - x)^a for a = 0..max(p, q) (degree d a), basis_u the B_i^p(x(s)) and
+ * basis_v the B_j^q(y(s)); row holds one H_j(s) (4 doubles per coefficient). */
+typedef struct poly_scratch {
+    size_t stride;
+    double *pow_x, *pow_1x, *basis_u, *basis_v, *row;
+} poly_scratch;
+
+/* Binomial coefficients C(n, 0..n) as doubles (exact for n <= 56). */
+static void binomials(int n, double *out)
+{
+    out[0] = 1.0;
+    for (int k = 1; k <= n; ++k)
+        out[k] = out[k - 1] * (double)(n - k + 1) / (double)k;
+}
+
+/* Bernstein product of scalar polynomials a (degree m) and b (degree n)
+ * into out (degree m + n; must not alias a or b). */
+static void bernstein_product(int m, const double *a, int n, const double *b, double *out)
+{
+    double cm[PC_POLY_MAX_COEFS], cn[PC_POLY_MAX_COEFS], cmn[PC_POLY_MAX_COEFS];
+    binomials(m, cm);
+    binomials(n, cn);
+    binomials(m + n, cmn);
+    for (int k = 0; k <= m + n; ++k)
+        out[k] = 0.0;
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j)
+            out[i + j] += cm[i] * a[i] * cn[j] * b[j];
+    for (int k = 0; k <= m + n; ++k)
+        out[k] /= cmn[k];
+}
+
+/* Bernstein coefficients of B_i^deg(x(s)), i = 0..deg, each of degree
+ * d deg, into basis (row i), where x(s) has the d + 1 coefficients x. */
+static void basis_of(int d, const double *x, int deg, poly_scratch *w, double *basis)
+{
+    const size_t st = w->stride;
+    double one_minus[PC_COMPOSE_POLY_MAX_DEGREE + 1];
+    for (int k = 0; k <= d; ++k)
+        one_minus[k] = 1.0 - x[k];
+    w->pow_x[0] = w->pow_1x[0] = 1.0;
+    for (int a = 1; a <= deg; ++a) {
+        bernstein_product(d * (a - 1), w->pow_x + (size_t)(a - 1) * st, d, x,
+                          w->pow_x + (size_t)a * st);
+        bernstein_product(d * (a - 1), w->pow_1x + (size_t)(a - 1) * st, d, one_minus,
+                          w->pow_1x + (size_t)a * st);
+    }
+    double c[PC_POLY_MAX_ORDER];
+    binomials(deg, c);
+    for (int i = 0; i <= deg; ++i) {
+        double *out = basis + (size_t)i * st;
+        bernstein_product(d * i, w->pow_x + (size_t)i * st, d * (deg - i),
+                          w->pow_1x + (size_t)(deg - i) * st, out);
+        for (int k = 0; k <= d * deg; ++k)
+            out[k] *= c[i];
+    }
+}
+
+static void compose_poly_with(const pc_bezier_patch *patch, int d, const double *uv_ctrl,
+                              double *cw_out, poly_scratch *w)
+{
+    const int p = patch->deg_u, q = patch->deg_v, nu = d * p, nv = d * q, n = nu + nv;
+    const size_t st = w->stride, pu = (size_t)(p + 1);
+    const double du = patch->u1 - patch->u0, dv = patch->v1 - patch->v0;
+    double x[PC_COMPOSE_POLY_MAX_DEGREE + 1], y[PC_COMPOSE_POLY_MAX_DEGREE + 1];
+    for (int k = 0; k <= d; ++k) {
+        x[k] = (uv_ctrl[2 * k] - patch->u0) / du;
+        y[k] = (uv_ctrl[2 * k + 1] - patch->v0) / dv;
+    }
+    basis_of(d, x, p, w, w->basis_u);
+    basis_of(d, y, q, w, w->basis_v);
+
+    /* C = sum_j H_j Bv_j with H_j = sum_i P_ij Bu_i: the product's binomial
+     * weights split as C(nu, a) on H, C(nv, b) on Bv and 1 / C(n, k) at the
+     * end, so the inner loop is plain multiply-adds. */
+    double cu[PC_POLY_MAX_COEFS], cv[PC_POLY_MAX_COEFS], cn[PC_POLY_MAX_COEFS];
+    binomials(nu, cu);
+    binomials(nv, cv);
+    binomials(n, cn);
+    for (int k = 0; k <= n; ++k)
+        for (int c = 0; c < 4; ++c)
+            cw_out[4 * k + c] = 0.0;
+    for (int j = 0; j <= q; ++j) {
+        const double *pj = patch->cw + 4 * pu * (size_t)j;
+        for (int a = 0; a <= nu; ++a) {
+            double h[4] = {0.0, 0.0, 0.0, 0.0};
+            for (size_t i = 0; i < pu; ++i) {
+                const double m = w->basis_u[i * st + (size_t)a];
+                for (int c = 0; c < 4; ++c)
+                    h[c] += m * pj[4 * i + (size_t)c];
+            }
+            for (int c = 0; c < 4; ++c)
+                w->row[4 * a + c] = cu[a] * h[c];
+        }
+        const double *bv = w->basis_v + (size_t)j * st;
+        for (int a = 0; a <= nu; ++a)
+            for (int b = 0; b <= nv; ++b) {
+                const double m = cv[b] * bv[b];
+                double *r = cw_out + 4 * (a + b);
+                for (int c = 0; c < 4; ++c)
+                    r[c] += m * w->row[4 * a + c];
+            }
+    }
+    for (int k = 0; k <= n; ++k)
+        for (int c = 0; c < 4; ++c)
+            cw_out[4 * k + c] /= cn[k];
+}
+
+/* Patches of high degree: tables for the largest sizes. */
+static PC_POLY_NOINLINE void compose_poly_large(const pc_bezier_patch *patch, int d,
+                                                const double *uv_ctrl, double *cw_out)
+{
+    double pow_x[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];
+    double pow_1x[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];
+    double basis_u[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];
+    double basis_v[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];
+    double row[4 * PC_POLY_MAX_COEFS];
+    poly_scratch w = {PC_POLY_MAX_COEFS, pow_x, pow_1x, basis_u, basis_v, row};
+    compose_poly_with(patch, d, uv_ctrl, cw_out, &w);
+}
+
+int pc_compose_poly(const pc_bezier_patch *patch, int degree, const double *uv_ctrl,
+                    double *cw_out)
+{
+    const int p = patch->deg_u, q = patch->deg_v;
+    if (degree < 1 || degree > PC_COMPOSE_POLY_MAX_DEGREE ||
+        degree * (p + q) > 2 * PROJCURVE_MAX_DEGREE)
+        return -1;
+    if (p >= PC_POLY_SMALL_ORDER || q >= PC_POLY_SMALL_ORDER) {
+        compose_poly_large(patch, degree, uv_ctrl, cw_out);
+        return degree * (p + q);
+    }
+    double pow_x[PC_POLY_SMALL_ORDER * PC_POLY_SMALL_COEFS];
+    double pow_1x[PC_POLY_SMALL_ORDER * PC_POLY_SMALL_COEFS];
+    double basis_u[PC_POLY_SMALL_ORDER * PC_POLY_SMALL_COEFS];
+    double basis_v[PC_POLY_SMALL_ORDER * PC_POLY_SMALL_COEFS];
+    double row[4 * PC_POLY_SMALL_COEFS];
+    poly_scratch w = {PC_POLY_SMALL_COEFS, pow_x, pow_1x, basis_u, basis_v, row};
+    compose_poly_with(patch, degree, uv_ctrl, cw_out, &w);
+    return degree * (p + q);
+}

@@ -1,0 +1,231 @@
+/*
+ * The march of march.c with cubic Hermite pcurves (cubic.c): from the
+ * current vertex, a candidate piece of parameter length h ends at the exact
+ * point q(t + h) and interpolates q' at both ends; it is accepted when its
+ * composed image is within eps_D of the exact curve (deviation.c). Its
+ * distance grows as h^4, so the next h is predicted with a fourth root.
+ *
+ * No end-tangent bound is needed: both ends carry the exact tangent, so a
+ * joint between two cubic pieces is G1 (at a knot line, each side takes
+ * the one-sided tangent of its own patch: the joint keeps the corner of the
+ * exact curve where S has a crease, and only there). This is checked, not
+ * assumed: a joint off the knot lines beyond eps_T hands the piece to the
+ * straight march.
+ *
+ * Where the cubic cannot be used — its control points leave the patch (the
+ * curve would leave it: the composition would not be on S), or q' is not
+ * available (a fold at a branch end) — the step is halved a few times, and
+ * then that stretch is handed to the straight-segment march (march.c),
+ * which holds its pieces to eps_D and their end tangents to eps_T / 2 of the
+ * exact ones: a joint between a straight and a cubic piece is then within
+ * eps_T / 2.
+ */
+#include <math.h>
+
+#include "compose/compose.h"
+#include "refine/refine_internal.h"
+
+#define PC_CUBIC_GROW_MAX 2.0     /* largest step growth after a success */
+#define PC_CUBIC_SHRINK_MIN 0.1   /* largest step cut after a failure */
+#define PC_CUBIC_STEP_SAFETY 0.9  /* aim a little inside the bound */
+/* A cubic whose end tangent, scaled to the piece (|q'| h), exceeds this
+ * multiple of its chord is not used: the speed of q varies too much over
+ * the piece for the Hermite form to follow it — near a fold, where q' grows
+ * without bound, the cubic would overshoot between the deviation samples. */
+#define PC_CUBIC_MAX_TANGENT_RATIO 3.0
+/* Rejections in a row before a candidate is taken anyway (see march.c). */
+#define PC_CUBIC_MAX_REJECTIONS 60
+/* Halvings in a row of a candidate whose cubic cannot be built before the
+ * stretch goes to the straight march: 1/64 of the step. */
+#define PC_CUBIC_MAX_INVALID 6
+
+/* The candidate end for a step h from cur towards the run end b (as
+ * march.c's: two balanced pieces rather than a long one and a sliver). */
+static int candidate(pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b, double h,
+                     pc_rvertex *cand)
+{
+    const double remaining = b->t - cur->t;
+    if (h >= remaining) {
+        *cand = *b;
+        return 1;
+    }
+    if (h > 0.5 * remaining)
+        h = 0.5 * remaining;
+    return pc_refine_exact_point(r, cur, b, cur->t + h, cand);
+}
+
+/* The first traced vertex after cur (or b). */
+static pc_rvertex next_known(const pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b)
+{
+    size_t k = pc_refine_guide_index(r, cur->t);
+    while (k < r->n_guide && !(r->guide[k].t > cur->t))
+        ++k;
+    return k < r->n_guide && r->guide[k].t < b->t ? r->guide[k] : *b;
+}
+
+/* Direction of the start (at_end = 0) or end tangent of a rational Bezier
+ * curve of degree n: (A' - w' C) / w at the end, positive factors dropped;
+ * the end tangent points along increasing s. */
+static pc_vec3 end_direction(int n, const double *cw, int at_end)
+{
+    const double *e = cw + (at_end ? 4 * n : 0), *f = cw + (at_end ? 4 * (n - 1) : 4);
+    const pc_vec3 c = vec3(e[0] / e[3], e[1] / e[3], e[2] / e[3]);
+    const pc_vec3 d = vec3_axpy(vec3(f[0] - e[0], f[1] - e[1], f[2] - e[2]), -(f[3] - e[3]), c);
+    return at_end ? vec3_scale(d, -1.0) : d;
+}
+
+/* 1 when the directions a and b are within the angle whose cosine is
+ * cos_max (or either is zero: no direction to compare). */
+static int within_angle(pc_vec3 a, pc_vec3 b, double cos_max)
+{
+    const double na = vec3_norm(a), nb = vec3_norm(b);
+    return !(na > 0.0 && nb > 0.0) || vec3_dot(a, b) >= cos_max * na * nb;
+}
+
+/* The march's state between candidates. */
+typedef struct cubic_march {
+    pc_rvertex cur;
+    const pc_bezier_patch *d0_patch; /* patch d0 was taken in (NULL: none yet) */
+    double d0[2];
+    int d0_ok;
+    pc_vec3 prev_end; /* end direction of the last cubic piece ending at cur */
+} cubic_march;
+
+/* Outcome of one cubic candidate. */
+typedef enum cubic_verdict { CUBIC_ACCEPT, CUBIC_TOO_FAR, CUBIC_INVALID } cubic_verdict;
+
+/* Builds, composes and measures the cubic for cur-cand in patch; unless
+ * CUBIC_INVALID, cand carries the pcurve and *end_dir its end direction. */
+static cubic_verdict try_cubic(pc_refiner *r, cubic_march *m, const pc_bezier_patch *patch,
+                               pc_rvertex *cand, double *ratio_d, pc_vec3 *end_dir)
+{
+    if (m->d0_patch != patch) {
+        m->d0_ok = pc_refine_uv_tangent(r, &m->cur, patch, m->d0);
+        m->d0_patch = patch;
+    }
+    double d1[2], uv[8], cw[PC_PIECE_MAX_CW];
+    if (!m->d0_ok || !pc_refine_uv_tangent(r, cand, patch, d1) ||
+        !pc_refine_hermite(r, patch, &m->cur, cand, m->d0, d1, uv))
+        return CUBIC_INVALID;
+    const double chord = hypot(cand->u - m->cur.u, cand->v - m->cur.v);
+    const double reach = PC_CUBIC_MAX_TANGENT_RATIO * chord / 3.0; /* uv[2..5] hold h q' / 3 */
+    if (hypot(uv[2] - uv[0], uv[3] - uv[1]) > reach || hypot(uv[6] - uv[4], uv[7] - uv[5]) > reach)
+        return CUBIC_INVALID;
+    const int n = pc_compose_poly(patch, 3, uv, cw);
+    if (n < 0)
+        return CUBIC_INVALID;
+    /* G1 by construction off the knot lines: checked */
+    if (!pc_refine_on_knot_line(r, &m->cur) &&
+        !within_angle(m->prev_end, end_direction(n, cw, 0), r->cos_eps_t))
+        return CUBIC_INVALID;
+    cand->in_cubic = 1;
+    cand->in_d0[0] = m->d0[0];
+    cand->in_d0[1] = m->d0[1];
+    cand->in_d1[0] = d1[0];
+    cand->in_d1[1] = d1[1];
+    *end_dir = end_direction(n, cw, 1);
+    double t_far;
+    *ratio_d = pc_refine_deviation(r, n, cw, &m->cur, cand, r->eps_d, &t_far) / r->eps_d;
+    return *ratio_d <= 1.0 ? CUBIC_ACCEPT : CUBIC_TOO_FAR;
+}
+
+/* Step scale from the distance ratio: the distance grows as h^4. */
+static double step_factor(double ratio_d)
+{
+    double f = ratio_d > 0.0 ? PC_CUBIC_STEP_SAFETY / sqrt(sqrt(ratio_d)) : PC_CUBIC_GROW_MAX;
+    if (f > PC_CUBIC_GROW_MAX)
+        f = PC_CUBIC_GROW_MAX;
+    if (f < PC_CUBIC_SHRINK_MIN)
+        f = PC_CUBIC_SHRINK_MIN;
+    return f;
+}
+
+/* Appends the stretch cur-end made by the straight march (or, without a
+ * common patch, split at the knot lines), its vertices marked straight. */
+static projcurve_status straight_stretch(pc_refiner *r, const pc_rvertex *cur,
+                                         const pc_rvertex *end, int in_patch,
+                                         pc_vertex_list *out)
+{
+    const size_t first = out->count;
+    const double step = r->step;
+    r->step = 0.0;
+    const projcurve_status st = in_patch ? pc_refine_march(r, cur, end, out)
+                                         : pc_refine_split(r, cur, end, 0, out);
+    r->step = step;
+    for (size_t k = first; k < out->count; ++k)
+        out->items[k].in_cubic = 0;
+    return st;
+}
+
+/* Moves the march to v, the vertex just appended. */
+static void advance(cubic_march *m, const pc_rvertex *v, pc_vec3 end_dir)
+{
+    m->cur = *v;
+    m->d0_patch = NULL;
+    m->prev_end = end_dir;
+}
+
+projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
+                                       pc_vertex_list *out)
+{
+    cubic_march m = {*a, NULL, {0.0, 0.0}, 0, vec3(0.0, 0.0, 0.0)};
+    double h = r->step > 0.0 ? r->step : b->t - a->t;
+    int rejections = 0, invalid = 0;
+    while (m.cur.t < b->t) {
+        pc_rvertex cand;
+        int reached = candidate(r, &m.cur, b, h, &cand);
+        if (reached && pc_refine_common_patch(r, &m.cur, &cand) == NULL)
+            reached = pc_refine_knot_crossing(r, &m.cur, &cand, &cand);
+        if (!reached) {
+            h *= 0.5; /* the corrector failed: come closer */
+            if (++rejections < PC_CUBIC_MAX_REJECTIONS && h > r->min_dt)
+                continue;
+            /* the exact curve is out of reach here: a gap (refine.c) up to
+             * the next exact point known, never a vertex off the projection */
+            cand = next_known(r, &m.cur, b);
+            cand.in_cubic = 0;
+            const projcurve_status st = pc_refine_output_gap(r, out, &cand, PC_GAP_FAILED);
+            if (st != PROJCURVE_OK)
+                return st;
+            advance(&m, &out->items[out->count - 1], vec3(0.0, 0.0, 0.0));
+            rejections = invalid = 0;
+            continue;
+        }
+        cand.in_cubic = 0;
+        const pc_bezier_patch *patch = pc_refine_common_patch(r, &m.cur, &cand);
+        const double hh = cand.t - m.cur.t;
+        const int can_shrink = hh > r->min_dt && rejections + 1 < PC_CUBIC_MAX_REJECTIONS;
+        double ratio_d = 0.0;
+        pc_vec3 end_dir = vec3(0.0, 0.0, 0.0);
+        const cubic_verdict v = patch != NULL ? try_cubic(r, &m, patch, &cand, &ratio_d, &end_dir)
+                                              : CUBIC_INVALID;
+        if (v == CUBIC_TOO_FAR && can_shrink) {
+            ++rejections;
+            h = hh * step_factor(ratio_d);
+            continue;
+        }
+        if (v == CUBIC_INVALID && can_shrink && ++invalid < PC_CUBIC_MAX_INVALID) {
+            ++rejections;
+            h = 0.5 * hh;
+            continue;
+        }
+        projcurve_status st;
+        if (v == CUBIC_INVALID) {
+            st = straight_stretch(r, &m.cur, &cand, patch != NULL, out);
+        } else {
+            if (v == CUBIC_TOO_FAR) /* forced: see PC_CUBIC_MAX_REJECTIONS */
+                ++r->forced;
+            st = pc_refine_output(r, out, &cand);
+        }
+        if (st != PROJCURVE_OK)
+            return st;
+        /* A step cut short by the run end or a knot line says nothing
+         * against the old h. */
+        const double f = v == CUBIC_ACCEPT ? step_factor(ratio_d) : 1.0;
+        h = hh * f > h || hh >= h ? hh * f : h;
+        advance(&m, &out->items[out->count - 1], end_dir);
+        rejections = invalid = 0;
+    }
+    r->step = h;
+    return PROJCURVE_OK;
+}
