@@ -92,6 +92,10 @@ def part_usage(exe, shared, work):
     run([exe, "project", case, "--dir", "0,0,-1", "--tol", "-1"], 2, "negative tolerance")
     run([exe, "project", case, "--dir", "0,0,-1", "--angle", "x"], 2, "non-numeric angle")
     run([exe, "project", case, "--dir", "0,0,-1", "--bogus"], 2, "unknown option")
+    run([exe, "project", case, "--dir", "0,0,-1", "--pcurve-degree", "2"], 2, "pcurve degree 2")
+    run([exe, "project", case, "--dir", "0,0,-1", "--pcurve-degree", "3.5"], 2,
+        "non-integer pcurve degree")
+    run([exe, "project", case, "--dir", "-1,0,0", "--pcurve-degree", "3"], 0, "cubic pcurves")
     run([exe, "project", "/nonexistent/x.igs", "--dir", "0,0,-1"], 2, "missing input")
     run([exe, "project", case, "--dir", "0,0,0"], 1, "zero direction: projection fails")
     teapot = os.path.join(shared, "data", "real", "teapot_newell_spd.txt")
