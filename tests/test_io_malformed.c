@@ -361,6 +361,17 @@ static void gismo_cases(void)
                    "degree", "absurd degree");
     for (size_t cut = 0; cut < len; cut += 5)
         (void)read_mem(xml, cut, NULL);
+    /* Two geometries, the file cut inside the second: an error naming the
+     * line where it opens, not a model with the first one only. */
+    char two[2 * sizeof xml];
+    snprintf(two, sizeof two, "%s%s", xml, xml);
+    const char *second = strstr(two + len, "<Geometry");
+    CHECK(second != NULL);
+    if (second != NULL) {
+        for (size_t cut = (size_t)(second - two) + 10; cut + 20 < strlen(two); cut += 11)
+            expect_error(two, cut, PROJCURVE_ERR_PARSE, "line 15: <Geometry> is not closed",
+                         "G+Smo truncated in its second geometry");
+    }
 }
 
 /* ---- files whose cost grows with references, built here ---------------- */
