@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes every file reader with libFuzzer for a bounded time.
 #   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 60; PROJCURVE_FUZZ_SECONDS also works)
+#   PROJCURVE_FUZZ_KEEP_CORPUS=1 keeps the corpus of earlier runs.
 # Builds the targets of tests/fuzz with clang (-DPROJCURVE_FUZZ=ON) in
 # build-fuzz/, seeds each from ../shared, and stops at the first crash,
 # leak or hang (the reproducer is left in build-fuzz/artifacts/).
@@ -40,6 +41,12 @@ declare -A seeds=(
 mkdir -p build-fuzz/artifacts
 for reader in iges step gismo teapot; do
     corpus=build-fuzz/corpus/$reader
+    # Each run starts from the seeds: a corpus grown by earlier runs takes
+    # longer to load than the time budget (PROJCURVE_FUZZ_KEEP_CORPUS=1
+    # keeps it for longer local runs).
+    if [[ ${PROJCURVE_FUZZ_KEEP_CORPUS:-0} != 1 ]]; then
+        rm -rf "$corpus"
+    fi
     mkdir -p "$corpus"
     for seed in ${seeds[$reader]}; do
         if [[ -d $seed ]]; then cp -n "$seed"/*.igs "$corpus"/ 2>/dev/null || true

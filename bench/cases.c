@@ -216,6 +216,8 @@ projcurve_status pcb_case_options(projcurve_context *ctx, const pcb_case *c,
         st = projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE, c->tol_dist);
     if (st == PROJCURVE_OK && c->tol_angle_deg > 0.0)
         st = projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_ANGLE_DEG, c->tol_angle_deg);
+    if (st == PROJCURVE_OK && c->pcurve_degree > 0)
+        st = projcurve_options_set_int(ctx, o, PROJCURVE_OPT_PCURVE_DEGREE, c->pcurve_degree);
     if (st != PROJCURVE_OK) {
         projcurve_options_destroy(o);
         return st;

@@ -36,12 +36,14 @@ static const char *const table2_cases[] = {"song_yong_example1", "real_lens_dire
 typedef struct case_row {
     const pcb_case *c;
     pcb_measurement m;
+    pcb_measurement cubic; /* the same with cubic pcurves (PCURVE_DEGREE 3) */
     pcb_method_pair methods;
     char status[PCB_CASE_ERROR_MAX + 16];
 } case_row;
 
 typedef struct table2_row {
     const char *name;
+    int pcurve_degree;
     double eps_d, eps_t;
     pcb_measurement m;
 } table2_row;
@@ -75,6 +77,11 @@ static void write_case_json(pcb_json *j, const case_row *r)
     pcb_json_number(j, "deviation", m->deviation.hausdorff);
     pcb_json_number(j, "result_to_exact", m->deviation.result_to_exact);
     pcb_json_number(j, "exact_to_result", m->deviation.exact_to_result);
+    pcb_json_number(j, "cubic_ms", r->cubic.ms);
+    pcb_json_number(j, "cubic_pieces", r->cubic.pieces);
+    pcb_json_number(j, "cubic_control_points", r->cubic.control_points);
+    pcb_json_number(j, "cubic_max_joint_angle_deg", r->cubic.max_joint_deg);
+    pcb_json_number(j, "cubic_deviation", r->cubic.deviation.hausdorff);
     pcb_json_object_end(j);
 }
 
@@ -82,6 +89,7 @@ static void write_table2_json(pcb_json *j, const table2_row *r)
 {
     pcb_json_object_begin(j, NULL);
     pcb_json_string(j, "case", r->name);
+    pcb_json_int(j, "pcurve_degree", r->pcurve_degree);
     pcb_json_number(j, "eps_d", r->eps_d);
     pcb_json_number(j, "eps_t_deg", r->eps_t);
     pcb_json_number(j, "pieces", r->m.pieces);
@@ -133,35 +141,40 @@ static void write_outputs(const pcb_args *args, const case_row *rows, size_t n,
     if (!args->svg_path)
         return;
     /* Pieces and uniform pieces against 1/eps_D for Example 1 at each eps_T. */
-    double x[2][MAX_TABLE2_ROWS], y[2][MAX_TABLE2_ROWS], yu[2][MAX_TABLE2_ROWS],
-        ms[2][MAX_TABLE2_ROWS];
-    size_t m[2] = {0, 0};
+    double x[4][MAX_TABLE2_ROWS], y[4][MAX_TABLE2_ROWS], yu[4][MAX_TABLE2_ROWS],
+        ms[4][MAX_TABLE2_ROWS];
+    size_t m[4] = {0, 0, 0, 0};
     for (size_t i = 0; i < n2; ++i) {
         if (strcmp(t2[i].name, table2_cases[0]) != 0)
             continue;
-        const int k = t2[i].eps_t > 5.0 ? 0 : 1;
+        const int k = (t2[i].eps_t > 5.0 ? 0 : 1) + (t2[i].pcurve_degree == 3 ? 2 : 0);
         x[k][m[k]] = 1.0 / t2[i].eps_d;
         y[k][m[k]] = t2[i].m.pieces;
         yu[k][m[k]] = t2[i].m.uniform_pieces;
         ms[k][m[k]] = t2[i].m.ms;
         ++m[k];
     }
-    const pcb_series pieces[4] = {{"pieces, eps_T 10 deg", x[0], y[0], m[0]},
+    const pcb_series pieces[6] = {{"pieces, eps_T 10 deg", x[0], y[0], m[0]},
                                   {"pieces, eps_T 1 deg", x[1], y[1], m[1]},
                                   {"uniform split, eps_T 10 deg", x[0], yu[0], m[0]},
-                                  {"uniform split, eps_T 1 deg", x[1], yu[1], m[1]}};
-    const pcb_series times[2] = {{"eps_T 10 deg", x[0], ms[0], m[0]},
-                                 {"eps_T 1 deg", x[1], ms[1], m[1]}};
+                                  {"uniform split, eps_T 1 deg", x[1], yu[1], m[1]},
+                                  {"cubic pcurves, eps_T 10 deg", x[2], y[2], m[2]},
+                                  {"cubic pcurves, eps_T 1 deg", x[3], y[3], m[3]}};
+    const pcb_series times[4] = {{"eps_T 10 deg", x[0], ms[0], m[0]},
+                                 {"eps_T 1 deg", x[1], ms[1], m[1]},
+                                 {"cubic pcurves, eps_T 10 deg", x[2], ms[2], m[2]},
+                                 {"cubic pcurves, eps_T 1 deg", x[3], ms[3], m[3]}};
     const pcb_plot plots[2] = {
-        {"Example 1: composed pieces", "1 / eps_D", "pieces", 1, 1, pieces, 4},
-        {"Example 1: whole projection", "1 / eps_D", "ms", 1, 1, times, 2}};
+        {"Example 1: composed pieces", "1 / eps_D", "pieces", 1, 1, pieces, 6},
+        {"Example 1: whole projection", "1 / eps_D", "ms", 1, 1, times, 4}};
     if (pcb_svg_write(args->svg_path, plots, 2) != 0)
         fprintf(stderr, "cases: cannot write %s\n", args->svg_path);
 }
 
-/* Table 2 rows for one case; returns 0 when every row ran. */
-static int run_table2(const pcb_args *args, const pcb_case *c, double scale, table2_row *rows,
-                      size_t *n_rows)
+/* Table 2 rows for one case with pcurves of the given degree; returns 0
+ * when every row ran. */
+static int run_table2(const pcb_args *args, const pcb_case *c, double scale, int pcurve_degree,
+                      table2_row *rows, size_t *n_rows)
 {
     const double *eps_d = args->quick ? quick_eps_d : full_eps_d;
     const double *eps_t = args->quick ? quick_eps_t : full_eps_t;
@@ -176,16 +189,19 @@ static int run_table2(const pcb_args *args, const pcb_case *c, double scale, tab
             pcb_case variant = *c;
             variant.tol_dist = eps_d[d] * scale;
             variant.tol_angle_deg = eps_t[t];
+            variant.pcurve_degree = pcurve_degree;
             r->name = c->name;
+            r->pcurve_degree = pcurve_degree;
             r->eps_d = variant.tol_dist;
             r->eps_t = eps_t[t];
             char status[160];
-            if (pcb_measure_case(&variant, &timing, &sampling, 1, &r->m, status, sizeof status) !=
-                0) {
+            if (pcb_measure_case(&variant, &timing, &sampling, pcurve_degree != 3, &r->m, status,
+                                 sizeof status) != 0) {
                 fprintf(stderr, "cases: table2 %s: %s\n", c->name, status);
                 rc = 1;
             }
-            printf("%-30s %10.1e %6.0f %7.0f %8.0f %9.2f %10.3f %11.3e %9.0f\n", r->name, r->eps_d,
+            printf("%-24s %5s %10.1e %6.0f %7.0f %8.0f %9.2f %10.3f %11.3e %9.0f\n", r->name,
+                   pcurve_degree == 3 ? "cubic" : "line", r->eps_d,
                    r->eps_t, r->m.pieces, r->m.control_points, r->m.max_joint_deg, r->m.ms,
                    r->m.deviation.hausdorff, r->m.uniform_pieces);
         }
@@ -246,6 +262,27 @@ int pcb_cmd_cases(const pcb_args *args)
         print_case(r);
         fflush(stdout);
     }
+    printf("\ncubic pcurves (PCURVE_DEGREE 3) against straight ones, same tolerances\n");
+    printf("%-30s %9s %9s %7s %7s %9s %11s %11s %8s\n", "case", "line_ms", "cubic_ms", "line_pc",
+           "cubic_pc", "joint_deg", "deviation", "eps_D", "line/cub");
+    for (size_t i = 0; i < list.n; ++i) {
+        case_row *r = &rows[i];
+        pcb_measurement_clear(&r->cubic);
+        if (r->c->error[0])
+            continue;
+        pcb_case cubic = *r->c;
+        cubic.pcurve_degree = 3;
+        char status[PCB_CASE_ERROR_MAX + 16] = "";
+        if (pcb_measure_case(&cubic, &timing, &sampling, 0, &r->cubic, status, sizeof status) !=
+            0) {
+            fprintf(stderr, "cases: cubic %s: %s\n", r->c->name, status);
+            rc = 1;
+        }
+        printf("%-30s %9.3f %9.3f %7.0f %7.0f %9.2f %11.3e %11.3e %8.2f\n", r->c->name, r->m.ms,
+               r->cubic.ms, r->m.pieces, r->cubic.pieces, r->cubic.max_joint_deg,
+               r->cubic.deviation.hausdorff, r->c->tol_dist, r->m.ms / r->cubic.ms);
+        fflush(stdout);
+    }
     printf("\nsecond order against RK4, whole projection, same tolerances\n");
     printf("%-30s %10s %10s %8s %9s %9s\n", "case", "second_ms", "rk4_ms", "rk4/2nd", "pts_2nd",
            "pts_rk4");
@@ -265,14 +302,16 @@ int pcb_cmd_cases(const pcb_args *args)
     }
     printf("\nTable 2 (seed 000): eps_D x eps_T%s\n",
            args->quick ? "" : "; real surfaces: eps_D x size/100");
-    printf("%-30s %10s %6s %7s %8s %9s %10s %11s %9s\n", "case", "eps_D", "eps_T", "pieces",
-           "ctrl", "joint_deg", "ms", "deviation", "uniform");
+    printf("%-24s %5s %10s %6s %7s %8s %9s %10s %11s %9s\n", "case", "uv", "eps_D", "eps_T",
+           "pieces", "ctrl", "joint_deg", "ms", "deviation", "uniform");
     /* Quick runs prove the Table 2 path on Example 1 alone. */
     const size_t n_table2 = args->quick ? 1 : sizeof table2_cases / sizeof *table2_cases;
     for (size_t k = 0; k < n_table2; ++k)
         for (size_t i = 0; i < list.n; ++i)
             if (!strcmp(list.items[i].name, table2_cases[k]) && !list.items[i].error[0])
-                rc |= run_table2(args, &list.items[i], model_scale(&list.items[i]), t2, &n2);
+                for (int degree = 1; degree <= 3; degree += 2)
+                    rc |= run_table2(args, &list.items[i], model_scale(&list.items[i]), degree, t2,
+                                     &n2);
     write_outputs(args, rows, list.n, t2, n2);
 cleanup:
     free(rows);

@@ -247,12 +247,17 @@ struct row {
     std::string name, mode, status;
     ours_run at_case_tol;   /* the case's eps_D */
     ours_run matched;       /* eps_D = Open CASCADE's measured deviation */
+    ours_run cubic_at_case_tol, cubic_matched; /* the same with cubic pcurves */
     double occt_dev = NAN, occt_branches = NAN;
     /* The pair reported as ours / occt: `matched` when Open CASCADE is the
      * more accurate at the case tolerance, else `at_case_tol`. */
     const ours_run &reported() const
     {
         return std::isfinite(matched.ms) ? matched : at_case_tol;
+    }
+    const ours_run &cubic_reported() const
+    {
+        return std::isfinite(cubic_matched.ms) ? cubic_matched : cubic_at_case_tol;
     }
 };
 
@@ -419,6 +424,16 @@ bool run_case(const pcb_args *args, const pcb_case *c, row &r)
     if (ok && occt_ok && !args->quick && std::isfinite(r.occt_dev) &&
         r.occt_dev < r.at_case_tol.dev)
         ok = run_ours(args, c, std::max(r.occt_dev, floor_tol), ex, &oc, r.matched, ours_status);
+    /* The same two runs with cubic pcurves (PROJCURVE_OPT_PCURVE_DEGREE 3). */
+    pcb_case cubic = *c;
+    cubic.pcurve_degree = 3;
+    if (ok)
+        ok = run_ours(args, &cubic, c->tol_dist, ex, occt_ok ? &oc : nullptr,
+                      r.cubic_at_case_tol, ours_status);
+    if (ok && occt_ok && !args->quick && std::isfinite(r.occt_dev) &&
+        r.occt_dev < r.cubic_at_case_tol.dev)
+        ok = run_ours(args, &cubic, std::max(r.occt_dev, floor_tol), ex, &oc, r.cubic_matched,
+                      ours_status);
     if (!ok)
         r.status = ours_status;
     pcb_exact_free(&ex);
@@ -450,6 +465,12 @@ void write_json(const pcb_args *args, const std::vector<row> &rows)
         pcb_json_number(&j, "case_tol_occt_ms", r.at_case_tol.occt_ms);
         pcb_json_number(&j, "case_tol_ours_over_occt", r.at_case_tol.ratio);
         pcb_json_number(&j, "case_tol_ours_deviation", r.at_case_tol.dev);
+        const ours_run &cub = r.cubic_reported();
+        pcb_json_number(&j, "cubic_ours_ms", cub.ms);
+        pcb_json_number(&j, "cubic_occt_ms", cub.occt_ms);
+        pcb_json_number(&j, "cubic_ours_over_occt", cub.ratio);
+        pcb_json_number(&j, "cubic_ours_deviation", cub.dev);
+        pcb_json_number(&j, "cubic_ours_tol_dist", cub.tol);
         pcb_json_string(&j, "status", r.status.empty() ? "ok" : r.status.c_str());
         pcb_json_object_end(&j);
     }
@@ -515,6 +536,9 @@ extern "C" int pcb_cmd_occt(const pcb_args *args)
                   r.status.empty() ? "ok" : r.status.c_str());
         if (std::isfinite(r.matched.ms))
             print_run(r, "", r.matched, "eps_D = Open CASCADE's deviation");
+        print_run(r, "", r.cubic_at_case_tol, "cubic pcurves");
+        if (std::isfinite(r.cubic_matched.ms))
+            print_run(r, "", r.cubic_matched, "cubic pcurves, eps_D = Open CASCADE's deviation");
         std::fflush(stdout);
         rows.push_back(r);
     }

@@ -4,7 +4,8 @@
  * significant digits reproduce every double, so the comparison is to 1e-12
  * relative only to allow the x = (w x) / w division of the storage), and
  * the same points on dense samples. Writing what was read gives the same
- * text again.
+ * text again. A written curve on surface (142) is one curve: S composed
+ * with its pcurve is its 3D curve.
  */
 #include <math.h>
 #include <stdio.h>
@@ -14,6 +15,7 @@
 
 #include "api/handles.h"
 #include "check.h"
+#include "io/iges.h"
 #include "io/iges_write.h"
 #include "projcurve.h"
 #include "trace/result.h"
@@ -298,6 +300,106 @@ static void projected_round_trip(void)
     projcurve_model_destroy(in);
 }
 
+/* Reads entity 142 at DE `cos` of an IGES text with the reader's own
+ * pieces (the model reader does not keep pcurves) and checks that S
+ * composed with the pcurve is the 3D curve at every t, as a curve on
+ * surface states; *pcurve_degree gets the pcurve's degree. */
+static void check_curve_on_surface(const char *text, size_t cos, int *pcurve_degree)
+{
+    pc_arena arena;
+    pc_arena_init(&arena, 1u << 16);
+    size_t work = 0;
+    const size_t len = strlen(text);
+    pc_iges_file f = {.ctx = ctx, .arena = &arena, .work_done = &work, .work_limit = 64 * len};
+    pc_iges_params p;
+    long sptr = 0, bptr = 0, cptr = 0;
+    CHECK_OK(pc_iges_split(&f, text, len));
+    CHECK_OK(pc_iges_read_global(&f));
+    CHECK_OK(pc_iges_read_directory(&f));
+    CHECK_OK(pc_iges_params_of(&f, cos, &p));
+    CHECK_OK(pc_iges_int(&p, 2, &sptr));
+    CHECK_OK(pc_iges_int(&p, 3, &bptr));
+    CHECK_OK(pc_iges_int(&p, 4, &cptr));
+    pc_io_surface raw_s;
+    pc_io_curve raw_b, raw_c;
+    const char *reason = NULL;
+    CHECK_OK(pc_iges_surface(&f, (size_t)sptr, &raw_s));
+    CHECK_OK(pc_iges_curve(&f, (size_t)bptr, &raw_b, &reason));
+    CHECK_OK(pc_iges_curve(&f, (size_t)cptr, &raw_c, &reason));
+    projcurve_surface *s = NULL;
+    projcurve_curve *b = NULL, *c = NULL;
+    CHECK_OK(projcurve_surface_create_nurbs(ctx, raw_s.deg_u, raw_s.deg_v, raw_s.n_u, raw_s.n_v,
+                                            raw_s.ctrl, raw_s.weights, raw_s.knots_u,
+                                            raw_s.knots_v, &s));
+    CHECK_OK(projcurve_curve_create_nurbs(ctx, raw_b.degree, raw_b.n_ctrl, raw_b.ctrl,
+                                          raw_b.weights, raw_b.knots, &b));
+    CHECK_OK(projcurve_curve_create_nurbs(ctx, raw_c.degree, raw_c.n_ctrl, raw_c.ctrl,
+                                          raw_c.weights, raw_c.knots, &c));
+    *pcurve_degree = raw_b.degree;
+    double t0 = 0, t1 = 0, c0 = 0, c1 = 0, box[6] = {0};
+    if (s && b && c) {
+        CHECK_OK(projcurve_curve_domain(ctx, b, &t0, &t1));
+        CHECK_OK(projcurve_curve_domain(ctx, c, &c0, &c1));
+        CHECK_NEAR(t0, c0, 1e-12);
+        CHECK_NEAR(t1, c1, 1e-12);
+        CHECK_OK(projcurve_surface_bounds(ctx, s, box));
+        const double size = fmax(fmax(box[3] - box[0], box[4] - box[1]), box[5] - box[2]);
+        double worst = 0.0;
+        for (int i = 0; i <= 2000; ++i) {
+            const double t = t0 + (t1 - t0) * i / 2000.0;
+            double uv[3], on_s[3], q[3];
+            CHECK_OK(projcurve_curve_eval(ctx, b, t, 0, uv));
+            CHECK_OK(projcurve_surface_eval(ctx, s, uv[0], uv[1], 0, on_s));
+            CHECK_OK(projcurve_curve_eval(ctx, c, fmin(fmax(t, c0), c1), 0, q));
+            for (int k = 0; k < 3; ++k)
+                worst = fmax(worst, fabs(on_s[k] - q[k]));
+        }
+        if (!(worst <= ROUND_TRIP_REL * size))
+            pc_test_fail_at(__FILE__, __LINE__, "S(pcurve(t)) is %g from the 3D curve", worst);
+        ++pc_test_checks;
+    }
+    projcurve_surface_destroy(s);
+    projcurve_curve_destroy(b);
+    projcurve_curve_destroy(c);
+    pc_arena_release(&arena);
+}
+
+/* A composed branch's 142 states S(pcurve(t)) = C(t): with straight and
+ * with cubic pcurve pieces (PROJCURVE_OPT_PCURVE_DEGREE 3), the written
+ * pcurve is the pieces' pcurves joined, not the traced polyline. */
+static void curve_on_surface_pcurves(void)
+{
+    projcurve_model *in = NULL;
+    if (projcurve_model_read_file(ctx, pc_test_shared_path("cases/bumpy_bicubic_8x8_down.igs"),
+                                  &in) != PROJCURVE_OK)
+        return; /* the case files are checked elsewhere */
+    const double dir[3] = {0.0, 0.0, -1.0};
+    for (int degree = 1; degree <= 3; degree += 2) {
+        projcurve_options *o = NULL;
+        projcurve_result *r = NULL;
+        CHECK_OK(projcurve_options_create(ctx, &o));
+        CHECK_OK(projcurve_options_set_int(ctx, o, PROJCURVE_OPT_PCURVE_DEGREE, degree));
+        CHECK_OK(projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE, 1e-3));
+        CHECK_OK(projcurve_project_directional(ctx, projcurve_model_surface(in, 0),
+                                               projcurve_model_curve(in, 0), dir, o, &r));
+        CHECK(projcurve_result_branch_count(r) == 1);
+        projcurve_iges_writer *w = NULL;
+        CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+        CHECK_OK(projcurve_iges_writer_add_result(ctx, w, projcurve_model_surface(in, 0), r));
+        CHECK_OK(projcurve_iges_writer_write(ctx, w, path_a));
+        projcurve_iges_writer_destroy(w);
+        char *text = file_text(path_a);
+        int pcurve_degree = 0;
+        if (text != NULL)
+            check_curve_on_surface(text, 7, &pcurve_degree); /* 128, 126, 126, 142 */
+        CHECK(pcurve_degree == degree);
+        free(text);
+        projcurve_result_destroy(r);
+        projcurve_options_destroy(o);
+    }
+    projcurve_model_destroy(in);
+}
+
 static int call_back(void *user, double t, double out[9])
 {
     (void)user;
@@ -340,6 +442,7 @@ int main(void)
     surfaces_and_curves();
     result_round_trip();
     projected_round_trip();
+    curve_on_surface_pcurves();
     misuse();
     remove(path_a);
     remove(path_b);

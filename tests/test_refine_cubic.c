@@ -1,8 +1,8 @@
 /*
  * Cubic pcurves (PROJCURVE_OPT_PCURVE_DEGREE = 3) end to end, on the shapes
  * of the tracing tests (tests/support/trace_shapes) and on every directional
- * and orthogonal case of ../shared/cases: for eps_D = 1e-2 ... 1e-6 of the
- * model size at eps_T = 1 degree,
+ * and orthogonal case of ../shared/cases: for eps_D = 1e-2, 1e-4, 1e-5 and
+ * 1e-6 of the model size at eps_T = 1 degree,
  *  - every branch measured by the oracles of tests/support/piece_oracle
  *    (exact projection by the oracle's own Newton; Hausdorff both ways on
  *    dense samples <= eps_D, joints <= eps_T, joins, piece ends, one patch
@@ -11,8 +11,8 @@
  *    projcurve_result_piece_pcurve (Bernstein sums of the pcurve, the
  *    library's surface evaluation), and the pcurve's ends are the piece's
  *    (u, v) ends;
- *  - the piece count against degree 1 (printed; at tight eps_D the cubic
- *    pieces must be fewer).
+ *  - the piece count against straight pcurves at eps_D = 1e-5 (printed;
+ *    the cubic pieces must be at most half as many).
  * Also: surfaces whose composed degree would exceed the limit fall back to
  * degree 1, bad option values and accessor misuse get their statuses.
  */
@@ -113,18 +113,24 @@ static projcurve_result *project(const projection_case *c, double rel_eps, doubl
     return r;
 }
 
-/* Projects c with cubic and straight pcurves, measures the cubic result. */
+/* Straight pcurves are projected for comparison at this eps_D (relative):
+ * tight enough for the O(h^4) against O(h^2) difference to show, and the
+ * straight pieces are still affordable in a sanitizer build. */
+#define COMPARE_REL_EPS 1e-5
+
+/* Projects c with cubic pcurves and measures the result; at COMPARE_REL_EPS
+ * also with straight ones. */
 static void run(const projection_case *c, double rel_eps, double angle)
 {
     const projcurve_surface *s = c->surface;
     projcurve_result *r = project(c, rel_eps, angle, 3);
-    projcurve_result *lin = project(c, rel_eps, angle, 1);
-    if (r == NULL || lin == NULL) {
-        projcurve_result_destroy(r);
+    projcurve_result *lin = rel_eps == COMPARE_REL_EPS ? project(c, rel_eps, angle, 1) : NULL;
+    if (r == NULL) {
         projcurve_result_destroy(lin);
         return;
     }
-    CHECK(r->n_branches == lin->n_branches);
+    if (lin != NULL)
+        CHECK(r->n_branches == lin->n_branches);
     pc_oracle_dir d;
     pc_projector proj;
     if (c->orthogonal)
@@ -135,10 +141,11 @@ static void run(const projection_case *c, double rel_eps, double angle)
     pc_oracle_measure_result(r, &proj, &s->grid, &sum);
     size_t cubic = 0, straight = 0;
     check_pcurves(r, s, 3, &cubic, &straight);
-    double lin_pieces = 0.0;
-    CHECK_OK(projcurve_result_stat(NULL, lin, PROJCURVE_STAT_PIECES, &lin_pieces));
+    double lin_pieces = NAN;
+    if (lin != NULL)
+        CHECK_OK(projcurve_result_stat(NULL, lin, PROJCURVE_STAT_PIECES, &lin_pieces));
     printf("%-28s eps_D %.0e: %zu branches, pieces %5zu (cubic %zu, straight %zu) vs %5.0f "
-           "straight; Hausdorff %.2f eps_D, joints <= %.3f deg\n",
+           "in straight mode; Hausdorff %.2f eps_D, joints <= %.3f deg\n",
            c->name, rel_eps, r->n_branches, sum.pieces, cubic, straight, lin_pieces,
            sum.worst.hausdorff / (rel_eps * s->size), sum.worst.max_angle);
     CHECK(sum.branches_without_pieces == 0);
@@ -150,7 +157,7 @@ static void run(const projection_case *c, double rel_eps, double angle)
     CHECK(sum.worst.off_patch == 0);
     CHECK(cubic > 0);
     /* O(h^4) against O(h^2): at tight tolerances far fewer pieces */
-    if (rel_eps <= 1e-5)
+    if (lin != NULL)
         CHECK(2.0 * (double)sum.pieces <= lin_pieces);
     /* the joined branch has the cubic pieces' degree */
     for (size_t i = 0; i < r->n_branches; ++i) {
@@ -162,7 +169,7 @@ static void run(const projection_case *c, double rel_eps, double angle)
     projcurve_result_destroy(lin);
 }
 
-static const double rel_eps[] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+static const double rel_eps[] = {1e-2, 1e-4, COMPARE_REL_EPS, 1e-6};
 #define N_EPS (sizeof rel_eps / sizeof rel_eps[0])
 
 static void test_shapes(void)
@@ -257,6 +264,41 @@ static void test_degree_fallback(void)
     projcurve_surface_destroy(s);
 }
 
+/* The sphere |x|^2 = 100 as an implicit surface. */
+static int sphere_fn(void *user, const double x[3], double *value, double grad[3],
+                     double hess[9])
+{
+    (void)user;
+    *value = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - 100.0;
+    for (int i = 0; i < 3; ++i) {
+        grad[i] = 2.0 * x[i];
+        for (int j = 0; j < 3; ++j)
+            hess[3 * i + j] = i == j ? 2.0 : 0.0;
+    }
+    return 0;
+}
+
+/* A result on an implicit surface has pieces but no (u, v) pcurve. */
+static void test_implicit_has_no_pcurve(projcurve_context *ctx)
+{
+    const double line[6] = {-5, 3, 20, 5, 3, 20};
+    projcurve_curve *curve = shape_bspline_curve(1, 2, line);
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_orthogonal_implicit(ctx, sphere_fn, NULL, 20.0, curve, NULL, &r));
+    size_t n_pieces = 0;
+    if (r != NULL && projcurve_result_branch_count(r) > 0)
+        CHECK_OK(projcurve_result_branch_info(ctx, r, 0, NULL, NULL, NULL, NULL, &n_pieces));
+    CHECK(n_pieces > 0);
+    if (n_pieces > 0) {
+        int degree = -7;
+        CHECK_STATUS(projcurve_result_piece_pcurve(ctx, r, 0, 0, &degree, NULL),
+                     PROJCURVE_ERR_INVALID_ARGUMENT);
+        CHECK(degree == -7);
+    }
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(curve);
+}
+
 /* The option's bad values and the accessor's bad arguments. */
 static void test_bad_input(void)
 {
@@ -289,13 +331,49 @@ static void test_bad_input(void)
     CHECK_OK(projcurve_result_piece_pcurve(ctx, r, 0, 0, &degree, NULL));
     CHECK(degree == 3);
     projcurve_result_destroy(r);
+    test_implicit_has_no_pcurve(ctx);
     projcurve_surface_destroy((projcurve_surface *)(void *)c.surface);
     projcurve_curve_destroy((projcurve_curve *)(void *)c.curve);
     projcurve_context_destroy(ctx);
 }
 
+/* The piece limit stops the cubic march with a readable prefix. */
+static void test_piece_limit(void)
+{
+    projcurve_surface *s = shape_example1_surface();
+    projcurve_curve *curve = shape_example1_curve();
+    const double dir[3] = {-1.0, 0.0, 0.0};
+    projcurve_options *o = NULL;
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    CHECK_OK(projcurve_options_create(ctx, &o));
+    CHECK_OK(projcurve_options_set_int(ctx, o, PROJCURVE_OPT_PCURVE_DEGREE, 3));
+    CHECK_OK(projcurve_options_set_int(ctx, o, PROJCURVE_OPT_MAX_PIECES, 3));
+    CHECK_OK(projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE, 1e-6 * s->size));
+    projcurve_result *r = NULL;
+    CHECK_STATUS(projcurve_project_directional(ctx, s, curve, dir, o, &r),
+                 PROJCURVE_ERR_LIMIT_REACHED);
+    size_t n_pieces = 0;
+    projcurve_branch_end end = PROJCURVE_END_CURVE_END;
+    if (r != NULL && projcurve_result_branch_count(r) == 1)
+        CHECK_OK(projcurve_result_branch_info(ctx, r, 0, NULL, NULL, &end, NULL, &n_pieces));
+    CHECK(n_pieces >= 1 && n_pieces <= 3);
+    CHECK(end == PROJCURVE_END_LIMIT);
+    for (size_t k = 0; k < n_pieces; ++k) {
+        int degree = 0;
+        CHECK_OK(projcurve_result_piece_pcurve(ctx, r, 0, k, &degree, NULL));
+        CHECK(degree == 3);
+    }
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_context_destroy(ctx);
+    projcurve_curve_destroy(curve);
+    projcurve_surface_destroy(s);
+}
+
 int main(void)
 {
+    test_piece_limit();
     test_bad_input();
     test_degree_fallback();
     test_shapes();

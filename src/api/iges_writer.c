@@ -1,23 +1,24 @@
 /*
  * Public IGES writer: surfaces (128), curves (126) and projection results,
  * each composed branch as its 3D curve (126), its (u, v) pcurve (126 in the
- * plane z = 0: of degree 1 through the refined polyline, or, with cubic
- * pcurves (PROJCURVE_OPT_PCURVE_DEGREE 3), the pieces' cubics) and a curve on
- * surface (142, "projection of a curve onto the surface") tying them to the
- * surface. A surface is written once however often it is added (entities
+ * plane z = 0: the pieces' pcurves joined, so that S composed with it is the
+ * 3D curve; the traced points as a polyline for a branch not composed) and a
+ * curve on surface (142, "projection of a curve onto the surface") tying
+ * them to the surface. A surface is written once however often it is added (entities
  * are compared by their parameter text, i.e. exactly).
  */
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/branch_pcurve.h"
 #include "api/handles.h"
 #include "common/error.h"
 #include "io/iges_write.h"
 
 #define PC_IGES_CURVE_ON_SURFACE 142
 #define PC_IGES_COS_PROJECTION 1 /* CRTN: created as a projection */
-#define PC_IGES_COS_PREFER_3D 2  /* PREF: the 3D curve is exact, the pcurve a polyline */
-#define PC_IGES_COS_PREFER_2D 1
+#define PC_IGES_COS_PREFER_BOTH 3 /* PREF: S o pcurve and the 3D curve are the same curve */
+#define PC_IGES_COS_PREFER_2D 1   /* only the pcurve (traced points, not composed) */
 
 struct projcurve_iges_writer {
     pc_iges_out out;
@@ -99,7 +100,7 @@ projcurve_status projcurve_iges_writer_add_curve(projcurve_context *ctx,
 
 /* The branch's traced (u, v) points as a degree-1 pcurve in z = 0,
  * parametrised by the curve parameter t (repeated t values dropped). */
-static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
+static projcurve_status add_traced_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
                                    const projcurve_result *r, size_t branch, size_t *de)
 {
     size_t n = 0;
@@ -148,109 +149,30 @@ cleanup:
     return st;
 }
 
-/* Piece k's pcurve as 4 cubic Bezier control points (u, v) and its t range,
- * both towards increasing t (a straight pcurve raised to degree 3). */
-static projcurve_status cubic_pcurve(projcurve_context *ctx, const projcurve_result *r,
-                                     size_t branch, size_t k, double uv[8], double range[2])
+/* The pcurve of a composed branch (its pieces' (u, v) curves joined), or
+ * of one that is not composed (its traced points). */
+static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   const projcurve_result *r, size_t branch, size_t *de)
 {
-    int degree = 0;
-    double ctrl[2 * PROJCURVE_MAX_PCURVE_POINTS];
-    projcurve_status st = projcurve_result_piece_pcurve(ctx, r, branch, k, &degree, ctrl);
-    if (st == PROJCURVE_OK)
-        st = projcurve_result_piece(ctx, r, branch, k, NULL, NULL, NULL, range, NULL);
+    projcurve_curve *pcurve = NULL;
+    projcurve_status st = pc_branch_pcurve(ctx, r, branch, &pcurve);
+    if (st == PROJCURVE_ERR_INVALID_ARGUMENT)
+        return add_traced_pcurve(ctx, w, r, branch, de);
     if (st != PROJCURVE_OK)
         return st;
-    for (int i = 0; i < 4; ++i)
-        for (int c = 0; c < 2; ++c) /* degree 1: P0, (2 P0 + P1) / 3, (P0 + 2 P1) / 3, P1 */
-            uv[2 * i + c] = degree == 3 ? ctrl[2 * i + c]
-                                        : ((3 - i) * ctrl[c] + i * ctrl[2 + c]) / 3.0;
-    if (range[0] > range[1]) { /* a branch traced towards decreasing t */
-        for (int i = 0; i < 2; ++i)
-            for (int c = 0; c < 2; ++c) {
-                const double x = uv[2 * i + c];
-                uv[2 * i + c] = uv[2 * (3 - i) + c];
-                uv[2 * (3 - i) + c] = x;
-            }
-        const double t = range[0];
-        range[0] = range[1];
-        range[1] = t;
-    }
-    return PROJCURVE_OK;
-}
-
-/* 1 when some piece of the branch has a cubic pcurve. */
-static int has_cubic_pcurve(const projcurve_result *r, size_t branch, size_t n_pieces)
-{
-    for (size_t k = 0; k < n_pieces; ++k) {
-        int degree = 1;
-        if (projcurve_result_piece_pcurve(NULL, r, branch, k, &degree, NULL) == PROJCURVE_OK &&
-            degree == 3)
-            return 1;
-    }
-    return 0;
-}
-
-/* The pieces' pcurves (PROJCURVE_OPT_PCURVE_DEGREE 3) as one cubic B-spline
- * in z = 0 parametrised by t, knots of multiplicity 3 at the joins: exactly
- * the pieces' (u, v) curves, the 2D side of the 142. */
-static projcurve_status add_cubic_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
-                                         const projcurve_result *r, size_t branch, size_t np,
-                                         size_t *de)
-{
-    const size_t n_ctrl = 3 * np + 1;
-    double first[2], last[2];
-    projcurve_status st = projcurve_result_piece(ctx, r, branch, 0, NULL, NULL, NULL, first, NULL);
-    if (st == PROJCURVE_OK)
-        st = projcurve_result_piece(ctx, r, branch, np - 1, NULL, NULL, NULL, last, NULL);
-    if (st != PROJCURVE_OK)
-        return st;
-    const int descending = first[0] > last[1];
-    double *cw = malloc(4 * n_ctrl * sizeof *cw);
-    double *knots = malloc((n_ctrl + 4) * sizeof *knots);
-    if (cw == NULL || knots == NULL) {
-        st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory writing a pcurve");
-        goto cleanup;
-    }
-    double range[2] = {0.0, 0.0};
-    for (size_t i = 0; i < np && st == PROJCURVE_OK; ++i) {
-        double uv[8];
-        st = cubic_pcurve(ctx, r, branch, descending ? np - 1 - i : i, uv, range);
-        for (size_t j = (i == 0 ? 0 : 1); j < 4; ++j) {
-            double *c = cw + 4 * (3 * i + j);
-            c[0] = uv[2 * j];
-            c[1] = uv[2 * j + 1];
-            c[2] = 0.0;
-            c[3] = 1.0;
-        }
-        for (size_t j = 0; j < (i == 0 ? 4 : 3); ++j)
-            knots[(i == 0 ? 0 : 3 * i + 1) + j] = range[0];
-    }
-    if (st != PROJCURVE_OK)
-        goto cleanup;
-    for (size_t j = 0; j < 4; ++j)
-        knots[n_ctrl + j] = range[1];
-    const pc_nurbs_curve c = {3, n_ctrl, knots, cw, 0, knots[0], range[1], NULL};
     pc_text_buf b = {0};
-    pc_iges_format_curve(&b, &c, 1);
+    pc_iges_format_curve(&b, &pcurve->nurbs, 1);
     st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PARAMETRIC_PART, &b, de);
     free(b.text);
-cleanup:
-    free(cw);
-    free(knots);
+    projcurve_curve_destroy(pcurve);
     return st;
 }
 
 static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer *w,
                                    size_t surface_de, const projcurve_result *r, size_t branch)
 {
-    size_t pcurve_de = 0, curve_de = 0, n_pieces = 0;
-    projcurve_status st =
-        projcurve_result_branch_info(ctx, r, branch, NULL, NULL, NULL, NULL, &n_pieces);
-    if (st != PROJCURVE_OK)
-        return st;
-    st = has_cubic_pcurve(r, branch, n_pieces)
-             ? add_cubic_pcurve(ctx, w, r, branch, n_pieces, &pcurve_de)
-             : add_pcurve(ctx, w, r, branch, &pcurve_de);
+    size_t pcurve_de = 0, curve_de = 0;
+    projcurve_status st = add_pcurve(ctx, w, r, branch, &pcurve_de);
     if (st != PROJCURVE_OK)
         return st;
     projcurve_curve *c = NULL;
@@ -268,7 +190,7 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
     pc_text_buf_int(&b, (long long)surface_de);
     pc_text_buf_int(&b, (long long)pcurve_de);
     pc_text_buf_int(&b, (long long)curve_de);
-    pc_text_buf_int(&b, curve_de ? PC_IGES_COS_PREFER_3D : PC_IGES_COS_PREFER_2D);
+    pc_text_buf_int(&b, curve_de ? PC_IGES_COS_PREFER_BOTH : PC_IGES_COS_PREFER_2D);
     pc_text_buf_end(&b);
     size_t de;
     st = pc_iges_out_add(ctx, &w->out, PC_IGES_CURVE_ON_SURFACE, 0, PC_IGES_STATUS_INDEPENDENT, &b,

@@ -1,6 +1,6 @@
 /*
  * projcurve project FILE... (--dir X,Y,Z | --orthogonal) [--tol D]
- *   [--angle DEG] [-o OUT.igs] [--svg OUT.svg] [--json OUT.json]
+ *   [--angle DEG] [--pcurve-degree 1|3] [-o OUT.igs] [--svg OUT.svg] [--json OUT.json]
  */
 #include <math.h>
 #include <stdlib.h>
@@ -11,7 +11,8 @@
 static void project_usage(FILE *out)
 {
     fputs("usage: projcurve project FILE... (--dir X,Y,Z | --orthogonal) [--tol D]\n"
-          "                         [--angle DEG] [-o OUT.igs] [--svg OUT.svg] [--json OUT.json]\n"
+          "                         [--angle DEG] [--pcurve-degree 1|3] [-o OUT.igs]\n"
+          "                         [--svg OUT.svg] [--json OUT.json]\n"
           "\n"
           "Projects every curve of the files onto every surface of the files.\n"
           "\n"
@@ -20,6 +21,8 @@ static void project_usage(FILE *out)
           "  --tol D         distance tolerance eps_D in model units (default: 1e-4 of\n"
           "                  the surface size)\n"
           "  --angle DEG     joint angle tolerance eps_T in degrees (default 1)\n"
+          "  --pcurve-degree N  pieces' (u, v) curves: 1 straight (default), 3 cubic\n"
+          "                  Hermite (far fewer pieces at tight eps_D)\n"
           "  -o OUT.igs      write surfaces, curves and branches as IGES 5.3\n"
           "  --svg OUT.svg   write a picture\n"
           "  --json OUT.json write the branches as JSON (see docs/cli.md)\n"
@@ -33,8 +36,8 @@ typedef struct project_args {
     size_t n_files;
     int have_dir, orthogonal;
     double dir[3];
-    double tol, angle;
-    int have_tol, have_angle;
+    double tol, angle, pcurve_degree;
+    int have_tol, have_angle, have_pcurve_degree;
     const char *iges, *svg, *json;
 } project_args;
 
@@ -70,6 +73,13 @@ static int parse(int argc, char **argv, project_args *a)
             if (!cli_parse_double(v, target))
                 return cli_usage_error("%s wants a number, got '%s'", arg, v);
             *(arg[2] == 't' ? &a->have_tol : &a->have_angle) = 1;
+        } else if (strcmp(arg, "--pcurve-degree") == 0) {
+            if ((v = value_of(argc, argv, &i)) == NULL)
+                return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &a->pcurve_degree) ||
+                a->pcurve_degree != floor(a->pcurve_degree) || fabs(a->pcurve_degree) > 1e9)
+                return cli_usage_error("%s wants an integer, got '%s'", arg, v);
+            a->have_pcurve_degree = 1;
         } else if (strcmp(arg, "-o") == 0 || strcmp(arg, "--svg") == 0 ||
                    strcmp(arg, "--json") == 0) {
             if ((v = value_of(argc, argv, &i)) == NULL)
@@ -99,6 +109,10 @@ static int make_options(projcurve_context *ctx, const project_args *a, projcurve
     if (a->have_angle && projcurve_options_set_double(ctx, *opts, PROJCURVE_OPT_TOL_ANGLE_DEG,
                                                       a->angle) != PROJCURVE_OK)
         return cli_usage_error("--angle: %s", projcurve_context_message(ctx));
+    if (a->have_pcurve_degree &&
+        projcurve_options_set_int(ctx, *opts, PROJCURVE_OPT_PCURVE_DEGREE,
+                                  (long long)a->pcurve_degree) != PROJCURVE_OK)
+        return cli_usage_error("--pcurve-degree: %s", projcurve_context_message(ctx));
     return CLI_EXIT_OK;
 }
 

@@ -36,7 +36,7 @@ static projcurve_status global_delim(const pc_iges_file *f, const char *g, size_
 projcurve_status pc_iges_read_global(pc_iges_file *f)
 {
     const pc_iges_section *g = &f->sec[1];
-    char head[2 * PC_IGES_DATA_COLUMNS];
+    char head[2 * PC_IGES_DATA_COLUMNS] = {0}; /* only len bytes are read */
     size_t len = 0;
     for (size_t r = 0; r < g->count && len + PC_IGES_DATA_COLUMNS <= sizeof head; ++r) {
         memcpy(head + len, g->records[r], PC_IGES_DATA_COLUMNS);

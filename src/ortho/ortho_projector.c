@@ -18,6 +18,15 @@
  * first fundamental form. */
 #define ORTHO_DET_SINGULAR 1e-12
 
+/* Quadratic convergence is trusted when the last step shrank at least by
+ * this factor and predicts a next step below this fraction of newton_tol. */
+#define ORTHO_CONTRACTION_MAX 0.1
+#define ORTHO_PREDICTED_FRACTION 0.01
+/* ... and only where K is well conditioned: near a centre of curvature the
+ * foot point is known only to ~newton_tol / det, and the confirming
+ * evaluation is kept. */
+#define ORTHO_QUADRATIC_MIN_DET 1e-2
+
 static double clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
 /* K of seed 003 eq. (5) and F of eq. (10) from S, Su, Sv, Suu, Suv, Svv. */
@@ -30,6 +39,14 @@ static void tensor_and_residual(const pc_vec3 *s, pc_vec3 p, double k[4], double
     k[3] = vec3_dot(s[PC_D3_V], s[PC_D3_V]) + vec3_dot(d, s[PC_D3_VV]);
     f[0] = vec3_dot(d, s[PC_D3_U]);
     f[1] = vec3_dot(d, s[PC_D3_V]);
+}
+
+/* det K / (|Su| |Sv|)^2 (unitless; 0 where the parametrisation is
+ * singular). */
+static double normalized_det(const pc_vec3 *s, const double k[4])
+{
+    const double scale = vec3_dot(s[PC_D3_U], s[PC_D3_U]) * vec3_dot(s[PC_D3_V], s[PC_D3_V]);
+    return scale > 0.0 ? (k[0] * k[3] - k[1] * k[2]) / scale : 0.0;
 }
 
 /* Length of the tangential part of S - P, in model units: F holds its
@@ -51,18 +68,34 @@ static pc_ortho_cache *cache_of(const pc_projector *self)
     return (pc_ortho_cache *)self->data;
 }
 
+/* P and its derivatives up to n_deriv (<= 2) at t. Always evaluates up to
+ * order 2, so that the derivatives asked after a correction at the same t
+ * cost nothing. */
 static int eval_curve(const pc_projector *self, double t, int n_deriv, pc_vec3 *p)
 {
     pc_ortho_cache *cache = cache_of(self);
-    if (pc_curve_eval(self->curve, t, n_deriv, &cache->hint_t, p) == PROJCURVE_OK)
-        return 1;
-    cache->callback_failed = 1;
-    return 0;
+    if (!cache->curve_known || cache->curve_t != t) {
+        cache->curve_known = 0;
+        if (pc_curve_eval(self->curve, t, 2, &cache->hint_t, cache->curve_p) != PROJCURVE_OK) {
+            cache->callback_failed = 1;
+            return 0;
+        }
+        cache->curve_known = 1;
+        cache->curve_t = t;
+    }
+    for (int k = 0; k <= n_deriv; ++k)
+        p[k] = cache->curve_p[k];
+    return 1;
 }
 
 /* Newton on F(., ., t) = 0 with the full Jacobian K (seed 003 eq. (14)):
- * delta = -K^-1 F. Stops when the 3D length of the step and the tangential
- * distance are both within newton_tol (seed 000 s3.3 criteria). */
+ * delta = -K^-1 F. Converged when the 3D length of the step and the
+ * tangential distance are both within newton_tol (seed 000 s3.3 criteria),
+ * or when the convergence seen so far is quadratic and predicts that the
+ * step just taken leaves an error far below newton_tol: with steps
+ * d_k = C d_(k-1)^2, the next step would be d_k^3 / d_(k-1)^2. The second
+ * test saves the evaluation that would only confirm convergence (one of
+ * the usual three) where K is well conditioned. */
 static int ortho_correct(const pc_projector *self, double t, double uv[2], int *iterations)
 {
     const pc_nurbs_surface *s = &self->surface->nurbs;
@@ -74,7 +107,7 @@ static int ortho_correct(const pc_projector *self, double t, double uv[2], int *
             *iterations = 0;
         return 0;
     }
-    double first_residual = -1.0;
+    double first_residual = -1.0, last_step = -1.0;
     for (; it < self->newton_max_iter; ++it) {
         pc_vec3 sd[6];
         double k[4], f[2], delta[2];
@@ -93,15 +126,21 @@ static int ortho_correct(const pc_projector *self, double t, double uv[2], int *
             break;
         const double u_new = clamp(uv[0] + delta[0], s->domain[0], s->domain[1]);
         const double v_new = clamp(uv[1] + delta[1], s->domain[2], s->domain[3]);
-        const pc_vec3 step = vec3_axpy(vec3_scale(sd[PC_D3_U], u_new - uv[0]), v_new - uv[1],
-                                       sd[PC_D3_V]);
+        const int clamped = u_new != uv[0] + delta[0] || v_new != uv[1] + delta[1];
+        const double step = vec3_norm(vec3_axpy(vec3_scale(sd[PC_D3_U], u_new - uv[0]),
+                                                v_new - uv[1], sd[PC_D3_V]));
         uv[0] = u_new;
         uv[1] = v_new;
-        if (residual <= tol && vec3_norm(step) <= tol) {
+        const int quadratic = !clamped && last_step > 0.0 &&
+                              fabs(normalized_det(sd, k)) >= ORTHO_QUADRATIC_MIN_DET &&
+                              step <= ORTHO_CONTRACTION_MAX * last_step &&
+                              step * step * step <= ORTHO_PREDICTED_FRACTION * tol * last_step * last_step;
+        if ((residual <= tol && step <= tol) || quadratic) {
             converged = 1;
             ++it;
             break;
         }
+        last_step = step;
     }
     if (iterations)
         *iterations = it;
@@ -155,8 +194,7 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
     }
     out->p = p[0];
     tensor_and_residual(sd, p[0], k, f);
-    const double scale = vec3_dot(sd[PC_D3_U], sd[PC_D3_U]) * vec3_dot(sd[PC_D3_V], sd[PC_D3_V]);
-    out->det = scale > 0.0 ? (k[0] * k[3] - k[1] * k[2]) / scale : 0.0;
+    out->det = normalized_det(sd, k);
 
     /* seed 003 eq. (16): q' = K^-1 [P'.Su; P'.Sv]. */
     const double b[2] = {vec3_dot(p[1], sd[PC_D3_U]), vec3_dot(p[1], sd[PC_D3_V])};
@@ -207,6 +245,7 @@ void pc_ortho_projector_init(pc_projector *proj, pc_ortho_cache *cache,
                              double newton_tol_rel, int newton_max_iter)
 {
     cache->hint_u = cache->hint_v = cache->hint_t = 0;
+    cache->curve_known = 0;
     cache->callback_failed = 0;
     proj->surface = surface;
     proj->curve = curve;

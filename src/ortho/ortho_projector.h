@@ -22,11 +22,16 @@
 #include "trace/projector.h"
 
 /* Mutable evaluation state of one projection call (never shared between
- * threads): knot-span hints, and whether a curve callback failed, which the
- * caller turns into PROJCURVE_ERR_CALLBACK after tracing (the projector's
- * functions can only answer "no convergence"). */
+ * threads): knot-span hints; P, P', P'' at the last curve parameter asked
+ * (the corrector and then the derivatives are asked at the same t, by the
+ * tracer and by refine/ alike); and whether a curve callback failed, which
+ * the caller turns into PROJCURVE_ERR_CALLBACK after tracing (the
+ * projector's functions can only answer "no convergence"). */
 typedef struct pc_ortho_cache {
     size_t hint_u, hint_v, hint_t;
+    int curve_known;      /* curve_t and curve_p hold a successful evaluation */
+    double curve_t;
+    pc_vec3 curve_p[3];
     int callback_failed;
 } pc_ortho_cache;
 

@@ -1,5 +1,6 @@
 #include "ortho/surface_d3.h"
 
+#include "nurbs/span_poly.h"
 #include "projcurve.h"
 
 /* Derivative order evaluated here. */
@@ -122,27 +123,55 @@ static void homogeneous_derivatives(const pc_nurbs_surface *s, size_t span_u, si
     }
 }
 
-void pc_surface_eval_d3(const pc_nurbs_surface *s, double u, double v, size_t *hint_u,
-                        size_t *hint_v, pc_vec3 out[PC_D3_COUNT])
+/* Scaled x-derivatives b[d] = (1/d!) d^d f / dx^d, d <= 3, of the degree-n
+ * polynomial with 4-vector coefficients c[0], c[stride], ... at x, by
+ * Horner's scheme carried to the derivatives. */
+static void horner_d3(const double *c, size_t stride, int n, double x,
+                      double b[D3_ORDER + 1][4])
 {
-    u = clamp(u, s->domain[0], s->domain[1]);
-    v = clamp(v, s->domain[2], s->domain[3]);
-    const size_t span_u = pc_knot_span(s->knots_u, s->n_u, s->deg_u, u, hint_u ? *hint_u : 0);
-    const size_t span_v = pc_knot_span(s->knots_v, s->n_v, s->deg_v, v, hint_v ? *hint_v : 0);
-    if (hint_u)
-        *hint_u = span_u;
-    if (hint_v)
-        *hint_v = span_v;
+    for (int d = 0; d <= D3_ORDER; ++d)
+        for (int m = 0; m < 4; ++m)
+            b[d][m] = 0.0;
+    for (int k = n; k >= 0; --k) {
+        const double *ck = c + (size_t)k * stride;
+        for (int d = D3_ORDER; d >= 1; --d)
+            for (int m = 0; m < 4; ++m)
+                b[d][m] = b[d][m] * x + b[d - 1][m];
+        for (int m = 0; m < 4; ++m)
+            b[0][m] = b[0][m] * x + ck[m];
+    }
+}
 
-    double nu[D3_ORDER + 1][D3_MAX_P1], nv[D3_ORDER + 1][D3_MAX_P1];
-    basis_derivatives(s->knots_u, span_u, s->deg_u, u, D3_ORDER, nu);
-    basis_derivatives(s->knots_v, span_v, s->deg_v, v, D3_ORDER, nv);
+/* Homogeneous derivatives aw[k][l] (k + l <= 3) from the span pair's
+ * monomial form (nurbs/span_poly.h: coefficient of x^i y^j at
+ * 4 (j (p + 1) + i), x and y the offsets from the span's start): Horner in
+ * x along each row, then in y on each x-derivative order. */
+static void monomial_derivatives(const double *c, int p, int q, double x, double y,
+                                 double aw[D3_ORDER + 1][D3_ORDER + 1][4])
+{
+    double rows[D3_ORDER + 1][PC_POLY_ORDER][4];
+    for (int j = 0; j <= q; ++j) {
+        double b[D3_ORDER + 1][4];
+        horner_d3(c + 4 * (size_t)j * ((size_t)p + 1), 4, p, x, b);
+        for (int d = 0; d <= D3_ORDER; ++d)
+            for (int m = 0; m < 4; ++m)
+                rows[d][j][m] = b[d][m];
+    }
+    static const double factorial[D3_ORDER + 1] = {1.0, 1.0, 2.0, 6.0};
+    for (int k = 0; k <= D3_ORDER; ++k) {
+        double b[D3_ORDER + 1][4];
+        horner_d3(rows[k][0], 4, q, y, b);
+        for (int l = 0; k + l <= D3_ORDER; ++l)
+            for (int m = 0; m < 4; ++m)
+                aw[k][l][m] = factorial[k] * factorial[l] * b[l][m];
+    }
+}
 
-    double aw[D3_ORDER + 1][D3_ORDER + 1][4];
-    homogeneous_derivatives(s, span_u, span_v, nu, nv, aw);
-
-    /* Quotient rule for S = A / w (The NURBS Book, algorithm A4.4): in
-     * order of total degree, so every S_(k-i, l-j) used is already known. */
+/* The quotient rule for S = A / w (The NURBS Book, algorithm A4.4), in
+ * order of total degree so that every S_(k-i, l-j) used is already known. */
+static void rational_derivatives(double aw[D3_ORDER + 1][D3_ORDER + 1][4],
+                                 pc_vec3 out[PC_D3_COUNT])
+{
     const double w = aw[0][0][3];
     for (int order = 0; order <= D3_ORDER; ++order) {
         for (int k = order; k >= 0; --k) {
@@ -158,4 +187,38 @@ void pc_surface_eval_d3(const pc_nurbs_surface *s, double u, double v, size_t *h
             out[slot(k, l)] = vec3_scale(acc, 1.0 / w);
         }
     }
+}
+
+void pc_surface_eval_d3(const pc_nurbs_surface *s, double u, double v, size_t *hint_u,
+                        size_t *hint_v, pc_vec3 out[PC_D3_COUNT])
+{
+    u = clamp(u, s->domain[0], s->domain[1]);
+    v = clamp(v, s->domain[2], s->domain[3]);
+    const size_t span_u = pc_knot_span(s->knots_u, s->n_u, s->deg_u, u, hint_u ? *hint_u : 0);
+    const size_t span_v = pc_knot_span(s->knots_v, s->n_v, s->deg_v, v, hint_v ? *hint_v : 0);
+    if (hint_u)
+        *hint_u = span_u;
+    if (hint_v)
+        *hint_v = span_v;
+
+    double aw[D3_ORDER + 1][D3_ORDER + 1][4];
+    const int p = s->deg_u, q = s->deg_v;
+    if (s->poly != NULL) {
+        const size_t index = (span_v - (size_t)q) * (s->n_u - (size_t)p) + (span_u - (size_t)p);
+        monomial_derivatives(s->poly + index * pc_span_poly_len(p, q), p, q,
+                             u - s->knots_u[span_u], v - s->knots_v[span_v], aw);
+    } else {
+        double nu[D3_ORDER + 1][D3_MAX_P1], nv[D3_ORDER + 1][D3_MAX_P1];
+        basis_derivatives(s->knots_u, span_u, p, u, D3_ORDER, nu);
+        basis_derivatives(s->knots_v, span_v, q, v, D3_ORDER, nv);
+        homogeneous_derivatives(s, span_u, span_v, nu, nv, aw);
+    }
+    if (s->rational) {
+        rational_derivatives(aw, out);
+        return;
+    }
+    /* Every weight is 1: S = A. */
+    for (int k = 0; k <= D3_ORDER; ++k)
+        for (int l = 0; k + l <= D3_ORDER; ++l)
+            out[slot(k, l)] = vec3(aw[k][l][0], aw[k][l][1], aw[k][l][2]);
 }

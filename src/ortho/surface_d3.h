@@ -5,9 +5,11 @@
  * eq. (16) differentiated once more), which contains the third partial
  * derivatives of S: the time derivative of the projective tensor
  * K_ij = S_i.S_j + (S - P).S_ij involves (S - P).S_ijk. nurbs/ evaluates up
- * to order 2 only, so this file evaluates order 3 exactly from the
- * homogeneous control net (basis function derivatives, then the quotient
- * rule for rational surfaces) instead of differencing second derivatives.
+ * to order 2 only, so this file evaluates order 3 exactly, instead of
+ * differencing second derivatives: by Horner's scheme on the span's
+ * monomial form when nurbs/ keeps one (degrees <= 5, nurbs/span_poly.h),
+ * else from the homogeneous control net (basis function derivatives); then
+ * the quotient rule for rational surfaces.
  */
 #ifndef PC_ORTHO_SURFACE_D3_H
 #define PC_ORTHO_SURFACE_D3_H

@@ -54,6 +54,7 @@ int pc_refine_exact_point(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *
     out->u = uv[0];
     out->v = uv[1];
     out->fixed = 0;
+    out->gap = 0;
     return 1;
 }
 

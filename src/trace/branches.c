@@ -66,7 +66,12 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     for (int k = 0; k < 4; ++k)
         tr->dom[k] = proj->surface->nurbs.domain[k];
     const double span = c->t1 - c->t0;
-    double length = cfg->length_estimate > 0.0 ? cfg->length_estimate : curve_length(c);
+    /* ds serves arc-length stepping and the jump sweep only: constant
+     * parameter steps without the sweep skip the fallback estimate (65
+     * curve evaluations) */
+    const int need_ds = !(opts->param_step > 0.0) || opts->jump_detection;
+    double length = cfg->length_estimate > 0.0 ? cfg->length_estimate
+                                               : (need_ds ? curve_length(c) : 0.0);
     if (!(length > 0.0) || !isfinite(length))
         length = cfg->model_size > 0.0 ? cfg->model_size : 1.0;
     tr->ds = opts->arc_step_fraction * length;

@@ -60,6 +60,11 @@ static int evaluate_curve(const pc_projector *self, double t)
         c->callback_failed = 1;
         return 0;
     }
+    const pc_directional_data *d = dir_data(self);
+    c->frame_d1[0] = vec3_dot(d->e1, c->curve[1]);
+    c->frame_d1[1] = vec3_dot(d->e2, c->curve[1]);
+    c->frame_d2[0] = vec3_dot(d->e1, c->curve[2]);
+    c->frame_d2[1] = vec3_dot(d->e2, c->curve[2]);
     c->t = t;
     c->curve_valid = 1;
     return 1;
@@ -159,22 +164,26 @@ static const double *span_bound(const pc_projector *self)
             c->bound_state = -1;
             return NULL;
         }
+        const pc_nurbs_surface *ns = &self->surface->nurbs;
         c->bound_state = 1;
         c->bound_u = c->span_u;
         c->bound_v = c->span_v;
+        c->bound_box[0] = ns->knots_u[c->span_u];
+        c->bound_box[1] = ns->knots_u[c->span_u + 1];
+        c->bound_box[2] = ns->knots_v[c->span_v];
+        c->bound_box[3] = ns->knots_v[c->span_v + 1];
     }
     return c->m3;
 }
 
 /* Whether (u + du, v + dv) lies in the span of the cached evaluation,
- * where its third-derivative bound holds. */
+ * where its third-derivative bound holds (after span_bound()). */
 static int in_span(const pc_projector *self, double du, double dv)
 {
     const pc_directional_cache *c = dir_data(self)->cache;
-    const pc_nurbs_surface *ns = &self->surface->nurbs;
     const double u = c->u + du, v = c->v + dv;
-    return u >= ns->knots_u[c->span_u] && u <= ns->knots_u[c->span_u + 1] &&
-           v >= ns->knots_v[c->span_v] && v <= ns->knots_v[c->span_v + 1];
+    return u >= c->bound_box[0] && u <= c->bound_box[1] && v >= c->bound_box[2] &&
+           v <= c->bound_box[3];
 }
 
 /* Looks for a step d from the cached evaluation whose residual |G(q + d)|
@@ -190,13 +199,19 @@ static int model_step(const pc_projector *self, const double g[2], const jacobia
 {
     const pc_directional_data *dd = dir_data(self);
     const pc_vec3 *s = dd->cache->surf;
+    /* the model's zero lies within ~|J^-1 S'' d| |d| of the Newton step:
+     * a remainder above target there is above it at the zero too */
+    double room = target - pc_span_cubic_remainder(m3, d[0], d[1]);
+    if (!(room >= 0.0))
+        return 0;
     pc_vec3 w = half_second(s, d[0], d[1]);
     double r0 = vec3_dot(dd->e1, w), r1 = vec3_dot(dd->e2, w);
     for (int k = 0;; ++k) {
         if (!in_span(self, d[0], d[1]))
             return 0;
         /* |r| + remainder <= target, without the square root */
-        const double room = target - pc_span_cubic_remainder(m3, d[0], d[1]);
+        if (k > 0)
+            room = target - pc_span_cubic_remainder(m3, d[0], d[1]);
         if (room >= 0.0 && r0 * r0 + r1 * r1 <= room * room)
             return 1;
         if (k == PC_NEWTON_MODEL_ITER)
@@ -271,9 +286,7 @@ static int final_step(const pc_projector *self, double h, const double g[2], con
         if (!model_step(self, g, j, m3, safe, d))
             return 0;
         double q1[2];
-        const pc_vec3 p1 = c->curve[1];
-        const double r1[2] = {vec3_dot(dd->e1, p1), vec3_dot(dd->e2, p1)};
-        jacobian_solve(j, r1, q1);
+        jacobian_solve(j, c->frame_d1, q1);
         const double drift2 = second_drift2(j, m3, d, q1);
         const double shift2 = 0.25 * h * h * h * h * drift2; /* of the next prediction */
         const double budget2 =
@@ -393,10 +406,10 @@ static int dir_derivatives(const pc_projector *self, double t, double u, double 
         return 0;
 
     double q1[2];
-    const double r1[2] = {vec3_dot(d->e1, p[1]), vec3_dot(d->e2, p[1])};
-    jacobian_solve(&j, r1, q1);
-    const pc_vec3 acc = vec3_sub(p[2], vec3_scale(half_second(s, q1[0], q1[1]), 2.0));
-    const double r2[2] = {vec3_dot(d->e1, acc), vec3_dot(d->e2, acc)};
+    const double *d1 = d->cache->frame_d1, *d2 = d->cache->frame_d2;
+    jacobian_solve(&j, d1, q1);
+    const pc_vec3 acc = half_second(s, q1[0], q1[1]); /* S''[q', q'] / 2 */
+    const double r2[2] = {d2[0] - 2.0 * vec3_dot(d->e1, acc), d2[1] - 2.0 * vec3_dot(d->e2, acc)};
     double q2[2];
     jacobian_solve(&j, r2, q2);
     out->du = q1[0];
@@ -422,8 +435,7 @@ static int dir_slope(const pc_projector *self, double t, double u, double v, dou
     jacobian j;
     if (!jacobian_at(d, s, &j))
         return 0;
-    const double r[2] = {vec3_dot(d->e1, c->curve[1]), vec3_dot(d->e2, c->curve[1])};
-    jacobian_solve(&j, r, dq);
+    jacobian_solve(&j, c->frame_d1, dq);
     return isfinite(dq[0]) && isfinite(dq[1]);
 }
 

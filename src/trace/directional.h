@@ -22,6 +22,7 @@ typedef struct pc_directional_cache {
     double t, u, v;
     pc_vec3 surf[6];           /* S, Su, Sv, Suu, Suv, Svv at (u, v) */
     pc_vec3 curve[3];          /* P, P', P'' at t */
+    double frame_d1[2], frame_d2[2]; /* [e1.P'; e2.P'], [e1.P''; e2.P''] */
     size_t span_u, span_v;     /* knot span of the evaluation in surf */
     /* Third-derivative bound of one span (span_bound.h), kept while the
      * evaluations stay in it: bound_state 1 = m3 holds the bound of span
@@ -29,6 +30,7 @@ typedef struct pc_directional_cache {
     int bound_state;
     size_t bound_u, bound_v;
     double m3[4];
+    double bound_box[4];       /* that span: u0, u1, v0, v1 */
     double guess_error;        /* seed 000 eq. (3.8) of the last guess */
     int callback_failed;       /* a curve callback failed at some point */
 } pc_directional_cache;

@@ -50,6 +50,10 @@ def part_usage(exe, shared, work):
     run([exe, "project", case, "--dir", "0,0,-1", "--tol", "-1"], 2, "negative tolerance")
     run([exe, "project", case, "--dir", "0,0,-1", "--angle", "x"], 2, "non-numeric angle")
     run([exe, "project", case, "--dir", "0,0,-1", "--bogus"], 2, "unknown option")
+    run([exe, "project", case, "--dir", "0,0,-1", "--pcurve-degree", "2"], 2, "pcurve degree 2")
+    run([exe, "project", case, "--dir", "0,0,-1", "--pcurve-degree", "3.5"], 2,
+        "non-integer pcurve degree")
+    run([exe, "project", case, "--dir", "-1,0,0", "--pcurve-degree", "3"], 0, "cubic pcurves")
     run([exe, "project", "/nonexistent/x.igs", "--dir", "0,0,-1"], 2, "missing input")
     run([exe, "project", case, "--dir", "0,0,0"], 1, "zero direction: projection fails")
     teapot = os.path.join(shared, "data", "real", "teapot_newell_spd.txt")
@@ -257,6 +261,14 @@ def check_branch_geometry(name, case, b, written, curve):
           f"the IGES 126 {q.degree}/{len(q.points)}")
     check(b["pieces"] == q.distinct_spans(),
           f"{name}: JSON pieces {b['pieces']} vs {q.distinct_spans()} spans in the IGES 126")
+    # the 142 is one curve: S(pcurve(t)) is the 3D curve at every t
+    apart = 0.0
+    for i in range(len(nodes) - 1):
+        for f in (0.25, 0.5, 0.75):
+            t = nodes[i] + f * (nodes[i + 1] - nodes[i])
+            u, v, _ = pcurve.eval(t)
+            apart = max(apart, norm(sub(q.eval(t), surface.eval(u, v))))
+    check(apart <= 1e-12 * size, f"{name}: S(pcurve(t)) is {apart:.3g} from the 3D curve")
     if not ortho:
         worst_mid, missed = exact_deviation(surface, curve, direction, q, nodes, uv, tol)
         check(missed <= max(1, len(nodes) // 50),
@@ -274,7 +286,6 @@ def check_branch_geometry(name, case, b, written, curve):
             span = max(surface.domain[1] - surface.domain[0], surface.domain[3] - surface.domain[2])
             check(on_edge(u, v) <= 1e-9 * span,
                   f"{name}: '{kind}' at (u, v) = ({u}, {v}), not on the domain edge")
-    del size
 
 
 def part_cases(exe, shared, work):
