@@ -284,6 +284,44 @@ static void test_torus_tube_centre(void)
     projcurve_surface_destroy(surf);
 }
 
+/* The torus as built (seam around the tube on the outer equator), the line
+ * P(t) = (10 + t, 0.2 t, 0.5 t) through the tube's centre at (10, 0, 0):
+ * three events at t = 0 at once. The near-side foot points (u at the seam
+ * u = 0 / 1 as well) swap through the centre of curvature, and the far
+ * side's outer foot point crosses the tube's seam v = 0 / 1 at the same t.
+ * This once gave a branch of 10^6 vertices at t = 0 and LIMIT_REACHED
+ * (before the corrector kept its confirming evaluation near centres). */
+static void test_torus_centre_on_seams(void)
+{
+    printf("torus, line through the tube's centre on the seams at t = 0\n");
+    pc_shape_surface data = pc_shape_torus(10.0, 3.0);
+    projcurve_surface *surf = pc_shape_surface_create(&data);
+    pc_shape_surface_free(&data);
+    const path line = {{10, 0, 0}, 0.0, {1, 0.2, 0.5}};
+    branch br[16];
+    const size_t nb = project(surf, &line, -1.0, 1.0, br, 16);
+    CHECK(nb == 7);
+    /* The near side's foot points sit on the u seam at the centre, so
+     * either reason names their ends truthfully; what must hold is that
+     * three branches end and three start at t = 0, each for one of them,
+     * and one runs through. */
+    int ended = 0, started = 0, whole = 0;
+    for (size_t b = 0; b < nb; ++b) {
+        CHECK(br[b].n < 1000);
+        ended += (br[b].end == PROJCURVE_END_CURVATURE_CENTRE ||
+                  br[b].end == PROJCURVE_END_BOUNDARY) &&
+                 fabs(br[b].range[1]) <= 1e-5;
+        started += (br[b].start == PROJCURVE_START_SILHOUETTE ||
+                    br[b].start == PROJCURVE_START_BOUNDARY) &&
+                   fabs(br[b].range[0]) <= 1e-5;
+        whole += br[b].start == PROJCURVE_START_CURVE_START && br[b].end == PROJCURVE_END_CURVE_END;
+    }
+    printf("  %d end and %d start at t = 0, %d whole\n", ended, started, whole);
+    CHECK(ended == 3 && started == 3 && whole == 1);
+    free_branches(br, nb);
+    projcurve_surface_destroy(surf);
+}
+
 /* Constant parameter steps far longer than the distance to a centre of
  * curvature must not step over it: a line through the axis of a cylinder
  * (R = 5) at t = 2 with steps of 0.7 (the third step would jump from 1.4 to
@@ -384,6 +422,7 @@ int main(void)
     test_births_at_centres();
     test_boundary_entry();
     test_torus_tube_centre();
+    test_torus_centre_on_seams();
     test_coarse_steps();
     test_seam();
     return pc_test_finish("test_ortho_events");
