@@ -56,6 +56,9 @@ static pc_vec3 derivative_tangent(pc_refiner *r, const pc_rvertex *v)
         r->last_singular = 1;
         return vec3(0.0, 0.0, 0.0);
     }
+    r->last_has_d = 1;
+    r->last_d[0] = pt.du;
+    r->last_d[1] = pt.dv;
     pc_vec3 d[3];
     pc_nurbs_surface_eval(r->nurbs, v->u, v->v, 1, &r->hint_u, &r->hint_v, d);
     return vec3_add(vec3_scale(d[1], pt.du), vec3_scale(d[2], pt.dv));
@@ -64,6 +67,7 @@ static pc_vec3 derivative_tangent(pc_refiner *r, const pc_rvertex *v)
 pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other)
 {
     r->last_singular = 0;
+    r->last_has_d = 0;
     if (!pc_refine_on_knot_line(r, v) || other->t == v->t)
         return derivative_tangent(r, v);
     double step = PC_SIDE_STEP_REL * r->t_range;
@@ -76,6 +80,14 @@ pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rve
     const pc_vec3 d = vec3_sub(pc_refine_surface_point(r, w.u, w.v),
                                pc_refine_surface_point(r, v->u, v->v));
     return vec3_scale(d, sign);
+}
+
+/* Stores in v the q' that the last pc_refine_exact_tangent got, if any. */
+static void keep_derivative(const pc_refiner *r, pc_rvertex *v)
+{
+    v->has_d = r->last_has_d;
+    v->d[0] = r->last_d[0];
+    v->d[1] = r->last_d[1];
 }
 
 /* Angle between a and b in radians; 0 when either has no direction. */
@@ -151,6 +163,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
 {
     pc_rvertex cur = *a;
     pc_vec3 t_cur = pc_refine_exact_tangent(r, &cur, b);
+    keep_derivative(r, &cur);
     double h = r->step > 0.0 ? r->step : b->t - a->t;
     double h_ok = h; /* the last accepted step, to restart from after a gap */
     int rejections = 0;
@@ -170,6 +183,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
             if (st != PROJCURVE_OK)
                 return st;
             t_cur = pc_refine_exact_tangent(r, &cand, b);
+            keep_derivative(r, &cand);
             cur = cand;
             h = h_ok;
             rejections = 0;
@@ -180,6 +194,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
         double ratio_d = 0.0, ratio_a = 0.0, t_far;
         const pc_vec3 t_cand = pc_refine_exact_tangent(r, &cand, &cur);
         const int singular = r->last_singular && cand.t < b->t;
+        keep_derivative(r, &cand);
         double cw[PC_PIECE_MAX_CW];
         const int n = pc_refine_compose(patch, &cur, &cand, cw);
         ratio_a = end_angle(n, cw, t_cur, t_cand) / r->half_angle;
@@ -215,6 +230,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
             return st;
         if (out->items[out->count - 2].gap) { /* restart after the gap */
             t_cur = pc_refine_exact_tangent(r, &cand, b);
+            keep_derivative(r, &cand);
             cur = cand;
             h = h_ok;
             rejections = 0;

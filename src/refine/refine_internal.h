@@ -44,6 +44,12 @@ typedef struct pc_rvertex {
      * a branch's first sets it. */
     int in_cubic;
     double in_d0[2], in_d1[2];
+    /* q'(t) at this vertex when has_d (from the projector's derivatives,
+     * not at knot lines): the corrector's guesses between two such
+     * vertices are then cubic Hermite, O(h^4) off the curve instead of the
+     * chord's O(h^2), and Newton converges in one step (exact.c). */
+    int has_d;
+    double d[2];
 } pc_rvertex;
 
 /* Why a segment is a gap: the corrector failed, or the vertex before it is
@@ -82,6 +88,8 @@ typedef struct pc_refiner {
     size_t gaps;         /* gap vertices made (see pc_rvertex) */
     int last_singular;   /* the last pc_refine_exact_tangent was at a vertex
                             with |det J| below the fold threshold */
+    int last_has_d;      /* and it gave q' (last_d) from the projector */
+    double last_d[2];
     size_t hint_u, hint_v;
     int pcurve_degree;   /* 1 (straight segments) or 3 (cubic Hermite) */
 } pc_refiner;
