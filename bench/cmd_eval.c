@@ -2,7 +2,8 @@
  * projcurve-bench eval: nanoseconds per bicubic surface evaluation with
  * second derivatives (the tracer's hot path) and per closest-point query,
  * on a 16 x 16-span bicubic surface, beside a textbook evaluation loop
- * timed in the same run.
+ * timed in the same run; and per cubic curve evaluation with second
+ * derivatives (the tracer evaluates the projected curve at every step).
  */
 #include <math.h>
 #include <stdio.h>
@@ -25,6 +26,7 @@
 
 typedef struct eval_bench {
     const projcurve_surface *surface;
+    const projcurve_curve *curve;  /* cubic, EVAL_SPANS spans */
     pcb_naive_surface naive;
     double *uv;      /* 2 * EVAL_POINTS */
     double *query;   /* 3 * CLOSEST_POINTS */
@@ -78,6 +80,38 @@ static int work_naive(void *user, size_t n)
     }
     pcb_consume(acc);
     return 0;
+}
+
+static int work_curve(void *user, size_t n)
+{
+    eval_bench *b = user;
+    const pc_nurbs_curve *c = &b->curve->nurbs;
+    size_t hint = 0;
+    double acc = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        const double t = c->t0 + (c->t1 - c->t0) * b->uv[b->next++ % (2 * EVAL_POINTS)];
+        pc_vec3 out[3];
+        pc_nurbs_curve_eval(c, t, 2, &hint, out);
+        acc += out[0].z;
+    }
+    pcb_consume(acc);
+    return 0;
+}
+
+/* A cubic space curve over the surface's field: control points on a
+ * wavy line, uniform knots. */
+static projcurve_status make_curve(projcurve_curve **out)
+{
+    enum { N = EVAL_SPANS + 3 };
+    double ctrl[3 * N], knots[N + 4];
+    for (size_t i = 0; i < N; ++i) {
+        ctrl[3 * i] = PCB_FIELD_SIZE * (double)i / (double)(N - 1);
+        ctrl[3 * i + 1] = 10.0 * sin(0.8 * (double)i);
+        ctrl[3 * i + 2] = 20.0 + 5.0 * cos(1.3 * (double)i);
+    }
+    for (size_t k = 0; k < N + 4; ++k)
+        knots[k] = k < 4 ? 0.0 : (k >= N ? (double)EVAL_SPANS : (double)(k - 3));
+    return projcurve_curve_create_nurbs(NULL, 3, N, ctrl, NULL, knots, out);
 }
 
 static int work_closest(void *user, size_t n)
@@ -143,7 +177,7 @@ static void write_svg(const pcb_args *args, const by_order *o)
 }
 
 static void write_json(const pcb_args *args, const pcb_pair *internal, const pcb_pair *public_,
-                       double closest_s, double diff, const by_order *o)
+                       double closest_s, double curve_s, double diff, const by_order *o)
 {
     pcb_json j;
     if (pcb_json_open(&j, args->json_path) != 0)
@@ -153,6 +187,7 @@ static void write_json(const pcb_args *args, const pcb_pair *internal, const pcb
     pcb_json_object_begin(&j, NULL);
     pcb_json_number(&j, "eval_ns", 1e9 * internal->a_s);
     pcb_json_number(&j, "closest_point_ns", 1e9 * closest_s);
+    pcb_json_number(&j, "curve_eval_ns", 1e9 * curve_s);
     pcb_json_number(&j, "public_eval_ns", 1e9 * public_->a_s);
     pcb_json_number(&j, "naive_eval_ns", 1e9 * internal->b_s);
     pcb_json_number(&j, "eval_over_naive", internal->ratio);
@@ -180,6 +215,7 @@ int pcb_cmd_eval(const pcb_args *args)
     eval_bench b = {0};
     double *ctrl = NULL, *knots = NULL;
     projcurve_surface *surface = NULL;
+    projcurve_curve *curve = NULL;
     int rc = 1;
     b.uv = malloc(2 * EVAL_POINTS * sizeof *b.uv);
     b.query = malloc(3 * CLOSEST_POINTS * sizeof *b.query);
@@ -188,6 +224,9 @@ int pcb_cmd_eval(const pcb_args *args)
     if (!pcb_ok(NULL, pcb_make_bumpy_surface(NULL, EVAL_SPANS, &surface), "eval: surface"))
         goto cleanup;
     b.surface = surface;
+    if (!pcb_ok(NULL, make_curve(&curve), "eval: curve"))
+        goto cleanup;
+    b.curve = curve;
     b.naive = (pcb_naive_surface){EVAL_SPANS + 3, EVAL_SPANS + 3, knots, knots, ctrl};
     unsigned long long rng = SAMPLE_SEED;
     for (size_t i = 0; i < 2 * EVAL_POINTS; ++i)
@@ -198,7 +237,7 @@ int pcb_cmd_eval(const pcb_args *args)
     const double diff = max_difference(&b);
     const pcb_timing timing = pcb_timing_for(args, EVAL_REPS, EVAL_MIN_RUN_S);
     pcb_pair internal, public_;
-    double closest_s = NAN;
+    double closest_s = NAN, curve_s = NAN;
     by_order o;
     for (int k = 0; k <= MAX_ORDER; ++k) {
         b.n_deriv = k;
@@ -214,7 +253,8 @@ int pcb_cmd_eval(const pcb_args *args)
     b.n_deriv = MAX_ORDER;  /* the headline figures: with second derivatives */
     if (pcb_time_pair(&timing, work_internal, &b, work_naive, &b, &internal) ||
         pcb_time_pair(&timing, work_public, &b, work_naive, &b, &public_) ||
-        pcb_time_median(&timing, work_closest, &b, &closest_s)) {
+        pcb_time_median(&timing, work_closest, &b, &closest_s) ||
+        pcb_time_median(&timing, work_curve, &b, &curve_s)) {
         fprintf(stderr, "eval: a timed call failed\n");
         goto cleanup;
     }
@@ -225,17 +265,19 @@ int pcb_cmd_eval(const pcb_args *args)
            public_.ratio);
     printf("%-36s %10.1f %14s\n", "textbook A2.1+A2.3 loop (naive)", 1e9 * internal.b_s, "1");
     printf("%-36s %10.1f\n", "projcurve_surface_closest_point", 1e9 * closest_s);
+    printf("%-36s %10.1f\n", "pc_nurbs_curve_eval (cubic, C..C'')", 1e9 * curve_s);
     printf("by derivative order (internal / public ns):");
     for (int k = 0; k <= MAX_ORDER; ++k)
         printf("  %d: %.1f / %.1f", k, o.internal_ns[k], o.public_ns[k]);
     printf("\nmax relative difference library vs textbook: %.2e\n", diff);
-    write_json(args, &internal, &public_, closest_s, diff, &o);
+    write_json(args, &internal, &public_, closest_s, curve_s, diff, &o);
     write_svg(args, &o);
     rc = diff <= 1e-9 ? 0 : 1;
     if (rc)
         fprintf(stderr, "eval: library and textbook evaluations disagree (%.3g)\n", diff);
 cleanup:
     projcurve_surface_destroy(surface);
+    projcurve_curve_destroy(curve);
     free(ctrl);
     free(knots);
     free(b.uv);

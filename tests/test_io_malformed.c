@@ -299,8 +299,10 @@ static void step_cases(void)
     size_t surfaces = 0;
     CHECK_OK(read_mem(step_text, len, &surfaces));
     CHECK(surfaces == 1);
-    for (size_t cut = 0; cut < len; cut += 7)
-        (void)read_mem(step_text, cut, NULL);
+    /* Cut anywhere before the DATA section's ENDSEC: a PARSE error. */
+    const size_t data_end = (size_t)(strstr(step_text, "ENDSEC;\nEND-ISO") - step_text);
+    for (size_t cut = 0; cut < data_end; cut += 7)
+        CHECK_STATUS(read_mem(step_text, cut, NULL), PROJCURVE_ERR_PARSE);
     check_replaced(step_text, len, "ENDSEC;\nEND", "END", PROJCURVE_ERR_PARSE, "ENDSEC",
                    "no ENDSEC");
     check_replaced(step_text, len, "((#1,#3),(#2,#4))", "((#1,#3),(#2,#99))", PROJCURVE_ERR_PARSE,
@@ -336,8 +338,9 @@ static void teapot_cases(void)
                    "absurd patch count");
     check_replaced(small, len, "3,3,1\n", "3,3,z\n", PROJCURVE_ERR_PARSE, "line 19",
                    "non-numeric coordinate");
-    for (size_t cut = 0; cut < len; cut += 3)
-        (void)read_mem(small, cut, NULL);
+    /* Cut anywhere before the last coordinate: a PARSE error. */
+    for (size_t cut = 0; cut + 2 < len; cut += 3)
+        CHECK_STATUS(read_mem(small, cut, NULL), PROJCURVE_ERR_PARSE);
 }
 
 static void gismo_cases(void)
@@ -359,8 +362,21 @@ static void gismo_cases(void)
     check_replaced(xml, len, "degree=\"1\">0 0 1 1</KnotVector></Basis>\n<Basis",
                    "degree=\"99\">0 0 1 1</KnotVector></Basis>\n<Basis", PROJCURVE_ERR_PARSE,
                    "degree", "absurd degree");
-    for (size_t cut = 0; cut < len; cut += 5)
-        (void)read_mem(xml, cut, NULL);
+    /* Cut anywhere before the end of </Geometry>: a PARSE error. */
+    const size_t closed = (size_t)(strstr(xml, "</Geometry>") - xml) + strlen("</Geometry>");
+    for (size_t cut = 0; cut < closed; cut += 5)
+        CHECK_STATUS(read_mem(xml, cut, NULL), PROJCURVE_ERR_PARSE);
+    /* Two geometries, the file cut inside the second: an error naming the
+     * line where it opens, not a model with the first one only. */
+    char two[2 * sizeof xml];
+    snprintf(two, sizeof two, "%s%s", xml, xml);
+    const char *second = strstr(two + len, "<Geometry");
+    CHECK(second != NULL);
+    if (second != NULL) {
+        for (size_t cut = (size_t)(second - two) + 10; cut + 20 < strlen(two); cut += 11)
+            expect_error(two, cut, PROJCURVE_ERR_PARSE, "line 15: <Geometry> is not closed",
+                         "G+Smo truncated in its second geometry");
+    }
 }
 
 /* ---- files whose cost grows with references, built here ---------------- */

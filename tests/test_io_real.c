@@ -44,6 +44,26 @@ static projcurve_model *load(projcurve_context *ctx, const char *relative)
     return m;
 }
 
+/* Each real file is read once (reading the large ones is most of this
+ * test's time under the sanitizers) and kept here until the end. */
+static projcurve_model *loaded[sizeof files / sizeof *files];
+
+/* The model of a real file, read on first use; NULL if it failed. */
+static const projcurve_model *real(projcurve_context *ctx, const char *name)
+{
+    for (size_t f = 0; f < sizeof files / sizeof *files; ++f)
+        if (strcmp(files[f].name, name) == 0) {
+            if (loaded[f] == NULL) {
+                char rel[256];
+                snprintf(rel, sizeof rel, "data/real/%s", name);
+                loaded[f] = load(ctx, rel);
+            }
+            return loaded[f];
+        }
+    pc_test_fail_at(__FILE__, __LINE__, "%s is not in the table of real files", name);
+    return NULL;
+}
+
 /* Surface i has the given degrees, net and span counts. */
 static void check_shape(projcurve_context *ctx, const projcurve_model *m, size_t i, int du, int dv,
                         size_t nu, size_t nv, size_t su, size_t sv)
@@ -63,9 +83,7 @@ static void check_shape(projcurve_context *ctx, const projcurve_model *m, size_t
 static void check_counts(projcurve_context *ctx)
 {
     for (size_t f = 0; f < sizeof files / sizeof *files; ++f) {
-        char rel[256];
-        snprintf(rel, sizeof rel, "data/real/%s", files[f].name);
-        projcurve_model *m = load(ctx, rel);
+        const projcurve_model *m = real(ctx, files[f].name);
         if (m == NULL)
             continue;
         const size_t n = projcurve_model_surface_count(m);
@@ -84,41 +102,32 @@ static void check_counts(projcurve_context *ctx)
                             files[f].name, rational, files[f].rational);
         printf("%-26s %4zu surfaces (%zu rational), %4zu curves, %4zu skipped\n", files[f].name, n,
                rational, projcurve_model_curve_count(m), projcurve_model_skipped_count(m));
-        projcurve_model_destroy(m);
     }
 }
 
 /* Shapes stated in SOURCES.md for single-surface files and samples. */
 static void check_shapes(projcurve_context *ctx)
 {
-    projcurve_model *m = load(ctx, "data/real/bladex_upper.iges");
-    if (m) {
+    const projcurve_model *m = real(ctx, "bladex_upper.iges");
+    if (m)
         check_shape(ctx, m, 0, 3, 2, 526, 13, 523, 11);
-        projcurve_model_destroy(m);
-    }
-    m = load(ctx, "data/real/sunglasses_lens.igs");
+    m = real(ctx, "sunglasses_lens.igs");
     if (m) {
         for (size_t i = 0; i < projcurve_model_surface_count(m); ++i)
             check_shape(ctx, m, i, 3, 3, 16, 16, 13, 13);
-        projcurve_model_destroy(m);
     }
-    m = load(ctx, "data/real/test-joinsurf_04.stp");
+    m = real(ctx, "test-joinsurf_04.stp");
     if (m) {
         check_shape(ctx, m, 0, 3, 3, 88, 88, 85, 85);
         check_shape(ctx, m, 1, 3, 3, 88, 88, 85, 85);
-        projcurve_model_destroy(m);
     }
-    m = load(ctx, "data/real/horn.xml");
-    if (m) {
+    m = real(ctx, "horn.xml");
+    if (m)
         check_shape(ctx, m, 0, 3, 3, 24, 8, 21, 5);
-        projcurve_model_destroy(m);
-    }
-    m = load(ctx, "data/real/egg.xml");
-    if (m) {
+    m = real(ctx, "egg.xml");
+    if (m)
         check_shape(ctx, m, 0, 2, 3, 9, 20, 4, 17);
-        projcurve_model_destroy(m);
-    }
-    m = load(ctx, "data/real/teapot_newell_spd.txt");
+    m = real(ctx, "teapot_newell_spd.txt");
     if (m) {
         check_shape(ctx, m, 0, 3, 3, 4, 4, 1, 1);
         /* Rim patch 1 starts at vertex 1 = (1.4, 0, 2.4) (the file's first vertex). */
@@ -127,7 +136,6 @@ static void check_shapes(projcurve_context *ctx)
         CHECK_NEAR(p[0], 1.4, 1e-15);
         CHECK_NEAR(p[1], 0.0, 1e-15);
         CHECK_NEAR(p[2], 2.4, 1e-15);
-        projcurve_model_destroy(m);
     }
 }
 
@@ -136,7 +144,7 @@ static void check_shapes(projcurve_context *ctx)
  * direction tell whether STEP's u-outer point lists were stored u fastest. */
 static void check_linkrods_degrees(projcurve_context *ctx)
 {
-    projcurve_model *m = load(ctx, "data/real/linkrods.step");
+    const projcurve_model *m = real(ctx, "linkrods.step");
     if (m == NULL)
         return;
     int n610 = 0, n68 = 0, n63 = 0, n31 = 0, largest = 0;
@@ -155,7 +163,6 @@ static void check_linkrods_degrees(projcurve_context *ctx)
     }
     CHECK(n610 == 6 && n68 == 6 && n63 == 4 && n31 == 2);
     CHECK(largest > 0);
-    projcurve_model_destroy(m);
 }
 
 /* test_pipe_out_true.step: 4 rational (1,2) surfaces with 31 x 32 poles and
@@ -163,7 +170,7 @@ static void check_linkrods_degrees(projcurve_context *ctx)
  * 18x68 and 31x41, each twice. */
 static void check_nets(projcurve_context *ctx)
 {
-    projcurve_model *m = load(ctx, "data/real/test_pipe_out_true.step");
+    const projcurve_model *m = real(ctx, "test_pipe_out_true.step");
     if (m) {
         int rational12 = 0, bilinear = 0;
         for (size_t i = 0; i < projcurve_model_surface_count(m); ++i) {
@@ -175,9 +182,8 @@ static void check_nets(projcurve_context *ctx)
             bilinear += (a == 1 && b == 1 && nu == 31 && nv == 31);
         }
         CHECK(rational12 == 4 && bilinear == 2);
-        projcurve_model_destroy(m);
     }
-    m = load(ctx, "data/real/car_shell1.xml");
+    m = real(ctx, "car_shell1.xml");
     if (m) {
         static const size_t nets[4][2] = {{19, 22}, {28, 22}, {18, 68}, {31, 41}};
         int found[4] = {0, 0, 0, 0};
@@ -189,7 +195,6 @@ static void check_nets(projcurve_context *ctx)
                 found[k] += (nu == nets[k][0] && nv == nets[k][1]);
         }
         CHECK(found[0] == 2 && found[1] == 2 && found[2] == 2 && found[3] == 2);
-        projcurve_model_destroy(m);
     }
 }
 
@@ -203,9 +208,7 @@ typedef struct degree_tally {
 static void check_degrees(projcurve_context *ctx, const char *name, const degree_tally *want,
                           size_t n_want, int single_span)
 {
-    char rel[256];
-    snprintf(rel, sizeof rel, "data/real/%s", name);
-    projcurve_model *m = load(ctx, rel);
+    const projcurve_model *m = real(ctx, name);
     if (m == NULL)
         return;
     int got[16] = {0}, other = 0, multi_span = 0;
@@ -231,7 +234,6 @@ static void check_degrees(projcurve_context *ctx, const char *name, const degree
     if (single_span)
         CHECK(multi_span == 0);
     pc_test_checks += (int)n_want;
-    projcurve_model_destroy(m);
 }
 
 static void check_degree_tallies(projcurve_context *ctx)
@@ -244,17 +246,15 @@ static void check_degree_tallies(projcurve_context *ctx)
     check_degrees(ctx, "bearing.iges", bearing, sizeof bearing / sizeof *bearing, 1);
     /* test-joinsurf_01.stp: one 5 x 21 net with 2 x 18 spans, one 4 x 18
      * with 1 x 15; shroud_kaplan.xml: two 15 x 10 nets, 13 x 8 spans. */
-    projcurve_model *m = load(ctx, "data/real/test-joinsurf_01.stp");
+    const projcurve_model *m = real(ctx, "test-joinsurf_01.stp");
     if (m) {
         check_shape(ctx, m, 0, 3, 3, 4, 18, 1, 15);
         check_shape(ctx, m, 1, 3, 3, 5, 21, 2, 18);
-        projcurve_model_destroy(m);
     }
-    m = load(ctx, "data/real/shroud_kaplan.xml");
+    m = real(ctx, "shroud_kaplan.xml");
     if (m) {
         check_shape(ctx, m, 0, 2, 2, 15, 10, 13, 8);
         check_shape(ctx, m, 1, 2, 2, 15, 10, 13, 8);
-        projcurve_model_destroy(m);
     }
 }
 
@@ -291,6 +291,8 @@ int main(void)
     check_nets(ctx);
     check_degree_tallies(ctx);
     check_cases(ctx);
+    for (size_t f = 0; f < sizeof files / sizeof *files; ++f)
+        projcurve_model_destroy(loaded[f]);
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_real");
 }

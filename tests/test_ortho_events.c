@@ -44,14 +44,16 @@ typedef struct branch {
 } branch;
 
 /* Projects the path and copies every branch out (caller frees). */
-static size_t project(const projcurve_surface *surf, const path *w, double t0, double t1,
-                      branch *out, size_t cap)
+static size_t project_with_step(const projcurve_surface *surf, const path *w, double t0,
+                                double t1, double param_step, branch *out, size_t cap)
 {
     projcurve_curve *curve = NULL;
     CHECK_OK(projcurve_curve_create_callback(NULL, path_fn, (void *)w, t0, t1, &curve));
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, 1e-4));
+    if (param_step > 0.0)
+        CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_PARAM_STEP, param_step));
     projcurve_result *r = NULL;
     CHECK_OK(projcurve_project_orthogonal(NULL, surf, curve, o, &r));
     size_t nb = projcurve_result_branch_count(r);
@@ -71,6 +73,13 @@ static size_t project(const projcurve_surface *surf, const path *w, double t0, d
     projcurve_options_destroy(o);
     projcurve_curve_destroy(curve);
     return nb;
+}
+
+/* Arc-length steps (the default). */
+static size_t project(const projcurve_surface *surf, const path *w, double t0, double t1,
+                      branch *out, size_t cap)
+{
+    return project_with_step(surf, w, t0, t1, 0.0, out, cap);
 }
 
 static void free_branches(branch *b, size_t n)
@@ -275,6 +284,92 @@ static void test_torus_tube_centre(void)
     projcurve_surface_destroy(surf);
 }
 
+/* The torus as built (seam around the tube on the outer equator), the line
+ * P(t) = (10 + t, 0.2 t, 0.5 t) through the tube's centre at (10, 0, 0):
+ * three events at t = 0 at once. The near-side foot points (u at the seam
+ * u = 0 / 1 as well) swap through the centre of curvature, and the far
+ * side's outer foot point crosses the tube's seam v = 0 / 1 at the same t.
+ * This once gave a branch of 10^6 vertices at t = 0 and LIMIT_REACHED
+ * (before the corrector kept its confirming evaluation near centres). */
+static void test_torus_centre_on_seams(void)
+{
+    printf("torus, line through the tube's centre on the seams at t = 0\n");
+    pc_shape_surface data = pc_shape_torus(10.0, 3.0);
+    projcurve_surface *surf = pc_shape_surface_create(&data);
+    pc_shape_surface_free(&data);
+    const path line = {{10, 0, 0}, 0.0, {1, 0.2, 0.5}};
+    branch br[16];
+    const size_t nb = project(surf, &line, -1.0, 1.0, br, 16);
+    CHECK(nb == 7);
+    /* The near side's foot points sit on the u seam at the centre, so
+     * either reason names their ends truthfully; what must hold is that
+     * three branches end and three start at t = 0, each for one of them,
+     * and one runs through. */
+    int ended = 0, started = 0, whole = 0;
+    for (size_t b = 0; b < nb; ++b) {
+        CHECK(br[b].n < 1000);
+        ended += (br[b].end == PROJCURVE_END_CURVATURE_CENTRE ||
+                  br[b].end == PROJCURVE_END_BOUNDARY) &&
+                 fabs(br[b].range[1]) <= 1e-5;
+        started += (br[b].start == PROJCURVE_START_SILHOUETTE ||
+                    br[b].start == PROJCURVE_START_BOUNDARY) &&
+                   fabs(br[b].range[0]) <= 1e-5;
+        whole += br[b].start == PROJCURVE_START_CURVE_START && br[b].end == PROJCURVE_END_CURVE_END;
+    }
+    printf("  %d end and %d start at t = 0, %d whole\n", ended, started, whole);
+    CHECK(ended == 3 && started == 3 && whole == 1);
+    free_branches(br, nb);
+    projcurve_surface_destroy(surf);
+}
+
+/* Constant parameter steps far longer than the distance to a centre of
+ * curvature must not step over it: a line through the axis of a cylinder
+ * (R = 5) at t = 2 with steps of 0.7 (the third step would jump from 1.4 to
+ * 2.1), and a circle through the centre of a sphere (R = 10) at t = pi
+ * with steps of 0.3 (an umbilic: det K touches zero without a sign change,
+ * so only the Morse index shows the crossing). Every branch that reaches
+ * the centre ends there, none runs across. The ends are the last points
+ * with |det K| / (|Su||Sv|)^2 >= 1e-6 (ortho_centres.c): at the axis det K
+ * vanishes linearly (~2e-6 in t); at the umbilic quadratically, det ~
+ * (d / R)^2 with d = 5 |t - pi|, so >= 1e-6 needs |t - pi| >= 2e-3, and the
+ * bisection keeps a point within twice its last bracket: ~8e-3 at most. */
+static void expect_cut_at(const char *name, const branch *br, size_t nb, double t_centre,
+                          double t_tol)
+{
+    int ended = 0;
+    for (size_t b = 0; b < nb; ++b) {
+        CHECK(!(br[b].range[0] < t_centre - t_tol && br[b].range[1] > t_centre + t_tol));
+        ended += br[b].end == PROJCURVE_END_CURVATURE_CENTRE &&
+                 fabs(br[b].range[1] - t_centre) <= t_tol;
+    }
+    printf("  %s: %d branches end at the centre\n", name, ended);
+    CHECK(ended >= 1);
+}
+
+static void test_coarse_steps(void)
+{
+    printf("coarse constant steps across centres of curvature\n");
+    pc_shape_surface cyl_data = pc_shape_cylinder(5.0, 10.0);
+    projcurve_surface *cyl = pc_shape_surface_create(&cyl_data);
+    pc_shape_surface_free(&cyl_data);
+    const path line = {{-2, -1, 4}, 0.0, {1, 0.5, 0.5}};
+    branch br[8];
+    size_t nb = project_with_step(cyl, &line, 0.0, 4.0, 0.7, br, 8);
+    expect_cut_at("cylinder axis", br, nb, 2.0, 1e-5);
+    free_branches(br, nb);
+    projcurve_surface_destroy(cyl);
+
+    const double centre[3] = {0, 0, 0};
+    pc_shape_surface sph_data = pc_shape_sphere(centre, 10.0);
+    projcurve_surface *sph = pc_shape_surface_create(&sph_data);
+    pc_shape_surface_free(&sph_data);
+    const path circle = {{5, 0, 0}, 5.0, {0, 0, 0}};
+    nb = project_with_step(sph, &circle, 0.5 * M_PI, 1.4 * M_PI, 0.3, br, 8);
+    expect_cut_at("sphere centre", br, nb, M_PI, 1e-2);
+    free_branches(br, nb);
+    projcurve_surface_destroy(sph);
+}
+
 /* A closed surface given with clamped knots has a seam: u = 0 and u = 1 are
  * the same points of S but the boundary of the parameter domain. A foot
  * point moving across it is two branches: one leaves through the boundary
@@ -327,6 +422,8 @@ int main(void)
     test_births_at_centres();
     test_boundary_entry();
     test_torus_tube_centre();
+    test_torus_centre_on_seams();
+    test_coarse_steps();
     test_seam();
     return pc_test_finish("test_ortho_events");
 }

@@ -264,6 +264,41 @@ static void test_degree_fallback(void)
     projcurve_surface_destroy(s);
 }
 
+/* The sphere |x|^2 = 100 as an implicit surface. */
+static int sphere_fn(void *user, const double x[3], double *value, double grad[3],
+                     double hess[9])
+{
+    (void)user;
+    *value = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - 100.0;
+    for (int i = 0; i < 3; ++i) {
+        grad[i] = 2.0 * x[i];
+        for (int j = 0; j < 3; ++j)
+            hess[3 * i + j] = i == j ? 2.0 : 0.0;
+    }
+    return 0;
+}
+
+/* A result on an implicit surface has pieces but no (u, v) pcurve. */
+static void test_implicit_has_no_pcurve(projcurve_context *ctx)
+{
+    const double line[6] = {-5, 3, 20, 5, 3, 20};
+    projcurve_curve *curve = shape_bspline_curve(1, 2, line);
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_orthogonal_implicit(ctx, sphere_fn, NULL, 20.0, curve, NULL, &r));
+    size_t n_pieces = 0;
+    if (r != NULL && projcurve_result_branch_count(r) > 0)
+        CHECK_OK(projcurve_result_branch_info(ctx, r, 0, NULL, NULL, NULL, NULL, &n_pieces));
+    CHECK(n_pieces > 0);
+    if (n_pieces > 0) {
+        int degree = -7;
+        CHECK_STATUS(projcurve_result_piece_pcurve(ctx, r, 0, 0, &degree, NULL),
+                     PROJCURVE_ERR_INVALID_ARGUMENT);
+        CHECK(degree == -7);
+    }
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(curve);
+}
+
 /* The option's bad values and the accessor's bad arguments. */
 static void test_bad_input(void)
 {
@@ -296,13 +331,49 @@ static void test_bad_input(void)
     CHECK_OK(projcurve_result_piece_pcurve(ctx, r, 0, 0, &degree, NULL));
     CHECK(degree == 3);
     projcurve_result_destroy(r);
+    test_implicit_has_no_pcurve(ctx);
     projcurve_surface_destroy((projcurve_surface *)(void *)c.surface);
     projcurve_curve_destroy((projcurve_curve *)(void *)c.curve);
     projcurve_context_destroy(ctx);
 }
 
+/* The piece limit stops the cubic march with a readable prefix. */
+static void test_piece_limit(void)
+{
+    projcurve_surface *s = shape_example1_surface();
+    projcurve_curve *curve = shape_example1_curve();
+    const double dir[3] = {-1.0, 0.0, 0.0};
+    projcurve_options *o = NULL;
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    CHECK_OK(projcurve_options_create(ctx, &o));
+    CHECK_OK(projcurve_options_set_int(ctx, o, PROJCURVE_OPT_PCURVE_DEGREE, 3));
+    CHECK_OK(projcurve_options_set_int(ctx, o, PROJCURVE_OPT_MAX_PIECES, 3));
+    CHECK_OK(projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE, 1e-6 * s->size));
+    projcurve_result *r = NULL;
+    CHECK_STATUS(projcurve_project_directional(ctx, s, curve, dir, o, &r),
+                 PROJCURVE_ERR_LIMIT_REACHED);
+    size_t n_pieces = 0;
+    projcurve_branch_end end = PROJCURVE_END_CURVE_END;
+    if (r != NULL && projcurve_result_branch_count(r) == 1)
+        CHECK_OK(projcurve_result_branch_info(ctx, r, 0, NULL, NULL, &end, NULL, &n_pieces));
+    CHECK(n_pieces >= 1 && n_pieces <= 3);
+    CHECK(end == PROJCURVE_END_LIMIT);
+    for (size_t k = 0; k < n_pieces; ++k) {
+        int degree = 0;
+        CHECK_OK(projcurve_result_piece_pcurve(ctx, r, 0, k, &degree, NULL));
+        CHECK(degree == 3);
+    }
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_context_destroy(ctx);
+    projcurve_curve_destroy(curve);
+    projcurve_surface_destroy(s);
+}
+
 int main(void)
 {
+    test_piece_limit();
     test_bad_input();
     test_degree_fallback();
     test_shapes();

@@ -8,6 +8,11 @@
 #include "intersect/ray_patch.h"
 #include "projcurve.h"
 
+/* Stack storage of one call: hits, and clipping scratch in doubles (a
+ * bicubic patch needs 16 * (4 + 2 * 57) = 1,888). */
+#define PC_API_STACK_HITS 16
+#define PC_API_STACK_WORK 2048
+
 static projcurve_status check_point(projcurve_context *ctx, const double p[3], const char *what)
 {
     for (int k = 0; k < 3; ++k) {
@@ -45,7 +50,12 @@ PROJCURVE_API projcurve_status projcurve_surface_intersect_line(projcurve_contex
     if (!(pc_vec3_length_robust(d) > 0.0))
         return pc_fail(ctx, PROJCURVE_ERR_ZERO_DIRECTION, "dir = (%g, %g, %g) has length 0",
                        dir[0], dir[1], dir[2]);
-    pc_hit_list list = {0};
+    /* A call stands alone: stack buffers for the usual hit count and the
+     * clipping scratch of bicubic patches, the heap beyond. */
+    pc_hit items[PC_API_STACK_HITS];
+    double work[PC_API_STACK_WORK];
+    pc_hit_list list;
+    pc_hit_list_borrow(&list, items, PC_API_STACK_HITS, work, PC_API_STACK_WORK);
     st = pc_intersect_line(ctx, surface, vec3_load(origin), d, ray_only != 0, &list);
     if (st == PROJCURVE_OK) {
         for (size_t k = 0; k < list.count && k < capacity; ++k) {

@@ -43,33 +43,52 @@
 
 /* Scratch tables, `stride` doubles per row: pow_x and pow_1x hold x^a and
  * (1 - x)^a for a = 0..max(p, q) (degree d a), basis_u the B_i^p(x(s)) and
- * basis_v the B_j^q(y(s)); row holds one H_j(s) (4 doubles per coefficient). */
+ * basis_v the B_j^q(y(s)); row holds one H_j(s) (4 doubles per coefficient);
+ * binom is Pascal's triangle up to the composed degree, row m at
+ * m (m + 1) / 2. */
 typedef struct poly_scratch {
     size_t stride;
-    double *pow_x, *pow_1x, *basis_u, *basis_v, *row;
+    double *pow_x, *pow_1x, *basis_u, *basis_v, *row, *binom;
 } poly_scratch;
 
-/* Binomial coefficients C(n, 0..n) as doubles (exact for n <= 56). */
-static void binomials(int n, double *out)
+/* Size of Pascal's triangle with rows 0..n. */
+#define PC_POLY_TRIANGLE(n) (((n) + 1) * ((n) + 2) / 2)
+
+/* Rows 0..n of Pascal's triangle by additions: exact up to n = 56 (every
+ * entry below 2^53), within a few ulps beyond. No divisions. */
+static void pascal_triangle(int n, double *binom)
 {
-    out[0] = 1.0;
-    for (int k = 1; k <= n; ++k)
-        out[k] = out[k - 1] * (double)(n - k + 1) / (double)k;
+    binom[0] = 1.0;
+    for (int m = 1; m <= n; ++m) {
+        double *row = binom + m * (m + 1) / 2;
+        const double *prev = binom + (m - 1) * m / 2;
+        row[0] = row[m] = 1.0;
+        for (int k = 1; k < m; ++k)
+            row[k] = prev[k - 1] + prev[k];
+    }
+}
+
+static const double *binomials(const poly_scratch *w, int n)
+{
+    return w->binom + n * (n + 1) / 2;
 }
 
 /* Bernstein product of scalar polynomials a (degree m) and b (degree n)
  * into out (degree m + n; must not alias a or b). */
-static void bernstein_product(int m, const double *a, int n, const double *b, double *out)
+static void bernstein_product(const poly_scratch *w, int m, const double *a, int n,
+                              const double *b, double *out)
 {
-    double cm[PC_POLY_MAX_COEFS], cn[PC_POLY_MAX_COEFS], cmn[PC_POLY_MAX_COEFS];
-    binomials(m, cm);
-    binomials(n, cn);
-    binomials(m + n, cmn);
+    const double *cm = binomials(w, m), *cn = binomials(w, n), *cmn = binomials(w, m + n);
+    double sb[PC_POLY_MAX_COEFS];
+    for (int j = 0; j <= n; ++j)
+        sb[j] = cn[j] * b[j];
     for (int k = 0; k <= m + n; ++k)
         out[k] = 0.0;
-    for (int i = 0; i <= m; ++i)
+    for (int i = 0; i <= m; ++i) {
+        const double sa = cm[i] * a[i];
         for (int j = 0; j <= n; ++j)
-            out[i + j] += cm[i] * a[i] * cn[j] * b[j];
+            out[i + j] += sa * sb[j];
+    }
     for (int k = 0; k <= m + n; ++k)
         out[k] /= cmn[k];
 }
@@ -84,16 +103,15 @@ static void basis_of(int d, const double *x, int deg, poly_scratch *w, double *b
         one_minus[k] = 1.0 - x[k];
     w->pow_x[0] = w->pow_1x[0] = 1.0;
     for (int a = 1; a <= deg; ++a) {
-        bernstein_product(d * (a - 1), w->pow_x + (size_t)(a - 1) * st, d, x,
+        bernstein_product(w, d * (a - 1), w->pow_x + (size_t)(a - 1) * st, d, x,
                           w->pow_x + (size_t)a * st);
-        bernstein_product(d * (a - 1), w->pow_1x + (size_t)(a - 1) * st, d, one_minus,
+        bernstein_product(w, d * (a - 1), w->pow_1x + (size_t)(a - 1) * st, d, one_minus,
                           w->pow_1x + (size_t)a * st);
     }
-    double c[PC_POLY_MAX_ORDER];
-    binomials(deg, c);
+    const double *c = binomials(w, deg);
     for (int i = 0; i <= deg; ++i) {
         double *out = basis + (size_t)i * st;
-        bernstein_product(d * i, w->pow_x + (size_t)i * st, d * (deg - i),
+        bernstein_product(w, d * i, w->pow_x + (size_t)i * st, d * (deg - i),
                           w->pow_1x + (size_t)(deg - i) * st, out);
         for (int k = 0; k <= d * deg; ++k)
             out[k] *= c[i];
@@ -111,16 +129,14 @@ static void compose_poly_with(const pc_bezier_patch *patch, int d, const double 
         x[k] = (uv_ctrl[2 * k] - patch->u0) / du;
         y[k] = (uv_ctrl[2 * k + 1] - patch->v0) / dv;
     }
+    pascal_triangle(n, w->binom);
     basis_of(d, x, p, w, w->basis_u);
     basis_of(d, y, q, w, w->basis_v);
 
     /* C = sum_j H_j Bv_j with H_j = sum_i P_ij Bu_i: the product's binomial
      * weights split as C(nu, a) on H, C(nv, b) on Bv and 1 / C(n, k) at the
      * end, so the inner loop is plain multiply-adds. */
-    double cu[PC_POLY_MAX_COEFS], cv[PC_POLY_MAX_COEFS], cn[PC_POLY_MAX_COEFS];
-    binomials(nu, cu);
-    binomials(nv, cv);
-    binomials(n, cn);
+    const double *cu = binomials(w, nu), *cv = binomials(w, nv), *cn = binomials(w, n);
     for (int k = 0; k <= n; ++k)
         for (int c = 0; c < 4; ++c)
             cw_out[4 * k + c] = 0.0;
@@ -137,13 +153,20 @@ static void compose_poly_with(const pc_bezier_patch *patch, int d, const double 
                 w->row[4 * a + c] = cu[a] * h[c];
         }
         const double *bv = w->basis_v + (size_t)j * st;
-        for (int a = 0; a <= nu; ++a)
+        double sbv[PC_POLY_MAX_COEFS];
+        for (int b = 0; b <= nv; ++b)
+            sbv[b] = cv[b] * bv[b];
+        for (int a = 0; a <= nu; ++a) {
+            const double h0 = w->row[4 * a], h1 = w->row[4 * a + 1], h2 = w->row[4 * a + 2],
+                         h3 = w->row[4 * a + 3];
+            double *r = cw_out + 4 * a;
             for (int b = 0; b <= nv; ++b) {
-                const double m = cv[b] * bv[b];
-                double *r = cw_out + 4 * (a + b);
-                for (int c = 0; c < 4; ++c)
-                    r[c] += m * w->row[4 * a + c];
+                r[4 * b] += sbv[b] * h0;
+                r[4 * b + 1] += sbv[b] * h1;
+                r[4 * b + 2] += sbv[b] * h2;
+                r[4 * b + 3] += sbv[b] * h3;
             }
+        }
     }
     for (int k = 0; k <= n; ++k)
         for (int c = 0; c < 4; ++c)
@@ -159,7 +182,8 @@ static PC_POLY_NOINLINE void compose_poly_large(const pc_bezier_patch *patch, in
     double basis_u[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];
     double basis_v[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];
     double row[4 * PC_POLY_MAX_COEFS];
-    poly_scratch w = {PC_POLY_MAX_COEFS, pow_x, pow_1x, basis_u, basis_v, row};
+    double binom[PC_POLY_TRIANGLE(PC_POLY_MAX_COEFS - 1)];
+    poly_scratch w = {PC_POLY_MAX_COEFS, pow_x, pow_1x, basis_u, basis_v, row, binom};
     compose_poly_with(patch, d, uv_ctrl, cw_out, &w);
 }
 
@@ -179,7 +203,8 @@ int pc_compose_poly(const pc_bezier_patch *patch, int degree, const double *uv_c
     double basis_u[PC_POLY_SMALL_ORDER * PC_POLY_SMALL_COEFS];
     double basis_v[PC_POLY_SMALL_ORDER * PC_POLY_SMALL_COEFS];
     double row[4 * PC_POLY_SMALL_COEFS];
-    poly_scratch w = {PC_POLY_SMALL_COEFS, pow_x, pow_1x, basis_u, basis_v, row};
+    double binom[PC_POLY_TRIANGLE(2 * (PC_POLY_SMALL_COEFS - 1))];
+    poly_scratch w = {PC_POLY_SMALL_COEFS, pow_x, pow_1x, basis_u, basis_v, row, binom};
     compose_poly_with(patch, degree, uv_ctrl, cw_out, &w);
     return degree * (p + q);
 }

@@ -162,31 +162,39 @@ static PC_ALWAYS_INLINE void jacobian_bounds(const pc_frame_net *net, int m, int
 {
     const size_t row = (size_t)(m + 1);
     /* Largest squared first differences (s, t) and second differences (ss,
-     * st, tt) of the (X, Y) net, in one pass. */
+     * st, tt) of the (X, Y) net, each in its own branch-free loop. */
+    const double *q = net->q;
     double s1 = 0.0, t1 = 0.0, ss = 0.0, st = 0.0, tt = 0.0;
-    for (int j = 0; j <= n; ++j) {
-        for (int i = 0; i <= m; ++i) {
-            const double *a = net->q + 4 * ((size_t)j * row + (size_t)i);
-            if (i < m)
-                s1 = max2(s1, diff2(a + 4, a));
-            if (j < n)
-                t1 = max2(t1, diff2(a + 4 * row, a));
-            if (i + 1 < m) {
-                const double x = a[8] - 2.0 * a[4] + a[0], y = a[9] - 2.0 * a[5] + a[1];
-                ss = max2(ss, x * x + y * y);
-            }
-            if (j + 1 < n) {
-                const double *b = a + 4 * row, *c = a + 8 * row;
-                const double x = c[0] - 2.0 * b[0] + a[0], y = c[1] - 2.0 * b[1] + a[1];
-                tt = max2(tt, x * x + y * y);
-            }
-            if (i < m && j < n) {
-                const double *b = a + 4, *c = a + 4 * row, *d = a + 4 * row + 4;
-                const double x = d[0] - b[0] - c[0] + a[0], y = d[1] - b[1] - c[1] + a[1];
-                st = max2(st, x * x + y * y);
-            }
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i < m; ++i) {
+            const double *a = q + 4 * ((size_t)j * row + (size_t)i);
+            s1 = max2(s1, diff2(a + 4, a));
         }
-    }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i <= m; ++i) {
+            const double *a = q + 4 * ((size_t)j * row + (size_t)i);
+            t1 = max2(t1, diff2(a + 4 * row, a));
+        }
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i + 1 < m; ++i) {
+            const double *a = q + 4 * ((size_t)j * row + (size_t)i);
+            const double x = a[8] - 2.0 * a[4] + a[0], y = a[9] - 2.0 * a[5] + a[1];
+            ss = max2(ss, x * x + y * y);
+        }
+    for (int j = 0; j + 1 < n; ++j)
+        for (int i = 0; i <= m; ++i) {
+            const double *a = q + 4 * ((size_t)j * row + (size_t)i);
+            const double *b = a + 4 * row, *c = a + 8 * row;
+            const double x = c[0] - 2.0 * b[0] + a[0], y = c[1] - 2.0 * b[1] + a[1];
+            tt = max2(tt, x * x + y * y);
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < m; ++i) {
+            const double *a = q + 4 * ((size_t)j * row + (size_t)i);
+            const double *b = a + 4, *c = a + 4 * row, *d = a + 4 * row + 4;
+            const double x = d[0] - b[0] - c[0] + a[0], y = d[1] - b[1] - c[1] + a[1];
+            st = max2(st, x * x + y * y);
+        }
     /* Derivative bounds: |Q_s| <= m max|D_s Q|, |Q_ss| <= m (m - 1) max|D_ss Q|,
      * |Q_st| <= m n max|D_st Q|, ... (hull of the hodograph nets). */
     const double qss = m * (m - 1) * sqrt(ss), qst = m * n * sqrt(st), qtt = n * (n - 1) * sqrt(tt);

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "common/error.h"
 #include "intersect/ray_patch.h"
@@ -31,12 +32,16 @@ projcurve_status pc_hit_list_push(projcurve_context *ctx, pc_hit_list *list, pc_
         const size_t cap = list->capacity ? 2 * list->capacity : PC_HIT_LIST_MIN_CAPACITY;
         if (cap > SIZE_MAX / sizeof *list->items)
             return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "hit list of %zu hits is too large", cap);
-        pc_hit *items = realloc(list->items, cap * sizeof *items);
+        pc_hit *items = list->items_borrowed ? malloc(cap * sizeof *items)
+                                             : realloc(list->items, cap * sizeof *items);
         if (items == NULL)
             return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "cannot grow the hit list to %zu hits",
                            cap);
+        if (list->items_borrowed && list->count > 0)
+            memcpy(items, list->items, list->count * sizeof *items);
         list->items = items;
         list->capacity = cap;
+        list->items_borrowed = 0;
     }
     list->items[list->count++] = hit;
     return PROJCURVE_OK;
@@ -53,18 +58,29 @@ projcurve_status pc_hit_list_reserve_work(projcurve_context *ctx, pc_hit_list *l
     if (work == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY,
                        "cannot allocate %zu doubles of clipping scratch", n);
-    free(list->work);
+    if (!list->work_borrowed)
+        free(list->work);
     list->work = work;
     list->work_capacity = n;
+    list->work_borrowed = 0;
     return PROJCURVE_OK;
+}
+
+void pc_hit_list_borrow(pc_hit_list *list, pc_hit *items, size_t n_items, double *work,
+                        size_t n_work)
+{
+    *list = (pc_hit_list){items, 0, n_items, work, n_work, 1, 1};
 }
 
 void pc_hit_list_free(pc_hit_list *list)
 {
     if (list == NULL)
         return;
-    free(list->items);
-    free(list->work);
+    if (!list->items_borrowed)
+        free(list->items);
+    if (!list->work_borrowed)
+        free(list->work);
+    list->items_borrowed = list->work_borrowed = 0;
     list->items = NULL;
     list->work = NULL;
     list->count = list->capacity = list->work_capacity = 0;

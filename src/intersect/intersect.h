@@ -32,7 +32,17 @@ typedef struct pc_hit_list {
     size_t count, capacity;
     double *work;          /* clipping scratch, reused between calls */
     size_t work_capacity;  /* doubles */
+    /* Set by pc_hit_list_borrow: items / work are the caller's buffers,
+     * never freed or reallocated here (growth moves to the heap). */
+    int items_borrowed, work_borrowed;
 } pc_hit_list;
+
+/* Starts `list` on caller-owned buffers (e.g. on the stack) of the given
+ * capacities, so that a one-off query allocates nothing when they suffice.
+ * The buffers must outlive the list; pc_hit_list_free still releases what
+ * growth allocated. */
+void pc_hit_list_borrow(pc_hit_list *list, pc_hit *items, size_t n_items, double *work,
+                        size_t n_work);
 
 void pc_hit_list_free(pc_hit_list *list);
 

@@ -44,41 +44,49 @@ double pc_vec3_length_robust(pc_vec3 a)
     return big * vec3_norm(vec3_scale(a, 1.0 / big));
 }
 
-/* The third coordinate is computed only for nets that pass the cull. */
+static inline double min2(double a, double b) { return a < b ? a : b; }
+static inline double max2(double a, double b) { return a > b ? a : b; }
+
+/* The third coordinate is computed only for nets that pass the cull. The
+ * net can meet the line only if X and Y each take both signs (within the
+ * hit tolerance) over the control points: min (X - tol w) <= 0 <=
+ * max (X + tol w), the same for Y. */
 int pc_ray_frame_project(const pc_ray_frame *f, const pc_bezier_patch *patch, double *q,
                          double *w_max, double *w_min)
 {
     const size_t np = (size_t)(patch->deg_u + 1) * (size_t)(patch->deg_v + 1);
     const double tol = f->tol_residual;
-    int neg_x = 0, pos_x = 0, neg_y = 0, pos_y = 0;
+    const pc_vec3 e1 = f->e1, e2 = f->e2;
+    double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
     double w_top = 0.0, w_low = INFINITY;
     for (size_t k = 0; k < np; ++k) {
         const double *cw = patch->cw + 4 * k;
-        const pc_vec3 p = vec3(cw[0], cw[1], cw[2]);
         const double w = cw[3];
         double *out = q + 4 * k;
-        out[0] = vec3_dot(f->e1, p) - w * f->origin_e1;
-        out[1] = vec3_dot(f->e2, p) - w * f->origin_e2;
+        const double x = e1.x * cw[0] + e1.y * cw[1] + e1.z * cw[2] - w * f->origin_e1;
+        const double y = e2.x * cw[0] + e2.y * cw[1] + e2.z * cw[2] - w * f->origin_e2;
+        out[0] = x;
+        out[1] = y;
         out[3] = w;
-        w_top = w > w_top ? w : w_top;
-        w_low = w < w_low ? w : w_low;
+        w_top = max2(w_top, w);
+        w_low = min2(w_low, w);
         const double slack = tol * w;
-        neg_x |= out[0] <= slack;
-        pos_x |= out[0] >= -slack;
-        neg_y |= out[1] <= slack;
-        pos_y |= out[1] >= -slack;
+        x_lo = min2(x_lo, x - slack);
+        x_hi = max2(x_hi, x + slack);
+        y_lo = min2(y_lo, y - slack);
+        y_hi = max2(y_hi, y + slack);
     }
-    if (!(neg_x && pos_x && neg_y && pos_y))
+    if (!(x_lo <= 0.0 && x_hi >= 0.0 && y_lo <= 0.0 && y_hi >= 0.0))
         return 0;
-    int ahead = 0;
+    const pc_vec3 d = f->d;
+    double z_hi = -INFINITY;
     for (size_t k = 0; k < np; ++k) {
         const double *cw = patch->cw + 4 * k;
-        double *out = q + 4 * k;
-        out[2] = vec3_dot(f->d, vec3(cw[0], cw[1], cw[2])) - cw[3] * f->origin_d;
-        ahead |= out[2] >= -tol * cw[3];
+        const double z = d.x * cw[0] + d.y * cw[1] + d.z * cw[2] - cw[3] * f->origin_d;
+        q[4 * k + 2] = z;
+        z_hi = max2(z_hi, z + tol * cw[3]);
     }
     *w_max = w_top;
     *w_min = w_low;
-    return ahead || !f->ray_only;
+    return z_hi >= 0.0 || !f->ray_only;
 }
-

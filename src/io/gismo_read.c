@@ -58,23 +58,28 @@ static int attribute(const char *s, size_t tag, size_t to, const char *name, cha
     return 1;
 }
 
+/* Start of the first tag <name ...> in [from, to), or `to`. */
+static size_t opening(const char *s, size_t from, size_t to, const char *name)
+{
+    char open[32];
+    snprintf(open, sizeof open, "<%s", name);
+    for (size_t t = find(s, from, to, open); t < to; t = find(s, t + 1, to, open)) {
+        const char next = s[t + strlen(open)]; /* s[to] is the terminating NUL */
+        if (next == ' ' || next == '>' || next == '\t' || next == '\n' || next == '\r')
+            return t;
+    }
+    return to;
+}
+
 /* Content span of the first <name ...>...</name> in [from, to). */
 static int element(const char *s, size_t from, size_t to, const char *name, size_t *tag,
                    gismo_span *content)
 {
-    char open[32], close[32];
-    snprintf(open, sizeof open, "<%s", name);
+    char close[32];
     snprintf(close, sizeof close, "</%s>", name);
-    size_t t = from;
-    for (;;) {
-        t = find(s, t, to, open);
-        if (t >= to)
-            return 0;
-        const char next = s[t + strlen(open)];
-        if (next == ' ' || next == '>' || next == '\t' || next == '\n' || next == '\r')
-            break;
-        ++t;
-    }
+    const size_t t = opening(s, from, to, name);
+    if (t >= to)
+        return 0;
     const size_t gt = find(s, t, to, ">");
     if (gt >= to)
         return 0;
@@ -246,6 +251,15 @@ projcurve_status pc_gismo_read(projcurve_context *ctx, const char *data, size_t 
         }
         pos = body.end;
         pc_arena_release(&arena);
+    }
+    /* A <Geometry> left open (a truncated file) is an error, not the end. */
+    const size_t unclosed = st == PROJCURVE_OK ? opening(data, pos, len, "Geometry") : len;
+    if (unclosed < len) {
+        pc_text_seek(&cur, unclosed);
+        st = pc_fail(ctx, PROJCURVE_ERR_PARSE,
+                     "G+Smo XML line %zu: <Geometry> is not closed by </Geometry> (the file is "
+                     "truncated?)",
+                     cur.line);
     }
     if (st == PROJCURVE_OK && model->n_surfaces == 0 && model->n_curves == 0 &&
         model->n_skipped == 0)

@@ -7,7 +7,8 @@
  * the exact tangent is split at its middle (the halves go through the knot
  * line and Hausdorff control again), and the passes repeat until every joint
  * is within eps_T. A joint on a crease of S (the one-sided exact tangents
- * differ by more than eps_T) is a corner of the exact projection: left alone.
+ * differ by more than eps_T) is a corner of the exact projection: left alone,
+ * and so is a vertex next to a gap (no joint there).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -26,7 +27,7 @@ static void end_tangents(const pc_refiner *r, const pc_rvertex *a, const pc_rver
                          pc_vec3 *t0, pc_vec3 *t1)
 {
     *t0 = *t1 = vec3(0.0, 0.0, 0.0);
-    const pc_bezier_patch *patch = pc_refine_common_patch(r, a, b);
+    const pc_bezier_patch *patch = a->gap ? NULL : pc_refine_common_patch(r, a, b);
     if (patch == NULL)
         return;
     double cw[PC_PIECE_MAX_CW], ctrl[3 * (PC_PIECE_MAX_DEGREE + 1)], w[PC_PIECE_MAX_DEGREE + 1];
@@ -70,7 +71,8 @@ static size_t mark_joints(pc_refiner *r, const pc_vertex_list *list, unsigned ch
         pc_vec3 t0, t1;
         end_tangents(r, &v[j], &v[j + 1], &t0, &t1);
         split[j] = 0;
-        if (cos_angle(prev_t1, t0) < r->cos_eps_t) {
+        /* no joint across a gap */
+        if (!v[j - 1].gap && !v[j].gap && cos_angle(prev_t1, t0) < r->cos_eps_t) {
             const pc_vec3 exact_in = pc_refine_exact_tangent(r, &v[j], &v[j - 1]);
             const pc_vec3 exact = pc_refine_exact_tangent(r, &v[j], &v[j + 1]);
             /* a crease of S: the exact curve turns here itself */

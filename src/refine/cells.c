@@ -2,7 +2,9 @@
  * Knot lines of S (seed 000 s4): a composed piece is exact only inside one
  * Bezier patch, so every segment is split where its chord meets a knot line.
  * The split vertex is put on the projection curve and exactly on the knot
- * line, so the two sub-chords lie in closed patch boxes.
+ * line, so the two sub-chords lie in closed patch boxes. When the corrector
+ * cannot give it, there is no such vertex: never the chord's own crossing,
+ * which is off the projection (the caller makes the segment a gap).
  */
 #include <math.h>
 
@@ -10,7 +12,7 @@
 
 /* Bound of the bracketed root search for a knot-line crossing; the Illinois
  * variant of regula falsi converges superlinearly, so it is never reached in
- * practice, and the chord crossing is used when it is. */
+ * practice (when it is, there is no crossing: a gap, see refine.c). */
 #define PC_CROSSING_MAX_ITER 60
 
 /* Cells [lo, hi] of the breaks holding x: x in cell i iff
@@ -95,9 +97,16 @@ static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *
         if (!pc_refine_exact_point(r, &lo, &hi, t, &c))
             return 0;
         const double g = (coord == 0 ? c.u : c.v) - line;
-        if (fabs(g) <= r->min_move || fabs(hi.t - lo.t) <= r->min_dt) {
+        if (fabs(g) <= r->min_move) {
             *out = c;
             return 1;
+        }
+        /* The bracket has closed in t: a crossing within snap_far of the
+         * line is put on it; farther, the curve jumps across the line
+         * (the traced polyline stepped over a gap) and there is none. */
+        if (fabs(hi.t - lo.t) <= r->min_dt) {
+            *out = c;
+            return fabs(g) <= r->snap_far;
         }
         if ((g < 0.0) == (g_lo < 0.0)) {
             lo = c, g_lo = g;
@@ -114,34 +123,31 @@ static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *
     return 0;
 }
 
-void pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int exact,
-                             pc_rvertex *out)
+int pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
+                            pc_rvertex *out)
 {
     const pc_patch_grid *g = r->grid;
     size_t cell;
     double line_u = 0.0, line_v = 0.0;
     const int in_u = common_cell(g->breaks_u, g->spans_u, a->u, b->u, &cell, &line_u);
     const int in_v = common_cell(g->breaks_v, g->spans_v, a->v, b->v, &cell, &line_v);
-    /* The line met first along the chord; its chord parameter is in (0, 1). */
+    /* The line met first along the chord. */
     const double alpha_u = in_u ? INFINITY : (line_u - a->u) / (b->u - a->u);
     const double alpha_v = in_v ? INFINITY : (line_v - a->v) / (b->v - a->v);
     const int coord = alpha_u <= alpha_v ? 0 : 1;
-    const double alpha = coord == 0 ? alpha_u : alpha_v, line = coord == 0 ? line_u : line_v;
+    const double line = coord == 0 ? line_u : line_v;
 
     pc_rvertex c;
-    int ok = exact && exact_crossing(r, a, b, coord, line, &c);
+    if (!(fabs(b->t - a->t) > r->min_dt) || !exact_crossing(r, a, b, coord, line, &c))
+        return 0;
     /* The crossing must fall strictly between a and b in t, or the split
      * would not shorten anything. */
-    if (ok && !((c.t - a->t) * (b->t - c.t) > 0.0))
-        ok = 0;
-    if (!ok) {
-        c.t = a->t + alpha * (b->t - a->t);
-        c.u = a->u + alpha * (b->u - a->u);
-        c.v = a->v + alpha * (b->v - a->v);
-    }
-    /* Exactly on the knot line; and at a patch corner when it passes within
-     * rounding of one, or the next segment would be a sliver across the
-     * other line whose chord direction is noise. */
+    if (!((c.t - a->t) * (b->t - c.t) > 0.0))
+        return 0;
+    /* Exactly on the knot line (the move is below min_move); and at a patch
+     * corner when it passes within rounding of one, or the next segment
+     * would be a sliver across the other line whose chord direction is
+     * noise. */
     if (coord == 0) {
         c.u = line;
         c.v = snap_to_break(g->breaks_v, g->spans_v, c.v, r->snap);
@@ -151,4 +157,5 @@ void pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rverte
     }
     c.fixed = 1;
     *out = c;
+    return 1;
 }

@@ -25,11 +25,15 @@
 /* The parabolic refinement only matters near the bound: a largest sample
  * below this fraction of it cannot hide a peak above it. */
 #define PC_DEVIATION_REFINE_FROM 0.5
-/* Newton on the foot parameter: bound, and the step (in s) that counts as
- * converged — the distance is stationary at the foot, so an error e in s
- * changes it by O(e^2). */
+/* Newton on the foot parameter: bound, and when a step counts as converged.
+ * The distance is stationary at the foot: an error e in s changes it by
+ * about |C'|^2 e^2 / (2 d). A step whose image |C'| e is below
+ * PC_FOOT_MOVE_REL d therefore leaves the distance within
+ * PC_FOOT_MOVE_REL^2 / 2 = 5e-9 of itself (relative), and the absolute
+ * PC_FOOT_STEP_TOL covers d = 0. */
 #define PC_FOOT_MAX_ITER 12
 #define PC_FOOT_STEP_TOL 1e-10
+#define PC_FOOT_MOVE_REL 1e-4
 
 int pc_refine_compose(const pc_bezier_patch *patch, const pc_rvertex *a, const pc_rvertex *b,
                       double *cw)
@@ -109,7 +113,7 @@ double pc_piece_distance(int n, const double *cw, pc_vec3 x, double s0, double *
         next = next < 0.0 ? 0.0 : (next > 1.0 ? 1.0 : next);
         const double step = fabs(next - s);
         s = next;
-        if (step <= PC_FOOT_STEP_TOL)
+        if (step <= PC_FOOT_STEP_TOL || step * vec3_norm(c[1]) <= PC_FOOT_MOVE_REL * d)
             break;
     }
     pc_vec3 c[3];

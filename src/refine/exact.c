@@ -15,6 +15,21 @@
  * guess has left the branch: it is rejected. */
 #define PC_EXACT_MAX_JUMP 2.0
 
+/* q(t) by the cubic Hermite interpolant of the exact ends a and b with
+ * their derivatives q' (seed 000 s3.2 uses the same Taylor data to predict). */
+static void hermite_guess(const pc_rvertex *a, const pc_rvertex *b, double t, double uv[2])
+{
+    const pc_rvertex *lo = a->t <= b->t ? a : b, *hi = a->t <= b->t ? b : a;
+    const double span = hi->t - lo->t;
+    if (!(span > 0.0))
+        return;
+    const double s = (t - lo->t) / span, s2 = s * s, s3 = s2 * s;
+    const double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h10 = s3 - 2.0 * s2 + s;
+    const double h01 = -2.0 * s3 + 3.0 * s2, h11 = s3 - s2;
+    uv[0] = h00 * lo->u + h10 * span * lo->d[0] + h01 * hi->u + h11 * span * hi->d[0];
+    uv[1] = h00 * lo->v + h10 * span * lo->d[1] + h01 * hi->v + h11 * span * hi->d[1];
+}
+
 size_t pc_refine_guide_index(const pc_refiner *r, double t)
 {
     size_t lo = 0, hi = r->n_guide; /* answer in [lo, hi) */
@@ -42,6 +57,8 @@ int pc_refine_exact_point(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *
     const double span = hi->t - lo->t;
     const double w = span > 0.0 ? (t - lo->t) / span : 0.5;
     double uv[2] = {lo->u + w * (hi->u - lo->u), lo->v + w * (hi->v - lo->v)};
+    if (a->has_d && b->has_d) /* the Hermite guess over the segment (pc_rvertex) */
+        hermite_guess(a, b, t, uv);
     const double guess[2] = {uv[0], uv[1]};
     if (!r->proj->correct(r->proj, t, uv, NULL))
         return 0;
@@ -54,6 +71,8 @@ int pc_refine_exact_point(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *
     out->u = uv[0];
     out->v = uv[1];
     out->fixed = 0;
+    out->gap = 0;
+    out->has_d = 0;
     return 1;
 }
 

@@ -15,7 +15,9 @@
  *
  * Runs go from one fixed vertex (branch end or knot-line crossing of the
  * traced polyline) to the next; a candidate whose chord leaves the patch is
- * cut at the exact knot-line crossing. At a knot line S may have a crease
+ * cut at the exact knot-line crossing. Where the corrector cannot reach the
+ * exact curve down to the parameter floor, the run gets a gap (refine.c)
+ * up to the next exact point known. At a knot line S may have a crease
  * (C0 knots, e.g. every knot of a degree-1 surface): the exact projection
  * then has a corner there, so each piece is held to the exact tangent on its
  * own side, and that joint keeps the corner of the exact curve.
@@ -23,6 +25,12 @@
 #include <math.h>
 
 #include "refine/refine_internal.h"
+#include "trace/tracer.h"
+
+/* The tracer's fold threshold on the normalised det J: below it Dir is
+ * within ~1e-6 rad of the tangent plane, q' is not resolved, and a branch
+ * ends there (a silhouette). The refinement uses the same floor. */
+#define PC_REFINE_DET_FOLD PC_TRACE_DET_FOLD
 
 #define PC_MARCH_GROW_MAX 2.0     /* largest step growth after a success */
 #define PC_MARCH_SHRINK_MIN 0.1   /* largest step cut after a failure */
@@ -43,8 +51,14 @@
 static pc_vec3 derivative_tangent(pc_refiner *r, const pc_rvertex *v)
 {
     pc_proj_point pt;
-    if (!r->proj->derivatives(r->proj, v->t, v->u, v->v, &pt))
+    if (!r->proj->derivatives(r->proj, v->t, v->u, v->v, &pt) ||
+        fabs(pt.det) < PC_REFINE_DET_FOLD) {
+        r->last_singular = 1;
         return vec3(0.0, 0.0, 0.0);
+    }
+    r->last_has_d = 1;
+    r->last_d[0] = pt.du;
+    r->last_d[1] = pt.dv;
     pc_vec3 d[3];
     pc_nurbs_surface_eval(r->nurbs, v->u, v->v, 1, &r->hint_u, &r->hint_v, d);
     return vec3_add(vec3_scale(d[1], pt.du), vec3_scale(d[2], pt.dv));
@@ -52,6 +66,8 @@ static pc_vec3 derivative_tangent(pc_refiner *r, const pc_rvertex *v)
 
 pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other)
 {
+    r->last_singular = 0;
+    r->last_has_d = 0;
     if (!pc_refine_on_knot_line(r, v) || other->t == v->t)
         return derivative_tangent(r, v);
     double step = PC_SIDE_STEP_REL * r->t_range;
@@ -64,6 +80,14 @@ pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rve
     const pc_vec3 d = vec3_sub(pc_refine_surface_point(r, w.u, w.v),
                                pc_refine_surface_point(r, v->u, v->v));
     return vec3_scale(d, sign);
+}
+
+/* Stores in v the q' that the last pc_refine_exact_tangent got, if any. */
+static void keep_derivative(const pc_refiner *r, pc_rvertex *v)
+{
+    v->has_d = r->last_has_d;
+    v->d[0] = r->last_d[0];
+    v->d[1] = r->last_d[1];
 }
 
 /* Angle between a and b in radians; 0 when either has no direction. */
@@ -139,45 +163,81 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
 {
     pc_rvertex cur = *a;
     pc_vec3 t_cur = pc_refine_exact_tangent(r, &cur, b);
+    keep_derivative(r, &cur);
     double h = r->step > 0.0 ? r->step : b->t - a->t;
+    double h_ok = h; /* the last accepted step, to restart from after a gap */
     int rejections = 0;
     while (cur.t < b->t) {
         pc_rvertex cand;
-        if (!candidate(r, &cur, b, h, &cand)) {
+        int reached = candidate(r, &cur, b, h, &cand);
+        if (reached && pc_refine_common_patch(r, &cur, &cand) == NULL)
+            reached = pc_refine_knot_crossing(r, &cur, &cand, &cand);
+        if (!reached) {
             h *= 0.5; /* the corrector failed: come closer */
             if (++rejections < PC_MARCH_MAX_REJECTIONS && h > r->min_dt)
                 continue;
-            cand = next_known(r, &cur, b); /* the exact curve is out of reach here */
+            /* The exact curve is out of reach from cur: a gap up to the
+             * next exact point known (never a vertex off the projection). */
+            cand = next_known(r, &cur, b);
+            const projcurve_status st = pc_refine_output_gap(r, out, &cand, PC_GAP_FAILED);
+            if (st != PROJCURVE_OK)
+                return st;
+            t_cur = pc_refine_exact_tangent(r, &cand, b);
+            keep_derivative(r, &cand);
+            cur = cand;
+            h = h_ok;
+            rejections = 0;
+            continue;
         }
-        if (pc_refine_common_patch(r, &cur, &cand) == NULL)
-            pc_refine_knot_crossing(r, &cur, &cand, cand.t - cur.t > r->min_dt, &cand);
         const pc_bezier_patch *patch = pc_refine_common_patch(r, &cur, &cand);
         const double hh = cand.t - cur.t;
         double ratio_d = 0.0, ratio_a = 0.0, t_far;
         const pc_vec3 t_cand = pc_refine_exact_tangent(r, &cand, &cur);
-        if (patch != NULL) { /* the cheap angle test first */
-            double cw[PC_PIECE_MAX_CW];
-            const int n = pc_refine_compose(patch, &cur, &cand, cw);
-            ratio_a = end_angle(n, cw, t_cur, t_cand) / r->half_angle;
-            if (ratio_a <= 1.0)
-                ratio_d = pc_refine_deviation(r, n, cw, &cur, &cand, r->eps_d, &t_far) / r->eps_d;
-        }
+        const int singular = r->last_singular && cand.t < b->t;
+        keep_derivative(r, &cand);
+        double cw[PC_PIECE_MAX_CW];
+        const int n = pc_refine_compose(patch, &cur, &cand, cw);
+        ratio_a = end_angle(n, cw, t_cur, t_cand) / r->half_angle;
+        if (ratio_a <= 1.0) /* the cheap angle test first */
+            ratio_d = pc_refine_deviation(r, n, cw, &cur, &cand, r->eps_d, &t_far) / r->eps_d;
         const double f = step_factor(ratio_d, ratio_a);
-        const int ok = patch != NULL && ratio_d <= 1.0 && ratio_a <= 1.0;
+        const int ok = ratio_d <= 1.0 && ratio_a <= 1.0;
         if (!ok && hh > r->min_dt && ++rejections < PC_MARCH_MAX_REJECTIONS) {
             h = hh * f;
             continue;
         }
         /* Accepted, or forced (see PC_MARCH_MAX_REJECTIONS): then the angle
-         * pass has work to do. A step cut short by the run end or a knot
-         * line says nothing against the old h. */
-        if (!ok)
-            ++r->forced;
-        const projcurve_status st = patch != NULL ? pc_refine_output(r, out, &cand)
-                                                  : pc_refine_split(r, &cur, &cand, 0, out);
+         * pass has work to do; a piece whose deviation could not be measured
+         * (exact points inside out of reach) is a gap instead. A step cut
+         * short by the run end or a knot line says nothing against the old
+         * h. */
+        projcurve_status st;
+        if (!ok && (!isfinite(ratio_d) || !(hh > r->min_dt))) {
+            /* the floor: nothing shorter can be tried, and the piece cannot
+             * be measured or does not fit; a gap up to the next exact point */
+            cand = next_known(r, &cur, b);
+            st = pc_refine_output_gap(r, out, &cand, PC_GAP_FAILED);
+        } else {
+            r->forced += !ok;
+            st = pc_refine_output(r, out, &cand);
+            if (st == PROJCURVE_OK && singular) {
+                /* a silhouette inside the run: the branch ends here */
+                cand = next_known(r, &cand, b);
+                st = pc_refine_output_gap(r, out, &cand, PC_GAP_SILHOUETTE);
+            }
+        }
         if (st != PROJCURVE_OK)
             return st;
+        if (out->items[out->count - 2].gap) { /* restart after the gap */
+            t_cur = pc_refine_exact_tangent(r, &cand, b);
+            keep_derivative(r, &cand);
+            cur = cand;
+            h = h_ok;
+            rejections = 0;
+            continue;
+        }
         h = hh * f > h || hh >= h ? hh * f : h;
+        h_ok = h;
         /* the start tangent of the next piece: the other side at a knot line */
         t_cur = cand.t < b->t && pc_refine_on_knot_line(r, &cand)
                     ? pc_refine_exact_tangent(r, &cand, b)

@@ -173,14 +173,24 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
     int rejections = 0, invalid = 0;
     while (m.cur.t < b->t) {
         pc_rvertex cand;
-        if (!candidate(r, &m.cur, b, h, &cand)) {
+        int reached = candidate(r, &m.cur, b, h, &cand);
+        if (reached && pc_refine_common_patch(r, &m.cur, &cand) == NULL)
+            reached = pc_refine_knot_crossing(r, &m.cur, &cand, &cand);
+        if (!reached) {
             h *= 0.5; /* the corrector failed: come closer */
             if (++rejections < PC_CUBIC_MAX_REJECTIONS && h > r->min_dt)
                 continue;
-            cand = next_known(r, &m.cur, b); /* the exact curve is out of reach here */
+            /* the exact curve is out of reach here: a gap (refine.c) up to
+             * the next exact point known, never a vertex off the projection */
+            cand = next_known(r, &m.cur, b);
+            cand.in_cubic = 0;
+            const projcurve_status st = pc_refine_output_gap(r, out, &cand, PC_GAP_FAILED);
+            if (st != PROJCURVE_OK)
+                return st;
+            advance(&m, &out->items[out->count - 1], vec3(0.0, 0.0, 0.0));
+            rejections = invalid = 0;
+            continue;
         }
-        if (pc_refine_common_patch(r, &m.cur, &cand) == NULL)
-            pc_refine_knot_crossing(r, &m.cur, &cand, cand.t - m.cur.t > r->min_dt, &cand);
         cand.in_cubic = 0;
         const pc_bezier_patch *patch = pc_refine_common_patch(r, &m.cur, &cand);
         const double hh = cand.t - m.cur.t;

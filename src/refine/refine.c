@@ -40,6 +40,11 @@
 /* Knot-line crossings this close to a patch corner (fraction of the domain)
  * are put on the corner: the move is far below any eps_D. */
 #define PC_REFINE_SNAP_REL 1e-11
+/* A knot-line crossing bracketed down to min_dt that is still this far from
+ * its line (fraction of the domain) is no crossing: the curve jumps there.
+ * Closer, it is put on the line (a move far below any eps_D; it allows for
+ * the square-root speed of q near a fold). */
+#define PC_REFINE_SNAP_FAR_REL 1e-9
 #define PC_RADIANS_PER_DEGREE 0.017453292519943295769
 
 static projcurve_status check_options(projcurve_context *ctx, const struct projcurve_options *o)
@@ -118,6 +123,9 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
     if (st != PROJCURVE_OK)
         return st;
     l->crossed.items[l->crossed.count - 1].fixed = 1;
+    for (size_t k = 0; k + 1 < l->crossed.count; ++k) /* a gap is a run of its own */
+        if (l->crossed.items[k].gap)
+            l->crossed.items[k].fixed = l->crossed.items[k + 1].fixed = 1;
     /* 2. and 3. with the crossings as the corrector's guide */
     r->guide = l->crossed.items;
     r->n_guide = l->crossed.count;
@@ -129,8 +137,11 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
         if (!l->crossed.items[k].fixed)
             continue;
         const pc_rvertex *from = &l->crossed.items[start], *to = &l->crossed.items[k];
-        st = r->pcurve_degree == 3 ? pc_refine_march_cubic(r, from, to, &l->out)
-                                   : pc_refine_march(r, from, to, &l->out);
+        if (from->gap) /* out's last vertex is that gap vertex */
+            st = pc_refine_output(r, &l->out, to);
+        else
+            st = r->pcurve_degree == 3 ? pc_refine_march_cubic(r, from, to, &l->out)
+                                       : pc_refine_march(r, from, to, &l->out);
         start = k;
     }
     /* (the angle pass splits straight segments; cubic pieces are G1) */
@@ -139,71 +150,127 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
     return st;
 }
 
-/* Composes the segment a-b (one piece, or one per patch when it still crosses
- * knot lines, which the split loop's bounds can leave in pathological cases)
- * and appends it to the branch. */
-static projcurve_status add_pieces(pc_refiner *r, pc_branch *b, const pc_rvertex *a,
-                                   const pc_rvertex *end, int rational)
+/* Composes the segment a-b (in one patch) and appends it to the branch. */
+static projcurve_status add_piece(pc_refiner *r, pc_branch *b, const pc_bezier_patch *patch,
+                                  const pc_rvertex *a, const pc_rvertex *e)
 {
-    const size_t bound = r->grid->spans_u + r->grid->spans_v + 2;
-    pc_rvertex cur = *a;
-    for (size_t iter = 0; iter < bound; ++iter) {
-        pc_rvertex next = *end;
-        const pc_bezier_patch *patch = pc_refine_common_patch(r, &cur, &next);
-        if (patch == NULL) {
-            pc_refine_knot_crossing(r, &cur, end, 0, &next);
-            patch = pc_refine_common_patch(r, &cur, &next);
-            if (patch == NULL)
-                break;
-        }
-        double cw[PC_PIECE_MAX_CW], ctrl[3 * (PC_PIECE_MAX_DEGREE + 1)];
-        double weights[PC_PIECE_MAX_DEGREE + 1];
-        const int n = pc_refine_compose(patch, &cur, &next, cw);
-        if (rational) {
-            pc_compose_to_cartesian(n, cw, ctrl, weights);
-        } else { /* weights are 1 up to rounding: keep the polynomial form exact */
-            for (int k = 0; k <= n; ++k)
-                for (int c = 0; c < 3; ++c)
-                    ctrl[3 * k + c] = cw[4 * k + c];
-        }
-        const double uv[4] = {cur.u, cur.v, next.u, next.v};
-        const projcurve_status st = pc_branch_add_piece(r->ctx, b, n, cur.t, next.t, uv, ctrl,
-                                                        rational ? weights : NULL);
-        if (st != PROJCURVE_OK || (next.t == end->t && next.u == end->u && next.v == end->v))
-            return st;
-        cur = next;
+    double cw[PC_PIECE_MAX_CW], ctrl[3 * (PC_PIECE_MAX_DEGREE + 1)];
+    double weights[PC_PIECE_MAX_DEGREE + 1];
+    const int n = pc_refine_compose(patch, a, e, cw);
+    const int rational = r->nurbs->rational;
+    if (rational) {
+        pc_compose_to_cartesian(n, cw, ctrl, weights);
+    } else { /* weights are 1 up to rounding: keep the polynomial form exact */
+        for (int k = 0; k <= n; ++k)
+            for (int c = 0; c < 3; ++c)
+                ctrl[3 * k + c] = cw[4 * k + c];
     }
-    return pc_fail(r->ctx, PROJCURVE_ERR_SINGULAR,
-                   "segment (%g, %g)-(%g, %g) could not be split at the knot lines", a->u, a->v,
-                   end->u, end->v);
+    const double uv[4] = {a->u, a->v, e->u, e->v};
+    return pc_branch_add_piece(r->ctx, b, n, a->t, e->t, uv, ctrl, rational ? weights : NULL);
 }
 
-/* Step 4, and the refined polyline as the branch's points. */
-static projcurve_status store_branch(pc_refiner *r, pc_branch *b, const pc_vertex_list *out,
-                                     int descending)
+/* 1 when the segment from vertex k to k + 1 is composed: no gap, one patch
+ * (every stage leaves a segment in one patch or makes it a gap). */
+static int segment_kept(const pc_refiner *r, const pc_vertex_list *out, size_t k)
 {
-    const int rational = r->nurbs->rational;
-    const size_t n = out->count;
-    for (size_t k = 0; k + 1 < n; ++k) {
-        const pc_rvertex *a = &out->items[descending ? n - 1 - k : k];
-        const pc_rvertex *e = &out->items[descending ? n - 2 - k : k + 1];
+    return !out->items[k].gap &&
+           pc_refine_common_patch(r, &out->items[k], &out->items[k + 1]) != NULL;
+}
+
+/* Step 4 for the vertices [lo, hi] of out (ascending, every segment kept):
+ * pieces and polyline of branch b, in the branch's own direction. */
+static projcurve_status store_run(pc_refiner *r, pc_branch *b, const pc_vertex_list *out,
+                                  size_t lo, size_t hi, int descending)
+{
+    const size_t n = hi - lo + 1;
+    const pc_rvertex *v = out->items + lo;
+    projcurve_status st = PROJCURVE_OK;
+    for (size_t k = 0; k + 1 < n && st == PROJCURVE_OK; ++k) {
+        const pc_rvertex *a = &v[descending ? n - 1 - k : k];
+        const pc_rvertex *e = &v[descending ? n - 2 - k : k + 1];
         int done = 0;
-        projcurve_status st = PROJCURVE_OK;
         if (r->pcurve_degree == 3) /* the later vertex holds the segment's pcurve */
-            st = pc_refine_add_cubic_piece(r, b, a, e, descending ? a : e, rational, &done);
+            st = pc_refine_add_cubic_piece(r, b, a, e, descending ? a : e, r->nurbs->rational,
+                                           &done);
         if (st == PROJCURVE_OK && !done)
-            st = add_pieces(r, b, a, e, rational);
-        if (st != PROJCURVE_OK)
-            return st;
+            st = add_piece(r, b, pc_refine_common_patch(r, a, e), a, e);
     }
     b->n_points = 0;
-    for (size_t k = 0; k < n; ++k) {
-        const pc_rvertex *v = &out->items[descending ? n - 1 - k : k];
-        const double point[3] = {v->t, v->u, v->v};
-        const projcurve_status st = pc_branch_add_point(r->ctx, b, 3, point);
+    for (size_t k = 0; k < n && st == PROJCURVE_OK; ++k) {
+        const pc_rvertex *x = &v[descending ? n - 1 - k : k];
+        const double point[3] = {x->t, x->u, x->v};
+        st = pc_branch_add_point(r->ctx, b, 3, point);
+    }
+    return st;
+}
+
+/* The next run of kept segments in branch order, [*lo, *hi] ascending, at
+ * or after *pos (a position in branch order, advanced past the run).
+ * Returns 0 when none is left. Single vertices between gaps are no run. */
+static int next_run(const pc_refiner *r, const pc_vertex_list *out, int descending,
+                    size_t *pos, size_t *lo, size_t *hi, int *silhouette)
+{
+    const size_t n = out->count;
+    *silhouette = 0;
+    while (*pos + 1 < n) {
+        /* ascending index of the segment at branch position *pos */
+        const size_t k = descending ? n - 2 - *pos : *pos;
+        if (!segment_kept(r, out, k)) {
+            *silhouette |= out->items[k].gap == PC_GAP_SILHOUETTE;
+            ++*pos;
+            continue;
+        }
+        size_t first = k, last = k + 1; /* grow the run in branch order */
+        while (*pos + 1 < n) {
+            ++*pos;
+            const size_t j = descending ? n - 2 - *pos : *pos;
+            if (*pos + 1 >= n || !segment_kept(r, out, j))
+                break;
+            if (descending)
+                first = j;
+            else
+                last = j + 1;
+        }
+        *lo = first;
+        *hi = last;
+        return 1;
+    }
+    return 0;
+}
+
+/* Step 4, and the refined polyline as the branch's points. Where out has
+ * gaps, the branch is split: each run of composed segments becomes a
+ * branch (the first keeps index i, the others are appended to res); the
+ * ends at a gap say END_FAILED and START_JUMP (born in mid-curve), or
+ * END_SILHOUETTE and START_SILHOUETTE at a silhouette. *pieces gets the
+ * pieces made. */
+static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_t i,
+                                     const pc_vertex_list *out, int descending, size_t *pieces)
+{
+    const projcurve_branch_end last_end = res->branches[i].end;
+    size_t pos = 0, lo, hi, runs = 0, index = i;
+    *pieces = 0;
+    int silhouette = 0; /* the kind of the gaps before the current run */
+    while (next_run(r, out, descending, &pos, &lo, &hi, &silhouette)) {
+        pc_branch *b = &res->branches[index];
+        if (runs > 0) {
+            projcurve_status st = pc_result_add_branch(r->ctx, res, &b);
+            if (st != PROJCURVE_OK)
+                return st;
+            res->branches[index].end =
+                silhouette ? PROJCURVE_END_SILHOUETTE : PROJCURVE_END_FAILED;
+            b->start = silhouette ? PROJCURVE_START_SILHOUETTE : PROJCURVE_START_JUMP;
+            index = res->n_branches - 1;
+        }
+        b->end = last_end;
+        const projcurve_status st = store_run(r, b, out, lo, hi, descending);
+        *pieces += b->n_pieces;
         if (st != PROJCURVE_OK)
             return st;
+        ++runs;
     }
+    if (runs == 0) /* nothing could be composed: the traced polyline stays */
+        res->branches[i].end = PROJCURVE_END_FAILED;
     return PROJCURVE_OK;
 }
 
@@ -222,6 +289,7 @@ static void refiner_init(pc_refiner *r, projcurve_context *ctx, const pc_project
     r->half_angle = 0.5 * PC_REFINE_ANGLE_SAFETY * o->tol_angle_deg * PC_RADIANS_PER_DEGREE;
     r->min_move = PC_REFINE_MIN_MOVE_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
     r->snap = PC_REFINE_SNAP_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
+    r->snap_far = PC_REFINE_SNAP_FAR_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
     /* cubic pcurves only where the composed degree fits (projcurve.h) */
     const int sum = s->nurbs.deg_u + s->nurbs.deg_v;
     r->pcurve_degree = o->pcurve_degree == 3 && 3 * sum <= 2 * PROJCURVE_MAX_DEGREE ? 3 : 1;
@@ -258,7 +326,8 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
     refine_lists lists = {{0}, {0}, {0}, {0}};
     const size_t max_pieces = (size_t)opts->max_pieces;
     size_t pieces = 0;
-    for (size_t i = 0; i < res->n_branches && st == PROJCURVE_OK; ++i) {
+    const size_t n_traced = res->n_branches; /* branches split at gaps are appended */
+    for (size_t i = 0; i < n_traced && st == PROJCURVE_OK; ++i) {
         pc_branch *b = &res->branches[i];
         pc_branch_clear_pieces(b);
         if (r.limit_hit) {
@@ -274,10 +343,11 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
             b->end = PROJCURVE_END_LIMIT;
             st = PROJCURVE_OK;
         }
+        size_t made = 0;
         if (st == PROJCURVE_OK)
-            st = store_branch(&r, b, &lists.out, descending);
-        pieces += b->n_pieces;
-        if (pieces >= max_pieces && i + 1 < res->n_branches)
+            st = store_branch(&r, res, i, &lists.out, descending, &made);
+        pieces += made;
+        if (pieces >= max_pieces && i + 1 < n_traced)
             r.limit_hit = 1;
     }
     refine_lists_free(&lists);

@@ -28,10 +28,15 @@
 
 /* A vertex of the parameter-space polyline: curve parameter t and (u, v).
  * `fixed` marks the vertices every output keeps: branch ends and the
- * knot-line crossings of the traced polyline (the march runs between them). */
+ * knot-line crossings of the traced polyline (the march runs between them).
+ * `gap` marks a vertex after which the exact projection could not be
+ * followed (the corrector fails all the way down to the parameter floor,
+ * e.g. where the traced polyline jumped across a fold): the segment to the
+ * next vertex is not composed and the branch is split there (refine.c). */
 typedef struct pc_rvertex {
     double t, u, v;
     int fixed;
+    int gap; /* 0, or a pc_gap_kind */
     /* Cubic pcurves (march_cubic.c): when in_cubic is 1, the segment ending
      * here is the cubic Hermite from the previous vertex with the (u, v)
      * derivatives in_d0 there and in_d1 here (q' per unit t, one-sided at
@@ -39,7 +44,18 @@ typedef struct pc_rvertex {
      * a branch's first sets it. */
     int in_cubic;
     double in_d0[2], in_d1[2];
+    /* q'(t) at this vertex when has_d (from the projector's derivatives,
+     * not at knot lines): the corrector's guesses between two such
+     * vertices are then cubic Hermite, O(h^4) off the curve instead of the
+     * chord's O(h^2), and Newton converges in one step (exact.c). */
+    int has_d;
+    double d[2];
 } pc_rvertex;
+
+/* Why a segment is a gap: the corrector failed, or the vertex before it is
+ * on a silhouette (|det J| below the tracer's fold threshold: the exact
+ * tangent is undefined there and the branch ends, as the tracer ends it). */
+typedef enum pc_gap_kind { PC_GAP_FAILED = 1, PC_GAP_SILHOUETTE = 2 } pc_gap_kind;
 
 typedef struct pc_vertex_list {
     pc_rvertex *items;
@@ -61,12 +77,19 @@ typedef struct pc_refiner {
     double t_range;      /* the branch's parameter range */
     double min_move;     /* uv step below which a knot crossing is converged */
     double snap;         /* a crossing this close (u, v) to a patch corner is put on it */
+    double snap_far;     /* a crossing bracketed to min_dt this close to its knot line is
+                            put on it; farther, the curve jumps across the line */
     /* The traced polyline (ascending t, knot crossings included): bracketing
      * exact points give the corrector its initial guesses. */
     const pc_rvertex *guide;
     size_t n_guide;
     size_t max_vertices; /* output vertices allowed for this branch (pieces + 1) */
     int limit_hit;       /* set when max_vertices stopped the refinement */
+    size_t gaps;         /* gap vertices made (see pc_rvertex) */
+    int last_singular;   /* the last pc_refine_exact_tangent was at a vertex
+                            with |det J| below the fold threshold */
+    int last_has_d;      /* and it gave q' (last_d) from the projector */
+    double last_d[2];
     size_t hint_u, hint_v;
     int pcurve_degree;   /* 1 (straight segments) or 3 (cubic Hermite) */
 } pc_refiner;
@@ -79,6 +102,9 @@ void pc_vertex_list_free(pc_vertex_list *list);
 /* Appends v to the output list unless the vertex budget is spent (then sets
  * r->limit_hit and returns LIMIT_REACHED). */
 projcurve_status pc_refine_output(pc_refiner *r, pc_vertex_list *out, const pc_rvertex *v);
+/* Marks the last output vertex as a gap of the given kind, then appends v. */
+projcurve_status pc_refine_output_gap(pc_refiner *r, pc_vertex_list *out, const pc_rvertex *v,
+                                      pc_gap_kind kind);
 
 /* exact.c: the exact projection point at t between the exact vertices a and b
  * (t between a.t and b.t): the corrector started from the interpolation of
@@ -97,11 +123,12 @@ const pc_bezier_patch *pc_refine_common_patch(const pc_refiner *r, const pc_rver
 /* 1 when v lies on an inner knot line (then S may have a crease there). */
 int pc_refine_on_knot_line(const pc_refiner *r, const pc_rvertex *v);
 /* For a segment with no common patch: the vertex where the projection meets
- * the first knot line crossed by the chord a-b, lying exactly on that line.
- * When the corrector cannot give it (or `exact` is 0), the chord's own
- * crossing with t interpolated. Always strictly between a and b. */
-void pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int exact,
-                             pc_rvertex *out);
+ * the first knot line crossed by the chord a-b, lying exactly on that line
+ * and strictly between a and b in t. Returns 0 (out untouched) when the
+ * corrector cannot give it or the segment is below min_dt: then there is no
+ * vertex on the projection to offer, and the caller makes a gap. */
+int pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
+                            pc_rvertex *out);
 
 /* deviation.c: Rational Bezier curve of degree n (homogeneous cw): point and
  * first two derivatives at s (n >= 2). */
@@ -125,7 +152,9 @@ projcurve_status pc_refine_split(pc_refiner *r, const pc_rvertex *a, const pc_rv
 /* march.c: tangent of the exact projection at v along increasing t, on the
  * side of v towards `other` (an exact point on the same run): at a knot line
  * of S, where the surface may have a crease, the one-sided tangent by a
- * short difference; elsewhere q' from the projector. Zero if unavailable. */
+ * short difference; elsewhere q' from the projector. Zero if unavailable,
+ * and at a near-singular vertex (then r->last_singular is set): there the
+ * direction of q' = J^-1 (...) is not resolved and no angle is bound. */
 pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other);
 
 /* march.c: appends the vertices after a up to and including b (ascending t,

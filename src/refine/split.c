@@ -2,7 +2,8 @@
  * The subdivision loop shared by every stage: a segment is split at the
  * first knot line its chord crosses (so that each piece lies in one patch),
  * then at the farthest point of the exact projection while its Hausdorff
- * distance exceeds eps_D. Pending right ends wait on an explicit stack, so
+ * distance exceeds eps_D; where no vertex on the projection can be found,
+ * the segment becomes a gap. Pending right ends wait on an explicit stack, so
  * the vertices come out in order and the output can stop at the piece
  * budget with a valid prefix.
  */
@@ -15,23 +16,23 @@
  * 0.8^200 ~ 1e-19 of the first: never the binding limit before min_dt. */
 #define PC_SPLIT_STACK 200
 #define PC_SPLIT_MIN_FRACTION 0.2
-/* Past this depth the knot-line crossings use the chord's own crossing,
- * which always makes progress. */
+/* Past this depth a segment that still crosses a knot line is a gap: the
+ * crossings found so far did not converge to one (never seen on a curve the
+ * corrector can follow). */
 #define PC_SPLIT_EXACT_DEPTH 100
 
-typedef enum split_action { SPLIT_ACCEPT, SPLIT_AT } split_action;
+typedef enum split_action { SPLIT_ACCEPT, SPLIT_AT, SPLIT_GAP } split_action;
 
-/* Decides what to do with the segment a-b; on SPLIT_AT, *c is the vertex. */
+/* Decides what to do with the segment a-b; on SPLIT_AT, *c is the vertex;
+ * SPLIT_GAP when no vertex on the projection can be found inside. */
 static split_action decide(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
                            int hausdorff, size_t depth, pc_rvertex *c)
 {
     const double dt = fabs(b->t - a->t);
     const pc_bezier_patch *patch = pc_refine_common_patch(r, a, b);
-    if (patch == NULL) {
-        const int exact = depth < PC_SPLIT_EXACT_DEPTH && dt > r->min_dt;
-        pc_refine_knot_crossing(r, a, b, exact, c);
-        return SPLIT_AT;
-    }
+    if (patch == NULL)
+        return depth < PC_SPLIT_EXACT_DEPTH && pc_refine_knot_crossing(r, a, b, c) ? SPLIT_AT
+                                                                                   : SPLIT_GAP;
     if (!hausdorff || dt <= r->min_dt || depth + 1 >= PC_SPLIT_STACK)
         return SPLIT_ACCEPT;
     double t_far, cw[PC_PIECE_MAX_CW];
@@ -46,9 +47,8 @@ static split_action decide(pc_refiner *r, const pc_rvertex *a, const pc_rvertex 
     double t = t_far;
     if ((t - lo) * (t - hi) > 0.0)
         t = fabs(t - lo) < fabs(t - hi) ? lo : hi;
-    if (!pc_refine_exact_point(r, a, b, t, c))
-        return SPLIT_ACCEPT; /* the corrector fails here: nothing better to offer */
-    return SPLIT_AT;
+    /* the corrector fails inside: the exact curve is out of reach here */
+    return pc_refine_exact_point(r, a, b, t, c) ? SPLIT_AT : SPLIT_GAP;
 }
 
 projcurve_status pc_refine_split(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
@@ -61,11 +61,14 @@ projcurve_status pc_refine_split(pc_refiner *r, const pc_rvertex *a, const pc_rv
     while (top > 0) {
         pc_rvertex c;
         const pc_rvertex next = stack[top - 1];
-        if (top < PC_SPLIT_STACK && decide(r, &cur, &next, hausdorff, top, &c) == SPLIT_AT) {
+        const split_action action =
+            top < PC_SPLIT_STACK ? decide(r, &cur, &next, hausdorff, top, &c) : SPLIT_ACCEPT;
+        if (action == SPLIT_AT) {
             stack[top++] = c;
             continue;
         }
-        const projcurve_status st = pc_refine_output(r, out, &next);
+        const projcurve_status st = action == SPLIT_GAP ? pc_refine_output_gap(r, out, &next, PC_GAP_FAILED)
+                                                        : pc_refine_output(r, out, &next);
         if (st != PROJCURVE_OK)
             return st;
         cur = next;

@@ -44,3 +44,12 @@ projcurve_status pc_refine_output(pc_refiner *r, pc_vertex_list *out, const pc_r
     }
     return pc_vertex_list_push(r->ctx, out, v);
 }
+
+projcurve_status pc_refine_output_gap(pc_refiner *r, pc_vertex_list *out, const pc_rvertex *v,
+                                      pc_gap_kind kind)
+{
+    if (out->count > 0)
+        out->items[out->count - 1].gap = (int)kind;
+    ++r->gaps;
+    return pc_refine_output(r, out, v);
+}

@@ -9,6 +9,7 @@ import os
 import shutil
 import subprocess
 import sys
+import xml.etree.ElementTree as ET
 
 import iges_geometry
 
@@ -33,6 +34,47 @@ def xml_valid(path):
     if shutil.which("xmllint") is None:
         return None
     return subprocess.run(["xmllint", "--noout", path], capture_output=True).returncode == 0
+
+
+SVG = "{http://www.w3.org/2000/svg}"
+ISO_LINES = 9  # per direction and surface (docs/cli.md)
+
+
+def check_svg(path, n_branches, n_surfaces, n_curves, what):
+    """Well-formed (xmllint when installed, and Python's XML parser),
+    self-contained SVG with the parts docs/cli.md describes: iso-parameter
+    lines, the input curves, dashed rays, a legend line per branch and each
+    branch drawn in its legend colour in both panels."""
+    valid = xml_valid(path)
+    if valid is None:
+        print("xmllint not installed: checked with Python's XML parser only")
+    else:
+        check(valid, f"{path} passes xmllint")
+    root = ET.parse(path).getroot()
+    geometry = ("points", "d", "x", "y", "width", "height")
+    check(not any(k in geometry and ("nan" in v.lower() or "inf" in v.lower())
+                  for e in root.iter() for k, v in e.attrib.items()),
+          f"{what}: SVG coordinates that are not numbers")
+    check(root.tag == SVG + "svg", f"{what}: root element {root.tag}")
+    tags = {e.tag.replace(SVG, "") for e in root.iter()}
+    check(not tags & {"script", "image", "foreignObject", "use"}, f"{what}: SVG uses {tags}")
+    check(not any("href" in k or "url(" in v for e in root.iter() for k, v in e.attrib.items()),
+          f"{what}: SVG refers to something outside the file")
+    lines = list(root.iter(SVG + "polyline"))
+    rays = [e for e in lines if e.get("stroke-dasharray")]
+    swatches = [r.get("fill") for r in root.iter(SVG + "rect") if r.get("height") == "4"]
+    legend = [t.text for t in root.iter(SVG + "text") if t.text and t.text.startswith("branch ")]
+    check(len(legend) == n_branches and len(swatches) == n_branches,
+          f"{what}: {len(legend)} legend lines, {len(swatches)} swatches, {n_branches} branches")
+    check(len(set(swatches)) == min(n_branches, 10), f"{what}: branch colours {swatches}")
+    for colour in set(swatches):
+        drawn = sum(1 for e in lines if e.get("stroke") == colour)
+        check(drawn >= 2, f"{what}: colour {colour} drawn {drawn} times (3D view and (u, v))")
+    if n_branches:
+        check(len(rays) >= 1, f"{what}: no projection rays drawn")
+    others = [e for e in lines if not e.get("stroke-dasharray") and e.get("stroke") not in swatches]
+    check(len(others) >= 2 * ISO_LINES * n_surfaces + n_curves,
+          f"{what}: {len(others)} iso-parameter lines and curves")
 
 
 def part_usage(exe, shared, work):
@@ -84,12 +126,7 @@ def part_demo(exe, shared, work):
                   f"{name}: branch spans the curve ({b['start']} .. {b['end']})")
             check(b["t_range"][0] == 0 and b["t_range"][1] == 1, f"{name}: t_range {b['t_range']}")
             check(b["pieces"] > 0 and b["degree"] > 0, f"{name}: composed")
-        svg = os.path.join(work, name + ".svg")
-        valid = xml_valid(svg)
-        if valid is None:
-            print("xmllint not installed: SVG well-formedness not checked")
-        else:
-            check(valid, f"{svg} passes xmllint")
+        check_svg(os.path.join(work, name + ".svg"), branches, 1, 1, name)
         info = run([exe, "info", os.path.join(work, name + ".igs")], 0, f"info {name}.igs").stdout
         # the input curve and the branch (read back through its 142)
         check("1 surface(s), 2 curve(s)" in info, f"{name}.igs read back:\n{info}")
@@ -322,8 +359,27 @@ def part_cases(exe, shared, work):
                   f"{name}: residual {b['residual']} > {tol * 1e-3}")
             check(b["deviation"] is not None and b["deviation"] <= tol,
                   f"{name}: deviation {b['deviation']} > eps_D {tol}")
-        valid = xml_valid(out_svg)
-        check(valid is None or valid, f"{out_svg} passes xmllint")
+        check_svg(out_svg, got, 1, 1, name)
+    check_several_inputs(exe, shared, work)
+
+
+def check_several_inputs(exe, shared, work):
+    """Two files: every curve is projected onto every surface, indices in
+    file order. Both cases' surfaces span the same square in (x, y) and
+    both curves lie inside it, so each of the 4 pairs gives one whole
+    branch."""
+    names = ("bumpy_bicubic_8x8_down", "deg5_quintic_9x8_down")
+    out_json = os.path.join(work, "two_inputs.json")
+    args = [exe, "project"] + [os.path.join(shared, "cases", n + ".igs") for n in names]
+    if run(args + ["--dir", "0,0,-1", "--json", out_json], 0, "two inputs").returncode != 0:
+        return
+    with open(out_json) as f:
+        data = json.load(f)
+    check_json_schema(data, "two inputs")
+    pairs = sorted((b["surface"], b["curve"]) for b in data["branches"])
+    check(pairs == [(0, 0), (0, 1), (1, 0), (1, 1)], f"two inputs: pairs {pairs}")
+    check(all(b["start"] == "curve_start" and b["end"] == "curve_end" for b in data["branches"]),
+          "two inputs: every branch covers its curve")
 
 
 def main():

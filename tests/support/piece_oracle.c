@@ -89,6 +89,9 @@ static int oracle_derivatives(const pc_projector *self, double t, double u, doub
     memset(out, 0, sizeof *out);
     out->t = t, out->u = u, out->v = v;
     out->du = q1[0], out->dv = q1[1], out->ddu = q2[0], out->ddv = q2[1];
+    /* Dir.(Su x Sv) / |Su x Sv| (projector.h; e1, e2 orthonormal to Dir) */
+    const double area = vec3_norm(vec3_cross(s[1], s[2]));
+    out->det = area > 0.0 ? (a * e - b * c) / area : 0.0;
     out->s = s[0];
     out->p = p[0];
     return 1;
@@ -171,6 +174,9 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
     memset(out, 0, sizeof *out);
     out->t = t, out->u = u, out->v = v;
     out->du = q1[0], out->dv = q1[1];
+    /* det K / (|Su| |Sv|)^2 (projector.h) */
+    const double scale = vec3_dot(s[1], s[1]) * vec3_dot(s[2], s[2]);
+    out->det = scale > 0.0 ? (k[0] * k[3] - k[1] * k[2]) / scale : 0.0;
     out->s = s[0];
     out->p = p[0];
     return 1;
