@@ -152,32 +152,37 @@ static double clamp(double x, double lo, double hi)
     return x < lo ? lo : (x > hi ? hi : x);
 }
 
-/* The third-derivative bound of the span of the cached evaluation, or NULL
- * (rational surface). Computed once per span visited. */
-static const double *span_bound(const pc_projector *self)
+/* The derivative bounds of the span of the cached evaluation, or NULL
+ * (rational surface). Computed once per span visited, unless a span with
+ * the same table slot came between. */
+static const pc_span_bound_entry *span_bound(const pc_projector *self)
 {
     pc_directional_cache *c = dir_data(self)->cache;
     if (c->bound_state < 0)
         return NULL;
-    if (c->bound_state == 0 || c->bound_u != c->span_u || c->bound_v != c->span_v) {
-        if (!pc_span_third_bound(&self->surface->nurbs, c->span_u, c->span_v, c->m3)) {
+    if (c->bound != NULL && c->bound->span_u == c->span_u && c->bound->span_v == c->span_v)
+        return c->bound;
+    const size_t slot = (c->span_u * 7 + c->span_v) & (PC_SPAN_BOUND_SLOTS - 1);
+    pc_span_bound_entry *b = &c->bounds[slot];
+    if (!b->valid || b->span_u != c->span_u || b->span_v != c->span_v) {
+        const pc_nurbs_surface *ns = &self->surface->nurbs;
+        double m2[3];
+        if (!pc_span_bounds(ns, c->span_u, c->span_v, m2, b->m3)) {
             c->bound_state = -1;
             return NULL;
         }
-        const pc_nurbs_surface *ns = &self->surface->nurbs;
-        double m2[3];
-        pc_span_second_bound(ns, c->span_u, c->span_v, m2);
-        c->m2_max = fmax(m2[0], fmax(m2[1], m2[2]));
-        c->m3_max = fmax(fmax(c->m3[0], c->m3[1]), fmax(c->m3[2], c->m3[3]));
-        c->bound_state = 1;
-        c->bound_u = c->span_u;
-        c->bound_v = c->span_v;
-        c->bound_box[0] = ns->knots_u[c->span_u];
-        c->bound_box[1] = ns->knots_u[c->span_u + 1];
-        c->bound_box[2] = ns->knots_v[c->span_v];
-        c->bound_box[3] = ns->knots_v[c->span_v + 1];
+        b->m2_max = fmax(m2[0], fmax(m2[1], m2[2]));
+        b->m3_max = fmax(fmax(b->m3[0], b->m3[1]), fmax(b->m3[2], b->m3[3]));
+        b->span_u = c->span_u;
+        b->span_v = c->span_v;
+        b->box[0] = ns->knots_u[c->span_u];
+        b->box[1] = ns->knots_u[c->span_u + 1];
+        b->box[2] = ns->knots_v[c->span_v];
+        b->box[3] = ns->knots_v[c->span_v + 1];
+        b->valid = 1;
     }
-    return c->m3;
+    c->bound = b;
+    return b;
 }
 
 /* Whether (u + du, v + dv) lies in the span of the cached evaluation,
@@ -185,9 +190,9 @@ static const double *span_bound(const pc_projector *self)
 static int in_span(const pc_projector *self, double du, double dv)
 {
     const pc_directional_cache *c = dir_data(self)->cache;
+    const double *box = c->bound->box;
     const double u = c->u + du, v = c->v + dv;
-    return u >= c->bound_box[0] && u <= c->bound_box[1] && v >= c->bound_box[2] &&
-           v <= c->bound_box[3];
+    return u >= box[0] && u <= box[1] && v >= box[2] && v <= box[3];
 }
 
 /* Looks for a step d from the cached evaluation whose residual |G(q + d)|
@@ -269,13 +274,14 @@ static int small_step(const pc_projector *self, double h, const jacobian *j,
 {
     const pc_directional_cache *c = dir_data(self)->cache;
     const double x = fabs(step[0]), y = fabs(step[1]), l = x + y;
-    if (!(0.5 * c->m2_max * l * l + c->m3_max * l * l * l / 6.0 <= target) ||
+    const double m2_max = c->bound->m2_max, m3_max = c->bound->m3_max;
+    if (!(0.5 * m2_max * l * l + m3_max * l * l * l * (1.0 / 6.0) <= target) ||
         !in_span(self, step[0], step[1]))
         return 0;
     double q1[2];
     jacobian_solve(j, c->frame_d1, q1);
     const double speed = fabs(q1[0]) + fabs(q1[1]);
-    const double moved = c->m3_max * l * speed * speed;
+    const double moved = m3_max * l * speed * speed;
     const double drift2 = jacobian_inverse_norm2(j) * moved * moved;
     const double shift2 = 0.25 * h * h * h * h * drift2; /* of the next prediction */
     if (h != 0.0 && shift2 <= PC_PREDICTION_DRIFT * PC_PREDICTION_DRIFT * (x * x + y * y))
@@ -310,7 +316,8 @@ static int final_step(const pc_projector *self, double h, const double g[2], con
     *nv = c->v + step[1];
     if (moved2 <= eps1 * eps1) /* seed 000 s3.3 test 1 */
         return 1;
-    const double *m3 = span_bound(self);
+    const pc_span_bound_entry *bound = span_bound(self);
+    const double *m3 = bound != NULL ? bound->m3 : NULL;
     if (m3 != NULL && small_step(self, h, j, step, safe))
         return 1;
     if (m3 != NULL) {
@@ -351,7 +358,8 @@ static int newton(const pc_projector *self, double t, double h, double uv[2], in
     const pc_directional_data *d = dir_data(self);
     const double *dom = self->surface->nurbs.domain;
     const double eps1 = self->newton_tol;
-    const double eps2 = self->newton_tol / self->model_size;
+    /* the sine test res2 <= eps2^2 dist2 with eps2 = eps1 / size, as products */
+    const double size2 = self->model_size * self->model_size;
     double u = uv[0], v = uv[1];
     double prev_res2 = INFINITY;
     int non_decrease = 0, converged = 0, it = 0;
@@ -366,7 +374,7 @@ static int newton(const pc_projector *self, double t, double h, double uv[2], in
         const double dist2 = vec3_dot(diff, diff);
         if (it == 0) /* seed 000 eq. (3.8) */
             d->cache->guess_error = dist2 > 0.0 ? sqrt(res2 / dist2) : 0.0;
-        if (res2 <= eps1 * eps1 || dist2 <= eps1 * eps1 || res2 <= eps2 * eps2 * dist2) {
+        if (res2 <= eps1 * eps1 || dist2 <= eps1 * eps1 || res2 * size2 <= eps1 * eps1 * dist2) {
             converged = 1;
             break;
         }

@@ -16,6 +16,18 @@
  * last evaluation, so that derivatives() right after a converged correct()
  * at the same point costs no new evaluation. Owned by one projection call
  * (not shared between threads). */
+/* The derivative bounds of one knot span and its parameter box. */
+typedef struct pc_span_bound_entry {
+    int valid;
+    size_t span_u, span_v;
+    double m3[4];          /* third derivatives, span_bound.h */
+    double m2_max, m3_max; /* largest second / third derivative bound */
+    double box[4];         /* the span: u0, u1, v0, v1 */
+} pc_span_bound_entry;
+
+/* Entries of the span-bound table (a power of 2). */
+#define PC_SPAN_BOUND_SLOTS 32
+
 typedef struct pc_directional_cache {
     size_t hint_u, hint_v, hint_t;
     int surf_valid, curve_valid; /* the fields below hold evaluations */
@@ -24,14 +36,14 @@ typedef struct pc_directional_cache {
     pc_vec3 curve[3];          /* P, P', P'' at t */
     double frame_d1[2], frame_d2[2]; /* [e1.P'; e2.P'], [e1.P''; e2.P''] */
     size_t span_u, span_v;     /* knot span of the evaluation in surf */
-    /* Third-derivative bound of one span (span_bound.h), kept while the
-     * evaluations stay in it: bound_state 1 = m3 holds the bound of span
-     * (bound_u, bound_v), -1 = no bound (rational surface), 0 = none yet. */
+    /* Derivative bounds of the spans visited (span_bound.h), in a small
+     * direct-mapped table: the refinement moves back and forth between
+     * neighbouring spans, and a bound costs ~30 evaluations. bound_state
+     * -1 = no bounds (rational surface); bound is the entry of the span of
+     * the cached evaluation, after span_bound(). */
     int bound_state;
-    size_t bound_u, bound_v;
-    double m3[4];
-    double m2_max, m3_max;     /* largest second / third derivative bound */
-    double bound_box[4];       /* that span: u0, u1, v0, v1 */
+    const pc_span_bound_entry *bound;
+    pc_span_bound_entry bounds[PC_SPAN_BOUND_SLOTS];
     double guess_error;        /* seed 000 eq. (3.8) of the last guess */
     int callback_failed;       /* a curve callback failed at some point */
 } pc_directional_cache;

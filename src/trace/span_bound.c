@@ -12,67 +12,96 @@
 
 #include <math.h>
 
-/* Replaces pts[0..deg] (stride `stride` pc_vec3) by the control points of
- * the order-th derivative, pts[0..deg-order]. knots are those of the
- * direction, first = index of the span's first active control point. The
- * denominators are > 0: they span the (non-empty) span itself. */
-static void differentiate(pc_vec3 *pts, size_t stride, int deg, int order, const double *knots,
-                          size_t first)
+/* One step of the hodograph: with pts[0..deg-r+1] (stride `stride`
+ * pc_vec3) the control points of the (r-1)-th derivative, makes
+ * pts[0..deg-r] those of the r-th. knots are those of the direction, first
+ * = index of the span's first active control point. The denominators are
+ * > 0: they span the (non-empty) span itself. */
+static void differentiate_once(pc_vec3 *pts, size_t stride, int deg, int r, const double *knots,
+                               size_t first)
 {
-    for (int r = 1; r <= order; ++r) {
-        const double scale = (double)(deg - r + 1);
-        for (int i = 0; i <= deg - r; ++i) {
-            const size_t g = first + (size_t)i;
-            const double width = knots[g + (size_t)deg + 1] - knots[g + (size_t)r];
-            pc_vec3 *a = &pts[(size_t)i * stride];
-            *a = vec3_scale(vec3_sub(pts[(size_t)(i + 1) * stride], *a), scale / width);
-        }
+    const double scale = (double)(deg - r + 1);
+    for (int i = 0; i <= deg - r; ++i) {
+        const size_t g = first + (size_t)i;
+        const double width = knots[g + (size_t)deg + 1] - knots[g + (size_t)r];
+        pc_vec3 *a = &pts[(size_t)i * stride];
+        *a = vec3_scale(vec3_sub(pts[(size_t)(i + 1) * stride], *a), scale / width);
     }
 }
 
-/* out[k] >= max |d^order S / du^(order-k) dv^k| over the span, k = 0..order. */
-static void span_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v, int order,
-                       double *out)
+/* The largest norm of the (cols x rows) control points at net (row stride
+ * `row`), into *out when larger. */
+static void record_max(const pc_vec3 *net, size_t row, int cols, int rows, double *out)
+{
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < cols; ++i)
+            *out = fmax(*out, vec3_norm(net[(size_t)j * row + (size_t)i]));
+}
+
+/* m2[k] >= max |d^2 S / du^(2-k) dv^k|, m3[k] >= max |d^3 S / du^(3-k) dv^k|
+ * over the span. The u-hodographs of order a = 0..3 are built one from the
+ * other in `net`; each is copied to `work` and differentiated in v up to
+ * the total order 3, so every mixed derivative costs one difference pass. */
+static void span_bounds(const pc_nurbs_surface *s, size_t span_u, size_t span_v, double m2[3],
+                        double m3[4])
 {
     const int p = s->deg_u, q = s->deg_v;
     const size_t first_u = span_u - (size_t)p, first_v = span_v - (size_t)q;
     const size_t row = (size_t)p + 1;
-    pc_vec3 block[PC_MAX_ORDER * PC_MAX_ORDER];
-    for (int k = 0; k <= order; ++k) {
-        const int a = order - k, b = k; /* orders in u and v */
-        out[k] = 0.0;
-        if (a > p || b > q)
-            continue; /* that derivative vanishes */
-        for (int j = 0; j <= q; ++j)
-            for (int i = 0; i <= p; ++i) {
-                const double *c = s->cw + 4 * ((first_v + (size_t)j) * s->n_u + first_u +
-                                               (size_t)i);
-                block[(size_t)j * row + (size_t)i] = vec3(c[0], c[1], c[2]);
-            }
-        for (int j = 0; j <= q; ++j)
-            differentiate(&block[(size_t)j * row], 1, p, a, s->knots_u, first_u);
-        for (int i = 0; i <= p - a; ++i)
-            differentiate(&block[i], row, q, b, s->knots_v, first_v);
-        for (int j = 0; j <= q - b; ++j)
-            for (int i = 0; i <= p - a; ++i)
-                out[k] = fmax(out[k], vec3_norm(block[(size_t)j * row + (size_t)i]));
+    pc_vec3 net[PC_MAX_ORDER * PC_MAX_ORDER], work[PC_MAX_ORDER * PC_MAX_ORDER];
+    for (int k = 0; k < 4; ++k) {
+        if (k < 3)
+            m2[k] = 0.0;
+        m3[k] = 0.0; /* a derivative of an order above the degree vanishes */
     }
+    for (int j = 0; j <= q; ++j)
+        for (int i = 0; i <= p; ++i) {
+            const double *c = s->cw + 4 * ((first_v + (size_t)j) * s->n_u + first_u + (size_t)i);
+            net[(size_t)j * row + (size_t)i] = vec3(c[0], c[1], c[2]);
+        }
+    for (int a = 0; a <= 3 && a <= p; ++a) {
+        if (a > 0)
+            for (int j = 0; j <= q; ++j)
+                differentiate_once(&net[(size_t)j * row], 1, p, a, s->knots_u, first_u);
+        if (a == 2)
+            record_max(net, row, p - a + 1, q + 1, &m2[0]);
+        if (a == 3)
+            record_max(net, row, p - a + 1, q + 1, &m3[0]);
+        if (a == 3 || q == 0)
+            continue;
+        for (int j = 0; j <= q; ++j)
+            for (int i = 0; i <= p - a; ++i)
+                work[(size_t)j * row + (size_t)i] = net[(size_t)j * row + (size_t)i];
+        for (int b = 1; a + b <= 3 && b <= q; ++b) {
+            for (int i = 0; i <= p - a; ++i)
+                differentiate_once(&work[i], row, q, b, s->knots_v, first_v);
+            if (a + b == 2)
+                record_max(work, row, p - a + 1, q - b + 1, &m2[b]);
+            if (a + b == 3)
+                record_max(work, row, p - a + 1, q - b + 1, &m3[b]);
+        }
+    }
+}
+
+int pc_span_bounds(const pc_nurbs_surface *s, size_t span_u, size_t span_v, double m2[3],
+                   double m3[4])
+{
+    if (s->rational)
+        return 0;
+    span_bounds(s, span_u, span_v, m2, m3);
+    return 1;
 }
 
 int pc_span_third_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
                         double m3[4])
 {
-    if (s->rational)
-        return 0;
-    span_bound(s, span_u, span_v, 3, m3);
-    return 1;
+    double m2[3];
+    return pc_span_bounds(s, span_u, span_v, m2, m3);
 }
 
 int pc_span_second_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
                          double m2[3])
 {
-    if (s->rational)
-        return 0;
-    span_bound(s, span_u, span_v, 2, m2);
-    return 1;
+    double m3[4];
+    return pc_span_bounds(s, span_u, span_v, m2, m3);
 }

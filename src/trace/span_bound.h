@@ -26,6 +26,11 @@ int pc_span_third_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
 int pc_span_second_bound(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
                          double m2[3]);
 
+/* Both at once (the cost of one): m2 as pc_span_second_bound, m3 as
+ * pc_span_third_bound. Returns 0 (both untouched) for a rational surface. */
+int pc_span_bounds(const pc_nurbs_surface *s, size_t span_u, size_t span_v, double m2[3],
+                   double m3[4]);
+
 /* Bound of the cubic Taylor remainder of S for the step (du, dv) inside one
  * span: |S(q + d) - (S + S'd + S''[d, d] / 2)| <= this (Lagrange form). */
 static inline double pc_span_cubic_remainder(const double m3[4], double du, double dv)
@@ -33,8 +38,8 @@ static inline double pc_span_cubic_remainder(const double m3[4], double du, doub
     const double x = fabs(du), y = fabs(dv);
     /* (1/6) sum_k C(3, k) m3[k] |du|^(3-k) |dv|^k */
     return (m3[0] * x * x * x + 3.0 * m3[1] * x * x * y + 3.0 * m3[2] * x * y * y +
-            m3[3] * y * y * y) /
-           6.0;
+            m3[3] * y * y * y) *
+           (1.0 / 6.0); /* a product, not a division: this is on the hot path */
 }
 
 #endif /* PC_TRACE_SPAN_BOUND_H */
