@@ -6,6 +6,7 @@
 #include "api/project.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 #include "common/error.h"
 #include "refine/refine.h"
@@ -94,6 +95,11 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     pc_directional_cache cache;
     pc_directional_init(&proj, &data, &cache, surface, curve, unit, o.newton_tol,
                         (int)o.newton_max_iter);
+    /* the bounds of the spans visited, kept for the whole call (without
+     * the memory, one span's only: slower, same result) */
+    const size_t slots = pc_span_bound_table_slots(&surface->nurbs);
+    pc_span_bound_entry *bound_table = slots > 1 ? calloc(slots, sizeof *bound_table) : NULL;
+    pc_directional_use_bound_table(&cache, bound_table, slots);
     pc_line_finder finder;
     pc_line_finder_init(&finder, &proj, unit);
     projcurve_result *r = NULL;
@@ -117,6 +123,7 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     if (cache.callback_failed && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     pc_line_finder_free(&finder);
+    free(bound_table);
     if (st != PROJCURVE_OK && st != PROJCURVE_ERR_LIMIT_REACHED) {
         projcurve_result_destroy(r);
         return st;

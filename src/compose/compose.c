@@ -19,6 +19,7 @@
  */
 #include "compose.h"
 
+#include "common/compiler.h"
 #include "projcurve.h"
 
 /* Largest number of control points per direction of a patch. */
@@ -26,12 +27,6 @@
 /* Patches up to this order per direction (bicubic is 4) use small stack
  * buffers: the large ones cost page probes and cache misses on every call. */
 #define PC_COMPOSE_SMALL_ORDER 8
-
-#if defined(__GNUC__)
-#define PC_NOINLINE __attribute__((noinline))
-#else
-#define PC_NOINLINE
-#endif
 
 /*
  * Restriction matrix of the degree-p Bernstein basis to [x0, x1]:
@@ -42,7 +37,7 @@
  * linear factors with non-negative coefficients for x0, x1 in [0, 1], so
  * every entry is a sum of non-negative terms and each column sums to 1.
  */
-static void restriction_matrix(int p, double x0, double x1, double *A)
+static PC_INLINE_ALWAYS void restriction_matrix(int p, double x0, double x1, double *A)
 {
     const size_t order = (size_t)(p + 1);
     for (int a = 0; a <= p; ++a) {
@@ -61,20 +56,26 @@ static void restriction_matrix(int p, double x0, double x1, double *A)
     }
 }
 
-/* Binomial coefficients C(n, 0..n) as doubles (exact for n <= 56). */
-static void binomial_row(int n, double *row)
+/* Binomial coefficients C(n, 0..n) by Pascal's rule: additions only, exact
+ * for n <= 56, and constants once n is. */
+static PC_INLINE_ALWAYS void binomial_row(int n, double *row)
 {
     row[0] = 1.0;
-    for (int k = 1; k <= n; ++k)
-        row[k] = row[k - 1] * (double)(n - k + 1) / (double)k;
+    for (int m = 1; m <= n; ++m) {
+        row[m] = 1.0;
+        for (int k = m - 1; k > 0; --k)
+            row[k] += row[k - 1];
+    }
 }
 
-/* The composition with caller-provided scratch: au (p+1)^2, av (q+1)^2 and
- * net 4 (p+1)(q+1) doubles. */
-static void compose_with(const pc_bezier_patch *patch, const double uv0[2], const double uv1[2],
-                         double *cw_out, double *au, double *av, double *net)
+/* The composition for the patch's degrees p, q (constants in the
+ * specialised callers) with caller-provided scratch: au (p+1)^2, av (q+1)^2
+ * and net 4 (p+1)(q+1) doubles. */
+static PC_INLINE_ALWAYS void compose_with(const pc_bezier_patch *patch, const int p, const int q,
+                                          const double uv0[2], const double uv1[2],
+                                          double *cw_out, double *au, double *av, double *net)
 {
-    const int p = patch->deg_u, q = patch->deg_v, n = p + q;
+    const int n = p + q;
     const size_t pu = (size_t)(p + 1), pv = (size_t)(q + 1);
     const double du = patch->u1 - patch->u0, dv = patch->v1 - patch->v0;
     restriction_matrix(p, (uv0[0] - patch->u0) / du, (uv1[0] - patch->u0) / du, au);
@@ -115,41 +116,70 @@ static void compose_with(const pc_bezier_patch *patch, const double uv0[2], cons
     binomial_row(n, cn);
     for (int k = 0; k <= n; ++k) {
         double *r = cw_out + 4 * (size_t)k;
-        r[0] = r[1] = r[2] = r[3] = 0.0;
+        double x = 0.0, y = 0.0, z = 0.0, w = 0.0;
         const int a_lo = k > q ? k - q : 0, a_hi = k < p ? k : p;
         for (int a = a_lo; a <= a_hi; ++a) {
             const int b = k - a;
-            const double weight = cp[a] * cq[b] / cn[k];
+            const double weight = cp[a] * cq[b];
             const double *h = net + 4 * (pu * (size_t)b + (size_t)a);
-            r[0] += weight * h[0];
-            r[1] += weight * h[1];
-            r[2] += weight * h[2];
-            r[3] += weight * h[3];
+            x += weight * h[0];
+            y += weight * h[1];
+            z += weight * h[2];
+            w += weight * h[3];
         }
+        const double inv = 1.0 / cn[k];
+        r[0] = x * inv;
+        r[1] = y * inv;
+        r[2] = z * inv;
+        r[3] = w * inv;
     }
 }
 
+/* The composition at constant degrees (P, Q): the loops unroll and the
+ * binomial weights fold into constants. */
+#define PC_COMPOSE_FIXED(P, Q)                                                               \
+    static PC_NEVER_INLINE PC_HOT_CLONES void compose_##P##Q(const pc_bezier_patch *patch,               \
+                                               const double uv0[2], const double uv1[2],   \
+                                               double *cw_out)                              \
+    {                                                                                        \
+        double au[(P + 1) * (P + 1)], av[(Q + 1) * (Q + 1)], net[4 * (P + 1) * (Q + 1)];     \
+        compose_with(patch, P, Q, uv0, uv1, cw_out, au, av, net);                            \
+    }
+PC_COMPOSE_FIXED(3, 3)
+PC_COMPOSE_FIXED(5, 5)
+
 /* Patches of high degree: buffers for the largest order. */
-static PC_NOINLINE void compose_large(const pc_bezier_patch *patch, const double uv0[2],
-                                      const double uv1[2], double *cw_out)
+static PC_NEVER_INLINE void compose_large(const pc_bezier_patch *patch, const double uv0[2],
+                                          const double uv1[2], double *cw_out)
 {
     double au[PC_COMPOSE_MAX_ORDER * PC_COMPOSE_MAX_ORDER];
     double av[PC_COMPOSE_MAX_ORDER * PC_COMPOSE_MAX_ORDER];
     double net[4 * PC_COMPOSE_MAX_ORDER * PC_COMPOSE_MAX_ORDER];
-    compose_with(patch, uv0, uv1, cw_out, au, av, net);
+    compose_with(patch, patch->deg_u, patch->deg_v, uv0, uv1, cw_out, au, av, net);
+}
+
+/* Other small degrees: buffers of PC_COMPOSE_SMALL_ORDER. */
+static PC_NEVER_INLINE void compose_small(const pc_bezier_patch *patch, const double uv0[2],
+                                          const double uv1[2], double *cw_out)
+{
+    double au[PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
+    double av[PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
+    double net[4 * PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
+    compose_with(patch, patch->deg_u, patch->deg_v, uv0, uv1, cw_out, au, av, net);
 }
 
 void pc_compose_segment(const pc_bezier_patch *patch, const double uv0[2], const double uv1[2],
                         double *cw_out)
 {
-    if (patch->deg_u >= PC_COMPOSE_SMALL_ORDER || patch->deg_v >= PC_COMPOSE_SMALL_ORDER) {
+    const int p = patch->deg_u, q = patch->deg_v;
+    if (p == 3 && q == 3)
+        compose_33(patch, uv0, uv1, cw_out);
+    else if (p == 5 && q == 5)
+        compose_55(patch, uv0, uv1, cw_out);
+    else if (p >= PC_COMPOSE_SMALL_ORDER || q >= PC_COMPOSE_SMALL_ORDER)
         compose_large(patch, uv0, uv1, cw_out);
-        return;
-    }
-    double au[PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
-    double av[PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
-    double net[4 * PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];
-    compose_with(patch, uv0, uv1, cw_out, au, av, net);
+    else
+        compose_small(patch, uv0, uv1, cw_out);
 }
 
 void pc_compose_to_cartesian(int degree, const double *cw, double *ctrl, double *weights)

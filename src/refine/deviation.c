@@ -14,6 +14,7 @@
  */
 #include <math.h>
 
+#include "common/compiler.h"
 #include "compose/compose.h"
 #include "refine/refine_internal.h"
 
@@ -58,7 +59,9 @@ static pc_vec3 piece_point(int n, const double *cw, double s)
     return vec3(work[0][0] / work[0][3], work[0][1] / work[0][3], work[0][2] / work[0][3]);
 }
 
-void pc_piece_eval(int n, const double *cw, double s, pc_vec3 out[3])
+/* C, C', C'' at s for the degree n (a constant in the specialised callers):
+ * de Casteljau down to the last three points, then their quadratic. */
+static PC_INLINE_ALWAYS void piece_eval(const int n, const double *cw, double s, pc_vec3 out[3])
 {
     double work[PC_PIECE_MAX_DEGREE + 1][4];
     for (int i = 0; i <= n; ++i)
@@ -89,6 +92,28 @@ void pc_piece_eval(int n, const double *cw, double s, pc_vec3 out[3])
     out[0] = p;
     out[1] = dp;
     out[2] = ddp;
+}
+
+/* Pieces on bicubic and biquintic patches, the usual ones: the loops unroll. */
+static PC_NEVER_INLINE PC_HOT_CLONES void piece_eval_6(const double *cw, double s, pc_vec3 out[3])
+{
+    piece_eval(6, cw, s, out);
+}
+
+static PC_NEVER_INLINE PC_HOT_CLONES void piece_eval_10(const double *cw, double s,
+                                                         pc_vec3 out[3])
+{
+    piece_eval(10, cw, s, out);
+}
+
+void pc_piece_eval(int n, const double *cw, double s, pc_vec3 out[3])
+{
+    if (n == 6)
+        piece_eval_6(cw, s, out);
+    else if (n == 10)
+        piece_eval_10(cw, s, out);
+    else
+        piece_eval(n, cw, s, out);
 }
 
 double pc_piece_distance(int n, const double *cw, pc_vec3 x, double s0, double *s_foot)

@@ -153,8 +153,7 @@ static double clamp(double x, double lo, double hi)
 }
 
 /* The derivative bounds of the span of the cached evaluation, or NULL
- * (rational surface). Computed once per span visited, unless a span with
- * the same table slot came between. */
+ * (rational surface): computed once per span visited. */
 static const pc_span_bound_entry *span_bound(const pc_projector *self)
 {
     pc_directional_cache *c = dir_data(self)->cache;
@@ -162,27 +161,10 @@ static const pc_span_bound_entry *span_bound(const pc_projector *self)
         return NULL;
     if (c->bound != NULL && c->bound->span_u == c->span_u && c->bound->span_v == c->span_v)
         return c->bound;
-    const size_t slot = (c->span_u * 7 + c->span_v) & (PC_SPAN_BOUND_SLOTS - 1);
-    pc_span_bound_entry *b = &c->bounds[slot];
-    if (!b->valid || b->span_u != c->span_u || b->span_v != c->span_v) {
-        const pc_nurbs_surface *ns = &self->surface->nurbs;
-        double m2[3];
-        if (!pc_span_bounds(ns, c->span_u, c->span_v, m2, b->m3)) {
-            c->bound_state = -1;
-            return NULL;
-        }
-        b->m2_max = fmax(m2[0], fmax(m2[1], m2[2]));
-        b->m3_max = fmax(fmax(b->m3[0], b->m3[1]), fmax(b->m3[2], b->m3[3]));
-        b->span_u = c->span_u;
-        b->span_v = c->span_v;
-        b->box[0] = ns->knots_u[c->span_u];
-        b->box[1] = ns->knots_u[c->span_u + 1];
-        b->box[2] = ns->knots_v[c->span_v];
-        b->box[3] = ns->knots_v[c->span_v + 1];
-        b->valid = 1;
-    }
-    c->bound = b;
-    return b;
+    c->bound = pc_span_bound_table_get(&c->bounds, &self->surface->nurbs, c->span_u, c->span_v);
+    if (c->bound == NULL)
+        c->bound_state = -1;
+    return c->bound;
 }
 
 /* Whether (u + du, v + dv) lies in the span of the cached evaluation,
@@ -504,6 +486,7 @@ void pc_directional_init(pc_projector *proj, pc_directional_data *data,
                          double newton_tol_rel, int newton_max_iter)
 {
     *cache = (pc_directional_cache){0};
+    pc_span_bound_table_init(&cache->bounds, NULL, 0);
     data->dir = unit_dir;
     vec3_orthonormal_pair(unit_dir, &data->e1, &data->e2);
     data->cache = cache;
@@ -519,4 +502,11 @@ void pc_directional_init(pc_projector *proj, pc_directional_data *data,
     proj->residual = dir_residual;
     proj->data = data;
     proj->guess_error = &cache->guess_error;
+}
+
+void pc_directional_use_bound_table(pc_directional_cache *cache, pc_span_bound_entry *storage,
+                                    size_t slots)
+{
+    pc_span_bound_table_init(&cache->bounds, storage, slots);
+    cache->bound = NULL;
 }

@@ -11,23 +11,12 @@
 
 #include "api/handles.h"
 #include "trace/projector.h"
+#include "trace/span_bound_table.h"
 
 /* Evaluation state reused from one call to the next: knot-span hints and the
  * last evaluation, so that derivatives() right after a converged correct()
  * at the same point costs no new evaluation. Owned by one projection call
  * (not shared between threads). */
-/* The derivative bounds of one knot span and its parameter box. */
-typedef struct pc_span_bound_entry {
-    int valid;
-    size_t span_u, span_v;
-    double m3[4];          /* third derivatives, span_bound.h */
-    double m2_max, m3_max; /* largest second / third derivative bound */
-    double box[4];         /* the span: u0, u1, v0, v1 */
-} pc_span_bound_entry;
-
-/* Entries of the span-bound table (a power of 2). */
-#define PC_SPAN_BOUND_SLOTS 32
-
 typedef struct pc_directional_cache {
     size_t hint_u, hint_v, hint_t;
     int surf_valid, curve_valid; /* the fields below hold evaluations */
@@ -36,14 +25,12 @@ typedef struct pc_directional_cache {
     pc_vec3 curve[3];          /* P, P', P'' at t */
     double frame_d1[2], frame_d2[2]; /* [e1.P'; e2.P'], [e1.P''; e2.P''] */
     size_t span_u, span_v;     /* knot span of the evaluation in surf */
-    /* Derivative bounds of the spans visited (span_bound.h), in a small
-     * direct-mapped table: the refinement moves back and forth between
-     * neighbouring spans, and a bound costs ~30 evaluations. bound_state
-     * -1 = no bounds (rational surface); bound is the entry of the span of
-     * the cached evaluation, after span_bound(). */
+    /* Derivative bounds of the spans visited; bound_state -1 = none
+     * (rational surface); bound is the entry of the span of the cached
+     * evaluation, after span_bound(). */
     int bound_state;
     const pc_span_bound_entry *bound;
-    pc_span_bound_entry bounds[PC_SPAN_BOUND_SLOTS];
+    pc_span_bound_table bounds;
     double guess_error;        /* seed 000 eq. (3.8) of the last guess */
     int callback_failed;       /* a curve callback failed at some point */
 } pc_directional_cache;
@@ -60,5 +47,11 @@ void pc_directional_init(pc_projector *proj, pc_directional_data *data,
                          pc_directional_cache *cache, const projcurve_surface *surface,
                          const projcurve_curve *curve, pc_vec3 unit_dir,
                          double newton_tol_rel, int newton_max_iter);
+
+/* Gives the cache storage for its span-bound table: `slots` zero-filled
+ * entries (pc_span_bound_table_slots), outliving the projector; without
+ * it the table keeps one span. */
+void pc_directional_use_bound_table(pc_directional_cache *cache, pc_span_bound_entry *storage,
+                                    size_t slots);
 
 #endif /* PC_TRACE_DIRECTIONAL_H */
