@@ -6,6 +6,7 @@
 
 #include "bezier/bezier.h"
 #include "bezier/bvh.h"
+#include "bezier/tangent_boxes.h"
 #include "nurbs/nurbs.h"
 #include "projcurve.h"
 
@@ -13,6 +14,7 @@ struct projcurve_surface {
     pc_nurbs_surface nurbs;
     pc_patch_grid grid;   /* Bezier patches, built at creation */
     pc_bvh bvh;           /* over grid.patches, built at creation */
+    pc_tangent_boxes tangents; /* of Su, Sv over the BVH nodes, at creation */
     double box[6];        /* bounding box of the control net */
     double size;          /* its diagonal: the model scale for relative tolerances */
 };

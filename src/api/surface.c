@@ -28,6 +28,8 @@ projcurve_status projcurve_surface_create_nurbs(projcurve_context *ctx, int deg_
     st = pc_patch_grid_build(ctx, &s->grid, &s->nurbs);
     if (st == PROJCURVE_OK)
         st = pc_bvh_build(ctx, &s->bvh, &s->grid);
+    if (st == PROJCURVE_OK)
+        st = pc_tangent_boxes_build(ctx, &s->tangents, &s->bvh, &s->grid, s->nurbs.rational);
     if (st != PROJCURVE_OK) {
         projcurve_surface_destroy(s);
         return st;
@@ -48,6 +50,7 @@ void projcurve_surface_destroy(projcurve_surface *surface)
 {
     if (surface == NULL)
         return;
+    pc_tangent_boxes_free(&surface->tangents);
     pc_bvh_free(&surface->bvh);
     pc_patch_grid_free(&surface->grid);
     pc_nurbs_surface_free(&surface->nurbs);

@@ -172,6 +172,30 @@ static void walk(const pc_bvh *bvh, box_test_fn meets, const void *query, pc_bvh
     }
 }
 
+void pc_bvh_query_nodes(const pc_bvh *bvh, pc_bvh_enter_fn enter, pc_bvh_visit_fn visit,
+                        void *user)
+{
+    if (bvh->n_nodes == 0)
+        return;
+    uint32_t stack[PC_BVH_MAX_DEPTH + 1];
+    size_t top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const uint32_t k = stack[--top];
+        if (!enter(user, k))
+            continue;
+        const pc_bvh_node *node = &bvh->nodes[k];
+        if (node->count > 0) {
+            for (uint32_t i = node->first; i < node->first + node->count; ++i)
+                if (visit(user, bvh->order[i]))
+                    return;
+            continue;
+        }
+        stack[top++] = node->first + 1;
+        stack[top++] = node->first;
+    }
+}
+
 /* A line query prepared once: the slab test multiplies by the reciprocal
  * direction instead of dividing (six divisions per box otherwise), and
  * knows from the sign of each component which slab plane is entered

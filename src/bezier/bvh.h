@@ -38,6 +38,14 @@ typedef int (*pc_bvh_visit_fn)(void *user, size_t patch_index);
 void pc_bvh_query_line(const pc_bvh *bvh, pc_vec3 origin, pc_vec3 dir, double lambda_min,
                        double lambda_max, double pad, pc_bvh_visit_fn visit, void *user);
 
+/* Depth-first walk for searches with their own node test: enters node k
+ * (the root first) when enter(user, k) is nonzero, and calls visit for
+ * every patch of the leaves entered; a nonzero return from visit stops the
+ * walk. */
+typedef int (*pc_bvh_enter_fn)(void *user, size_t node_index);
+void pc_bvh_query_nodes(const pc_bvh *bvh, pc_bvh_enter_fn enter, pc_bvh_visit_fn visit,
+                        void *user);
+
 /* The same for every patch whose box is within `radius` of point p. */
 void pc_bvh_query_sphere(const pc_bvh *bvh, pc_vec3 p, double radius, pc_bvh_visit_fn visit,
                          void *user);

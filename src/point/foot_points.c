@@ -2,7 +2,9 @@
  * Every interior foot point of a point on a surface: the seeds of the
  * orthogonal projection (seed 003), which must not miss a branch.
  *
- * Every patch is subdivided; a sub-patch is discarded when its control net
+ * Every patch is subdivided (those of BVH nodes where the tangent boxes
+ * prove that (S - p).Su or (S - p).Sv keeps one sign are skipped whole,
+ * bezier/tangent_boxes.h); a sub-patch is discarded when its control net
  * proves that (S - p).Su or (S - p).Sv keeps one sign over it (no foot
  * point inside). Around each foot point only the few sub-patches that
  * contain or touch it survive; once flat they start Newton from their
@@ -166,20 +168,53 @@ static void merge_duplicates(pc_foot_list *l, const double dom[4])
     qsort(l->items, l->count, sizeof *l->items, by_distance);
 }
 
-projcurve_status pc_surface_foot_points(projcurve_context *ctx, const projcurve_surface *s,
-                                        pc_vec3 p, pc_foot_list *list)
+/* The BVH walk: nodes where (S - p).Su and (S - p).Sv may both vanish, and
+ * in their leaves every patch, each subdivided as above. */
+static int enter_node(void *user, size_t node_index)
+{
+    const feet_search *fs = user;
+    return pc_tangent_boxes_may_hold_foot(&fs->s->tangents, &fs->s->bvh, node_index, fs->p);
+}
+
+static int search_patch(void *user, size_t patch_index)
+{
+    feet_search *fs = user;
+    pc_subdiv_walk(&fs->work, &fs->s->grid.patches[patch_index], decide_feet, fs);
+    return fs->status != PROJCURVE_OK;
+}
+
+/* The search over the patches the BVH walk keeps (use_tree) or over all. */
+static projcurve_status foot_points(projcurve_context *ctx, const projcurve_surface *s, pc_vec3 p,
+                                    int use_tree, pc_foot_list *list)
 {
     list->count = 0;
     feet_search fs = {s, p, {0}, list, 0, PROJCURVE_OK, ctx};
     projcurve_status st = pc_subdiv_work_init(ctx, &fs.work, s->nurbs.deg_u, s->nurbs.deg_v);
     if (st != PROJCURVE_OK)
         return st;
-    const size_t n_patches = s->grid.spans_u * s->grid.spans_v;
-    for (size_t k = 0; k < n_patches && fs.status == PROJCURVE_OK; ++k)
-        pc_subdiv_walk(&fs.work, &s->grid.patches[k], decide_feet, &fs);
+    if (use_tree && s->tangents.node != NULL) {
+        pc_bvh_query_nodes(&s->bvh, enter_node, search_patch, &fs);
+    } else {
+        const size_t n_patches = s->grid.spans_u * s->grid.spans_v;
+        for (size_t k = 0; k < n_patches && fs.status == PROJCURVE_OK; ++k)
+            pc_subdiv_walk(&fs.work, &s->grid.patches[k], decide_feet, &fs);
+    }
     pc_subdiv_work_free(&fs.work);
     if (fs.status != PROJCURVE_OK)
         return fs.status;
     merge_duplicates(list, s->nurbs.domain);
     return PROJCURVE_OK;
+}
+
+projcurve_status pc_surface_foot_points(projcurve_context *ctx, const projcurve_surface *s,
+                                        pc_vec3 p, pc_foot_list *list)
+{
+    return foot_points(ctx, s, p, 1, list);
+}
+
+projcurve_status pc_surface_foot_points_exhaustive(projcurve_context *ctx,
+                                                   const projcurve_surface *s, pc_vec3 p,
+                                                   pc_foot_list *list)
+{
+    return foot_points(ctx, s, p, 0, list);
 }

@@ -39,11 +39,19 @@ typedef struct pc_foot_list {
 void pc_foot_list_free(pc_foot_list *list);
 
 /* Every interior foot point of p (G = 0, minima, maxima and saddles of the
- * distance), each once, sorted by distance. `list` is cleared first.
+ * distance), each once, sorted by distance. `list` is cleared first. Whole
+ * BVH subtrees where (S - p).Su or (S - p).Sv keeps its sign are skipped
+ * (bezier/tangent_boxes.h).
  * Degenerate inputs with a continuum of foot points (p at the centre of a
  * sphere) give a finite sample of it. Statuses: OK, NO_MEMORY. */
 projcurve_status pc_surface_foot_points(projcurve_context *ctx, const projcurve_surface *s,
                                         pc_vec3 p, pc_foot_list *list);
+
+/* The same search without the BVH culling (every patch subdivided): the
+ * reference that the culled search must agree with (tests). */
+projcurve_status pc_surface_foot_points_exhaustive(projcurve_context *ctx,
+                                                   const projcurve_surface *s, pc_vec3 p,
+                                                   pc_foot_list *list);
 
 /* Newton on G = 0 from uv (updated in place, kept in the domain), damped by
  * backtracking on |G|^2, with steps limited to max_step_u, max_step_v
