@@ -25,6 +25,8 @@
  */
 #include "compose.h"
 
+#include "common/compiler.h"
+
 #include "projcurve.h"
 
 /* Largest pcurve degree and largest composed degree. */
@@ -75,7 +77,7 @@ static const double *binomials(const poly_scratch *w, int n)
 
 /* Bernstein product of scalar polynomials a (degree m) and b (degree n)
  * into out (degree m + n; must not alias a or b). */
-static void bernstein_product(const poly_scratch *w, int m, const double *a, int n,
+static PC_INLINE_ALWAYS void bernstein_product(const poly_scratch *w, int m, const double *a, int n,
                               const double *b, double *out)
 {
     const double *cm = binomials(w, m), *cn = binomials(w, n), *cmn = binomials(w, m + n);
@@ -95,7 +97,7 @@ static void bernstein_product(const poly_scratch *w, int m, const double *a, int
 
 /* Bernstein coefficients of B_i^deg(x(s)), i = 0..deg, each of degree
  * d deg, into basis (row i), where x(s) has the d + 1 coefficients x. */
-static void basis_of(int d, const double *x, int deg, poly_scratch *w, double *basis)
+static PC_INLINE_ALWAYS void basis_of(int d, const double *x, int deg, poly_scratch *w, double *basis)
 {
     const size_t st = w->stride;
     double one_minus[PC_COMPOSE_POLY_MAX_DEGREE + 1];
@@ -118,8 +120,11 @@ static void basis_of(int d, const double *x, int deg, poly_scratch *w, double *b
     }
 }
 
-static void compose_poly_with(const pc_bezier_patch *patch, int d, const double *uv_ctrl,
-                              double *cw_out, poly_scratch *w)
+/* Cloned per instruction set: with AVX each homogeneous point is one
+ * register, and the products below are one multiply-add per term. */
+static PC_NEVER_INLINE PC_HOT_CLONES void compose_poly_with(const pc_bezier_patch *patch, int d,
+                                                            const double *uv_ctrl, double *cw_out,
+                                                            poly_scratch *w)
 {
     const int p = patch->deg_u, q = patch->deg_v, nu = d * p, nv = d * q, n = nu + nv;
     const size_t st = w->stride, pu = (size_t)(p + 1);
@@ -157,15 +162,13 @@ static void compose_poly_with(const pc_bezier_patch *patch, int d, const double 
         for (int b = 0; b <= nv; ++b)
             sbv[b] = cv[b] * bv[b];
         for (int a = 0; a <= nu; ++a) {
-            const double h0 = w->row[4 * a], h1 = w->row[4 * a + 1], h2 = w->row[4 * a + 2],
-                         h3 = w->row[4 * a + 3];
-            double *r = cw_out + 4 * a;
-            for (int b = 0; b <= nv; ++b) {
-                r[4 * b] += sbv[b] * h0;
-                r[4 * b + 1] += sbv[b] * h1;
-                r[4 * b + 2] += sbv[b] * h2;
-                r[4 * b + 3] += sbv[b] * h3;
-            }
+            /* restrict: the output never overlaps the row, so the four
+             * coordinates go as one vector */
+            const double *restrict h = w->row + 4 * a;
+            double *restrict r = cw_out + 4 * a;
+            for (int b = 0; b <= nv; ++b)
+                for (int c = 0; c < 4; ++c)
+                    r[4 * b + c] += sbv[b] * h[c];
         }
     }
     for (int k = 0; k <= n; ++k)

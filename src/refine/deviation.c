@@ -94,26 +94,28 @@ static PC_INLINE_ALWAYS void piece_eval(const int n, const double *cw, double s,
     out[2] = ddp;
 }
 
-/* Pieces on bicubic and biquintic patches, the usual ones: the loops unroll. */
-static PC_NEVER_INLINE PC_HOT_CLONES void piece_eval_6(const double *cw, double s, pc_vec3 out[3])
-{
-    piece_eval(6, cw, s, out);
-}
-
-static PC_NEVER_INLINE PC_HOT_CLONES void piece_eval_10(const double *cw, double s,
-                                                         pc_vec3 out[3])
-{
-    piece_eval(10, cw, s, out);
-}
+/* The usual degrees, for constant-degree loops: straight pieces (p + q) on
+ * bicubic and biquintic patches, and cubic pcurves on them, 3 (p + q). */
+#define PC_PIECE_EVAL_FIXED(N)                                                               \
+    static PC_NEVER_INLINE PC_HOT_CLONES void piece_eval_##N(const double *cw, double s,    \
+                                                             pc_vec3 out[3])                 \
+    {                                                                                        \
+        piece_eval(N, cw, s, out);                                                           \
+    }
+PC_PIECE_EVAL_FIXED(6)
+PC_PIECE_EVAL_FIXED(10)
+PC_PIECE_EVAL_FIXED(18)
+PC_PIECE_EVAL_FIXED(30)
 
 void pc_piece_eval(int n, const double *cw, double s, pc_vec3 out[3])
 {
-    if (n == 6)
-        piece_eval_6(cw, s, out);
-    else if (n == 10)
-        piece_eval_10(cw, s, out);
-    else
-        piece_eval(n, cw, s, out);
+    switch (n) {
+    case 6: piece_eval_6(cw, s, out); break;
+    case 10: piece_eval_10(cw, s, out); break;
+    case 18: piece_eval_18(cw, s, out); break;
+    case 30: piece_eval_30(cw, s, out); break;
+    default: piece_eval(n, cw, s, out); break;
+    }
 }
 
 double pc_piece_distance(int n, const double *cw, pc_vec3 x, double s0, double *s_foot)
