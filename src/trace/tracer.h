@@ -44,6 +44,7 @@ typedef struct pc_tracer {
     size_t max_points;     /* budget of vertices over all branches */
     size_t n_points;       /* vertices added so far */
     int limit_hit;         /* max_points stopped a branch */
+    int criteria_only;     /* the sweep searches only where the criteria ask */
 } pc_tracer;
 
 /* Traces one branch from the seed (a corrected point) towards t_stop

@@ -36,6 +36,12 @@ projcurve_curve *shape_example1_curve(void);
  * back to x = 20 (quadratic B-spline profile, linear in y). */
 projcurve_surface *shape_c_fold(void);
 
+/* A Z-folded sheet (three layers at z = 0, 20, 40, the bottom from x = 20
+ * to 100, the middle from 100 back to 10, the top from 10 to about 55): a
+ * ray from above meets it three times where the layers overlap. Quadratic
+ * B-spline profile in the xz-plane, extruded along y in [0, 100]. */
+projcurve_surface *shape_z_fold(void);
+
 /* A bicubic bumpy sheet over [0, 100]^2 (heights from a fixed seed, within
  * +-amp), 8 x 8 control net, domain [0, 1]^2. */
 projcurve_surface *shape_bumpy(double amp, unsigned long long seed);
