@@ -13,11 +13,16 @@
 #include <stdio.h>
 
 #include "check.h"
+#include "exit_oracle.h"
 #include "trace_oracle.h"
 #include "trace_shapes.h"
 
 #define N_SAMPLES 10000
 #define RESIDUAL_TOL 1e-9
+/* Boundary ends lie on the exact crossing of the projection with the
+ * boundary (exit_oracle) to this fraction of the model size (issue 5:
+ * the exit point located to 1e-10). */
+#define EXIT_TOL 1e-10
 
 typedef struct expected_branch {
     projcurve_branch_start start;
@@ -145,6 +150,12 @@ static void check_case_with(const char *name, const projcurve_surface *s,
         }
     }
     check_statistics(r, s, expected_jumps);
+    exit_oracle_report ends;
+    exit_oracle_check_ends(s, c, d, r, &ends);
+    exit_oracle_print(name, &ends);
+    CHECK(ends.not_found == 0);
+    CHECK(ends.max_dist <= EXIT_TOL);
+    CHECK(ends.max_margin == 0.0);
     trace_oracle_report rep;
     trace_oracle_check(s, c, d, r, N_SAMPLES, &rep);
     trace_oracle_print(name, &rep);
