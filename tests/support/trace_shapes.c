@@ -154,3 +154,23 @@ projcurve_surface *shape_z_fold(void)
     projcurve_surface_create_nurbs(NULL, 2, 1, 11, 2, ctrl, NULL, ku, kv, &s);
     return s;
 }
+
+projcurve_surface *shape_pinched_sheet(void)
+{
+    /* rows along v: y, z and whether the row is the collapsed one */
+    const double ry[5] = {0, 25, 50, 75, 100}, rz[5] = {0, 5, 10, 5, 0};
+    const double cx[4] = {0, 100.0 / 3.0, 200.0 / 3.0, 100};
+    double ctrl[3 * 20];
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 4; ++i) {
+            double *p = ctrl + 3 * (4 * j + i);
+            p[0] = j == 2 ? 50.0 : cx[i];
+            p[1] = ry[j];
+            p[2] = rz[j];
+        }
+    const double ku[7] = {0, 0, 0, 0.5, 1, 1, 1};
+    const double kv[8] = {0, 0, 0, 0.5, 0.5, 1, 1, 1};
+    projcurve_surface *s = NULL;
+    projcurve_surface_create_nurbs(NULL, 2, 2, 4, 5, ctrl, NULL, ku, kv, &s);
+    return s;
+}
