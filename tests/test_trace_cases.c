@@ -3,8 +3,9 @@
  * holds one surface and its test curve(s); the projection along the listed
  * direction must give the expected number of branches, every vertex on the
  * projection, nothing missed by brute force, boundary ends exactly on the
- * boundary; and, composed (the default options), pieces joined into a
- * curve that lies on the surface.
+ * boundary and on the crossing found by exit_oracle, the start and end
+ * reasons the MANIFEST notes state; and, composed (the default options),
+ * pieces joined into a curve that lies on the surface.
  */
 #include <math.h>
 #include <stdio.h>
@@ -12,10 +13,48 @@
 #include <string.h>
 
 #include "check.h"
+#include "exit_oracle.h"
 #include "trace_oracle.h"
 
-#define N_SAMPLES 4000
+/* Brute force at 10,000 evenly spaced t (issue 5). */
+#define N_SAMPLES 10000
 #define RESIDUAL_TOL 1e-9
+/* Boundary ends on the exact crossing of the projection with the boundary
+ * (exit_oracle), relative to the model size (issue 5: to 1e-10). */
+#define EXIT_TOL 1e-10
+
+/* How the branches of a case start and end, where its MANIFEST notes say
+ * (in any order). */
+typedef struct expected_reasons {
+    const char *name;
+    size_t n;
+    projcurve_branch_start start[2];
+    projcurve_branch_end end[2];
+} expected_reasons;
+
+static const expected_reasons REASONS[] = {
+    /* "from x=40 out past the x=100 edge and back": the first branch ends
+     * on the boundary, the second starts there */
+    {"bumpy_boundary_exit_reenter", 2,
+     {PROJCURVE_START_CURVE_START, PROJCURVE_START_BOUNDARY},
+     {PROJCURVE_END_BOUNDARY, PROJCURVE_END_CURVE_END}},
+    /* "bottom starts at x~0 edge, top appears mid-curve at x~20 (top sheet
+     * edge)": both born on an edge, both run to the curve's end */
+    {"fold_c_sheet_jump", 2,
+     {PROJCURVE_START_BOUNDARY, PROJCURVE_START_BOUNDARY},
+     {PROJCURVE_END_CURVE_END, PROJCURVE_END_CURVE_END}},
+    /* "1 branch over the whole curve" */
+    {"song_yong_example1", 1, {PROJCURVE_START_CURVE_START}, {PROJCURVE_END_CURVE_END}},
+    {"bumpy_bicubic_8x8_down", 1, {PROJCURVE_START_CURVE_START}, {PROJCURVE_END_CURVE_END}},
+};
+
+static const expected_reasons *reasons_of(const char *name)
+{
+    for (size_t k = 0; k < sizeof REASONS / sizeof REASONS[0]; ++k)
+        if (strcmp(REASONS[k].name, name) == 0)
+            return &REASONS[k];
+    return NULL;
+}
 
 typedef struct manifest_row {
     char name[128], mode[32];
@@ -48,11 +87,25 @@ static size_t check_traced(const manifest_row *row, const projcurve_surface *s,
     CHECK_OK(projcurve_project_directional(NULL, s, c, row->dir, o, &r));
     projcurve_options_destroy(o);
     const size_t nb = projcurve_result_branch_count(r);
+    const expected_reasons *ex = reasons_of(row->name);
+    int used[2] = {0, 0};
+    if (ex != NULL)
+        CHECK(nb == ex->n);
     for (size_t i = 0; i < nb; ++i) {
         projcurve_branch_start start;
         projcurve_branch_end end;
         size_t n = 0;
         projcurve_result_branch_info(NULL, r, i, NULL, &start, &end, &n, NULL);
+        if (ex != NULL) {
+            int found = 0;
+            for (size_t k = 0; k < ex->n && !found; ++k)
+                if (!used[k] && ex->start[k] == start && ex->end[k] == end)
+                    found = used[k] = 1;
+            if (!found)
+                pc_test_fail_at(__FILE__, __LINE__,
+                                "%s: branch %zu starts %d, ends %d: not expected", row->name, i,
+                                (int)start, (int)end);
+        }
         double *p = malloc(3 * n * sizeof *p);
         projcurve_result_branch_points(NULL, r, i, n, p, &n);
         if (start == PROJCURVE_START_BOUNDARY)
@@ -63,6 +116,12 @@ static size_t check_traced(const manifest_row *row, const projcurve_surface *s,
                p[3 * n - 3], n, (int)start, (int)end);
         free(p);
     }
+    exit_oracle_report ends;
+    exit_oracle_check_ends(s, c, row->dir, r, &ends);
+    exit_oracle_print(row->name, &ends);
+    CHECK(ends.not_found == 0);
+    CHECK(ends.max_dist <= EXIT_TOL);
+    CHECK(ends.max_margin == 0.0);
     trace_oracle_report rep;
     trace_oracle_check(s, c, row->dir, r, N_SAMPLES, &rep);
     trace_oracle_print(row->name, &rep);

@@ -148,6 +148,7 @@ void pc_options_defaults(struct projcurve_options *o)
         else
             *pc_option_int(o, d) = (long long)d->default_value;
     }
+    o->sweep_criteria_only = 0;
 }
 
 projcurve_status projcurve_options_create(projcurve_context *ctx, projcurve_options **out)

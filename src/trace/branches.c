@@ -79,6 +79,7 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     tr->max_step = fmin(PC_MAX_STEP_FACTOR * opts->arc_step_fraction, 1.0) * span;
     tr->min_step = PC_TRACE_MIN_STEP * span;
     tr->max_points = (size_t)opts->max_points;
+    tr->criteria_only = opts->sweep_criteria_only != 0;
 }
 
 static projcurve_branch_start start_reason(projcurve_branch_end backward_end)
@@ -306,10 +307,13 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
         if (st != PROJCURVE_OK)
             break;
         /* the criteria run at every check (they keep the previous ray);
-         * every PC_SWEEP_FULL_EVERY-th check searches regardless */
+         * every PC_SWEEP_FULL_EVERY-th check searches regardless, unless
+         * the criteria alone are asked for */
         const int asked =
             !finder->may_jump || finder->may_jump(finder, t, active.items, active.count, tr->ds);
-        if (!asked && check % PC_SWEEP_FULL_EVERY != PC_SWEEP_FULL_EVERY - 1)
+        const int periodic = !tr->criteria_only &&
+                             check % PC_SWEEP_FULL_EVERY == PC_SWEEP_FULL_EVERY - 1;
+        if (!asked && !periodic)
             continue;
         st = finder->find(finder, tr->ctx, t, &found);
         if (st != PROJCURVE_OK)

@@ -89,6 +89,25 @@ static void record_error(pc_tracer *tr, double residual_error)
         tr->r->stats.error_max = e;
 }
 
+/* The correction from the prediction pred to uv, measured on S: farther
+ * than PC_TRACE_MAX_CORRECTION times the predicted step's chord (cur to
+ * pred). Asked only when the correction is long in (u, v): where S is
+ * nearly degenerate (next to a collapsed edge, Su ~ 0) a long move in u is
+ * a short one on S, the corrector's tolerance leaves u loose there, and the
+ * (u, v) test alone would cut the step down to nothing. */
+static int moved_far_on_surface(const pc_tracer *tr, const pc_proj_point *cur,
+                                const double pred[2], const double uv[2])
+{
+    const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
+    pc_vec3 at_pred, at_uv;
+    pc_nurbs_surface_eval(s, clamp(pred[0], tr->dom[0], tr->dom[1]),
+                          clamp(pred[1], tr->dom[2], tr->dom[3]), 0, NULL, NULL, &at_pred);
+    pc_nurbs_surface_eval(s, uv[0], uv[1], 0, NULL, NULL, &at_uv);
+    const double noise = PC_TRACE_BOUNDARY_TOL * tr->proj->model_size;
+    return vec3_dist(at_uv, at_pred) >
+           PC_TRACE_MAX_CORRECTION * vec3_dist(at_pred, cur->s) + noise;
+}
+
 /* Predicts and corrects one step from cur to the curve parameter t. On
  * ACCEPT and EXIT, *next holds the new point (with its derivatives). */
 static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
@@ -139,7 +158,8 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     if (moved2 > limit * limit * stride2) {
         const double noise =
             PC_TRACE_BOUNDARY_TOL * (tr->dom[1] - tr->dom[0] + tr->dom[3] - tr->dom[2]);
-        if (sqrt(moved2) > limit * sqrt(stride2) + noise)
+        if (sqrt(moved2) > limit * sqrt(stride2) + noise &&
+            moved_far_on_surface(tr, cur, pred, uv))
             return STEP_REJECT;
     }
     if (derived == 0)

@@ -17,7 +17,8 @@
  * branch stalled at a fold rather than failed. */
 #define PC_TRACE_DET_NEAR_FOLD 1e-2
 /* A corrected point farther than this fraction of the predicted step from
- * the prediction is taken as a jump to another sheet, and the step is cut. */
+ * the prediction, in (u, v) and on S, is taken as a jump to another sheet,
+ * and the step is cut. */
 #define PC_TRACE_MAX_CORRECTION 0.5
 /* Boundary exits are located until (u, v) is within this fraction of the
  * domain's width from the boundary, then snapped onto it. */
@@ -44,6 +45,7 @@ typedef struct pc_tracer {
     size_t max_points;     /* budget of vertices over all branches */
     size_t n_points;       /* vertices added so far */
     int limit_hit;         /* max_points stopped a branch */
+    int criteria_only;     /* the sweep searches only where the criteria ask */
 } pc_tracer;
 
 /* Traces one branch from the seed (a corrected point) towards t_stop

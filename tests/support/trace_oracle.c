@@ -1,5 +1,7 @@
 #include "trace_oracle.h"
 
+#include "ray_oracle.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -7,6 +9,36 @@
 
 /* Most hits of one ray considered. */
 #define ORACLE_MAX_HITS 16
+/* A hit grazes S when |cos| of the angle between Dir and the normal is
+ * below this (the library's PROJCURVE_HIT_TANGENT rule, ray_patch.c). */
+#define ORACLE_TANGENT_COS 1e-6
+/* Hits of the two intersections closer than this fraction of the model
+ * size are one point (both polish to ~1e-11 of it). */
+#define ORACLE_SAME_HIT 1e-7
+/* Mesh of the independent intersection: cells per knot span and side,
+ * within bounds (the chord error of a bicubic span of these tests at 24
+ * cells is ~1e-4 of its size, far below the folds' curvature radii). */
+#define ORACLE_CELLS_PER_SPAN 24
+#define ORACLE_MIN_CELLS 96
+#define ORACLE_MAX_CELLS 384
+
+/* The independent oracle's evaluator: S, Su, Sv by the public evaluation. */
+static void eval_surface(void *user, double u, double v, double out[9])
+{
+    projcurve_surface_eval(NULL, (const projcurve_surface *)user, u, v, 1, out);
+}
+
+static int mesh_cells(size_t spans)
+{
+    const size_t c = ORACLE_CELLS_PER_SPAN * spans;
+    return c < ORACLE_MIN_CELLS ? ORACLE_MIN_CELLS : (c > ORACLE_MAX_CELLS ? ORACLE_MAX_CELLS : (int)c);
+}
+
+/* One brute-force hit: the point and whether it grazes S. */
+typedef struct sample_hit {
+    double x[3];
+    int tangent;
+} sample_hit;
 
 typedef struct branch_view {
     double *pts; /* (t, u, v) */
@@ -93,26 +125,72 @@ void trace_oracle_check(const projcurve_surface *s, const projcurve_curve *c, co
     }
     rep->step = max_chord;
     /* uncovered hits of the previous sample, to measure runs of them */
-    double prev_far[3 * ORACLE_MAX_HITS];
+    double prev_far[3 * 2 * ORACLE_MAX_HITS];
     size_t n_prev_far = 0;
     double run = 0.0;
     double t0, t1;
     projcurve_curve_domain(NULL, c, &t0, &t1);
+    double dom[4], box[6];
+    size_t spans_u = 1, spans_v = 1;
+    projcurve_surface_domain(NULL, s, dom);
+    projcurve_surface_bounds(NULL, s, box);
+    projcurve_surface_info(NULL, s, NULL, NULL, NULL, NULL, &spans_u, &spans_v, NULL);
+    const double lo[3] = {box[0], box[1], box[2]}, hi[3] = {box[3], box[4], box[5]};
+    const double same = ORACLE_SAME_HIT * dist3(lo, hi);
+    pc_oracle_mesh mesh;
+    const int have_mesh = pc_oracle_mesh_build(&mesh, eval_surface, (void *)s, dom,
+                                               mesh_cells(spans_u), mesh_cells(spans_v));
+    rep->mesh_failed = !have_mesh;
     for (size_t k = 0; k < n_samples; ++k) {
         const double t = t0 + (t1 - t0) * (double)k / (double)(n_samples - 1);
         double p[3], hits[3 * ORACLE_MAX_HITS];
         unsigned flags[ORACLE_MAX_HITS];
-        size_t count = 0;
+        size_t n_lib = 0;
         projcurve_curve_eval(NULL, c, t, 0, p);
-        projcurve_surface_intersect_line(NULL, s, p, d, 1, ORACLE_MAX_HITS, hits, flags, &count);
+        projcurve_surface_intersect_line(NULL, s, p, d, 1, ORACLE_MAX_HITS, hits, flags, &n_lib);
         rep->samples++;
-        if (count > ORACLE_MAX_HITS)
-            count = ORACLE_MAX_HITS;
-        double far[3 * ORACLE_MAX_HITS];
-        size_t n_far = 0;
-        for (size_t h = 0; h < count; ++h) {
+        if (n_lib > ORACLE_MAX_HITS)
+            n_lib = ORACLE_MAX_HITS;
+        /* the independent intersection's hits, then the library's that it
+         * did not find (grazing pairs the mesh can miss): each must be
+         * covered */
+        sample_hit all[2 * ORACLE_MAX_HITS];
+        size_t count = 0;
+        pc_oracle_hit oh[ORACLE_MAX_HITS];
+        size_t n_or = have_mesh ? pc_oracle_line_hits(&mesh, p, d, 1, oh, ORACLE_MAX_HITS) : 0;
+        if (n_or > ORACLE_MAX_HITS)
+            n_or = ORACLE_MAX_HITS;
+        for (size_t h = 0; h < n_or; ++h) {
+            surface_point(s, oh[h].u, oh[h].v, all[count].x);
+            all[count++].tangent = oh[h].cos_dir < ORACLE_TANGENT_COS;
+        }
+        rep->oracle_hits += n_or;
+        for (size_t h = 0; h < n_lib; ++h) {
             const double x[3] = {p[0] + hits[3 * h + 2] * d[0], p[1] + hits[3 * h + 2] * d[1],
                                  p[2] + hits[3 * h + 2] * d[2]};
+            int known = 0;
+            for (size_t i = 0; i < n_or && !known; ++i)
+                known = dist3(all[i].x, x) <= same;
+            if (known)
+                continue;
+            memcpy(all[count].x, x, sizeof x);
+            all[count++].tangent = (flags[h] & PROJCURVE_HIT_TANGENT) != 0;
+            rep->library_only++;
+        }
+        for (size_t i = 0; i < n_or; ++i) {
+            int known = 0;
+            for (size_t h = 0; h < n_lib && !known; ++h) {
+                const double x[3] = {p[0] + hits[3 * h + 2] * d[0],
+                                     p[1] + hits[3 * h + 2] * d[1],
+                                     p[2] + hits[3 * h + 2] * d[2]};
+                known = dist3(all[i].x, x) <= same;
+            }
+            rep->oracle_only += !known;
+        }
+        double far[3 * 2 * ORACLE_MAX_HITS];
+        size_t n_far = 0;
+        for (size_t h = 0; h < count; ++h) {
+            const double *x = all[h].x;
             rep->hits++;
             int covered = 0, near_end = 0;
             for (size_t i = 0; i < nb && !covered; ++i) {
@@ -129,12 +207,12 @@ void trace_oracle_check(const projcurve_surface *s, const projcurve_curve *c, co
             }
             if (covered) {
                 rep->covered++;
-            } else if (near_end || (flags[h] & PROJCURVE_HIT_TANGENT)) {
+            } else if (near_end || all[h].tangent) {
                 rep->uncovered_near++;
             } else {
                 rep->uncovered_far++;
                 rep->worst_far_t = t;
-                memcpy(far + 3 * n_far++, x, sizeof x);
+                memcpy(far + 3 * n_far++, x, 3 * sizeof *x);
             }
         }
         /* extend the run by the closest step between uncovered hits of
@@ -149,6 +227,8 @@ void trace_oracle_check(const projcurve_surface *s, const projcurve_curve *c, co
         memcpy(prev_far, far, 3 * n_far * sizeof(double));
         n_prev_far = n_far;
     }
+    if (have_mesh)
+        pc_oracle_mesh_free(&mesh);
     for (size_t i = 0; i < nb; ++i)
         free(views[i].pts);
     free(views);
@@ -161,9 +241,11 @@ int trace_oracle_missed_branch(const trace_oracle_report *rep)
 
 void trace_oracle_print(const char *name, const trace_oracle_report *rep)
 {
-    printf("%s: %zu samples, %zu hits, %zu covered, %zu near ends, %zu missed (t=%.6g, "
-           "longest run %.3g on S, step %.3g); %zu vertices, max residual %.3g, %zu behind\n",
-           name, rep->samples, rep->hits, rep->covered, rep->uncovered_near, rep->uncovered_far,
-           rep->worst_far_t, rep->missed_arc, rep->step, rep->vertices, rep->max_residual,
-           rep->behind);
+    printf("%s: %zu samples, %zu hits (%zu by the mesh, %zu only by the library, %zu missed by "
+           "the library), %zu covered, %zu near ends, %zu missed (t=%.6g, longest run %.3g on "
+           "S, step %.3g); %zu vertices, max residual %.3g, %zu behind%s\n",
+           name, rep->samples, rep->hits, rep->oracle_hits, rep->library_only, rep->oracle_only,
+           rep->covered, rep->uncovered_near, rep->uncovered_far, rep->worst_far_t,
+           rep->missed_arc, rep->step, rep->vertices, rep->max_residual, rep->behind,
+           rep->mesh_failed ? " (NO MESH)" : "");
 }

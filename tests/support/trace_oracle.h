@@ -1,9 +1,13 @@
 /*
  * An independent check of a directional projection result: dense brute
  * force (the ray P(t) + lambda Dir, lambda > 0, intersected with S at n
- * evenly spaced t through the public line/surface intersection) against
- * the traced branches, and every traced vertex against the projection
- * equation.
+ * evenly spaced t) against the traced branches, and every traced vertex
+ * against the projection equation. The ray's hits are those of the
+ * independent mesh intersection of ray_oracle.h (which shares nothing with
+ * the seed finder of the tracer), joined by those of the public
+ * line/surface intersection that it does not find (grazing pairs a mesh
+ * can miss): a hit missed by the library's intersection, and so by the
+ * tracer's seeds, is still a hit the branches must cover.
  */
 #ifndef PC_TEST_TRACE_ORACLE_H
 #define PC_TEST_TRACE_ORACLE_H
@@ -14,7 +18,11 @@
 
 typedef struct trace_oracle_report {
     size_t samples;        /* t values sampled */
-    size_t hits;           /* ray hits found by brute force */
+    size_t hits;           /* ray hits found by brute force (both intersections) */
+    size_t oracle_hits;    /* of them, found by the mesh intersection */
+    size_t library_only;   /* found by the public intersection alone */
+    size_t oracle_only;    /* found by the mesh, not by the public intersection */
+    int mesh_failed;       /* the mesh could not be built (out of memory) */
     size_t covered;        /* hits within half a step of a branch at that t */
     size_t uncovered_near; /* hits not covered, within two steps of a branch end */
     size_t uncovered_far;  /* hits not covered elsewhere: a missed branch */

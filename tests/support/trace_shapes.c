@@ -132,3 +132,45 @@ projcurve_surface *shape_bumpy(double amp, unsigned long long seed)
     projcurve_surface_create_nurbs(NULL, 3, 3, 8, 8, ctrl, NULL, k, k, &s);
     return s;
 }
+
+projcurve_surface *shape_z_fold(void)
+{
+    const double px[11] = {20, 60, 100, 115, 100, 60, 10, -5, 10, 40, 70};
+    const double pz[11] = {0, 0, 0, 10, 20, 20, 20, 30, 40, 40, 40};
+    double ctrl[3 * 22];
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 11; ++i) {
+            ctrl[3 * (j * 11 + i) + 0] = px[i];
+            ctrl[3 * (j * 11 + i) + 1] = 100.0 * j;
+            ctrl[3 * (j * 11 + i) + 2] = pz[i];
+        }
+    double ku[14];
+    for (int i = 0; i < 14; ++i) {
+        const double k = (double)(i - 2);
+        ku[i] = k < 0 ? 0.0 : (k > 9 ? 1.0 : k / 9.0);
+    }
+    const double kv[4] = {0, 0, 1, 1};
+    projcurve_surface *s = NULL;
+    projcurve_surface_create_nurbs(NULL, 2, 1, 11, 2, ctrl, NULL, ku, kv, &s);
+    return s;
+}
+
+projcurve_surface *shape_pinched_sheet(void)
+{
+    /* rows along v: y, z and whether the row is the collapsed one */
+    const double ry[5] = {0, 25, 50, 75, 100}, rz[5] = {0, 5, 10, 5, 0};
+    const double cx[4] = {0, 100.0 / 3.0, 200.0 / 3.0, 100};
+    double ctrl[3 * 20];
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 4; ++i) {
+            double *p = ctrl + 3 * (4 * j + i);
+            p[0] = j == 2 ? 50.0 : cx[i];
+            p[1] = ry[j];
+            p[2] = rz[j];
+        }
+    const double ku[7] = {0, 0, 0, 0.5, 1, 1, 1};
+    const double kv[8] = {0, 0, 0, 0.5, 0.5, 1, 1, 1};
+    projcurve_surface *s = NULL;
+    projcurve_surface_create_nurbs(NULL, 2, 2, 4, 5, ctrl, NULL, ku, kv, &s);
+    return s;
+}

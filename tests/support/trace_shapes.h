@@ -36,6 +36,20 @@ projcurve_curve *shape_example1_curve(void);
  * back to x = 20 (quadratic B-spline profile, linear in y). */
 projcurve_surface *shape_c_fold(void);
 
+/* A Z-folded sheet (three layers at z = 0, 20, 40, the bottom from x = 20
+ * to 100, the middle from 100 back to 10, the top from 10 to about 55): a
+ * ray from above meets it three times where the layers overlap. Quadratic
+ * B-spline profile in the xz-plane, extruded along y in [0, 100]. */
+projcurve_surface *shape_z_fold(void);
+
+/* Two sheets meeting at a point inside the domain: biquadratic, the
+ * control row at v = 0.5 collapsed to (50, 50, 10) with a double knot
+ * there, so that the surface passes through it and the whole row v = 0.5
+ * (the edge the two patch rows share) maps to that point (Su = 0 on it).
+ * Rows at y = 0, 25 (z = 0, 5) span x in [0, 100], as do the rows at
+ * y = 75, 100 (z = 5, 0); the sheet narrows to the point between them. */
+projcurve_surface *shape_pinched_sheet(void);
+
 /* A bicubic bumpy sheet over [0, 100]^2 (heights from a fixed seed, within
  * +-amp), 8 x 8 control net, domain [0, 1]^2. */
 projcurve_surface *shape_bumpy(double amp, unsigned long long seed);
