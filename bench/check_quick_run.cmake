@@ -1,7 +1,11 @@
 # Runs one projcurve-bench subcommand in quick mode and checks its outputs:
 # exit code 0, JSON that parses and holds the documented members as numbers,
-# and an SVG document. Times are never checked.
-#   cmake -DBENCH=... -DBENCH_COMMAND=... -DOUT_DIR=... -DSHARED_DIR=... -P check_quick_run.cmake
+# and an SVG document that passes `xmllint --noout` where xmllint is
+# installed. Times are never checked.
+#   cmake -DBENCH=... -DBENCH_COMMAND=... -DOUT_DIR=... -DSHARED_DIR=...
+#         [-DHAVE_OCCT=ON] -P check_quick_run.cmake
+# HAVE_OCCT says the bench was built with Open CASCADE: then every occt_*
+# member must be a number (null would mean Open CASCADE's side failed).
 # cases and occt need the shared cases; without them there is nothing to run.
 if(DEFINED ENV{PROJCURVE_SHARED_DIR})
   set(SHARED_DIR $ENV{PROJCURVE_SHARED_DIR})
@@ -71,6 +75,13 @@ elseif(BENCH_COMMAND STREQUAL "scaling")
   expect_rows(eps inv_eps_d ms pieces)
   expect_rows(patches patches ms pieces)
   expect_rows(length length ms pieces)
+  string(JSON exponents ERROR_VARIABLE err GET "${doc}" exponents)
+  if(err)
+    message(FATAL_ERROR "scaling: no 'exponents' object ${err}")
+  endif()
+  foreach(member ms_vs_inv_eps_d pieces_vs_inv_eps_d ms_vs_patches ms_per_ln_patches ms_vs_length)
+    expect_member("${exponents}" ${member} NUMBER "exponents")
+  endforeach()
 elseif(BENCH_COMMAND STREQUAL "occt")
   expect_rows(cases ours_ms ours_deviation ours_branches)
   string(JSON n LENGTH "${doc}" cases)
@@ -78,10 +89,17 @@ elseif(BENCH_COMMAND STREQUAL "occt")
   foreach(i RANGE ${last})
     string(JSON row GET "${doc}" cases ${i})
     expect_member("${row}" name STRING "cases[${i}]")
+    if(HAVE_OCCT)
+      set(allowed "^NUMBER$")
+    else()
+      set(allowed "^(NUMBER|NULL)$")
+    endif()
     foreach(member occt_ms occt_deviation occt_branches)
-      string(JSON t TYPE "${row}" ${member})
-      if(NOT t MATCHES "^(NUMBER|NULL)$")
-        message(FATAL_ERROR "occt: cases[${i}].${member} is ${t}")
+      string(JSON t ERROR_VARIABLE err TYPE "${row}" ${member})
+      if(err OR NOT t MATCHES "${allowed}")
+        string(JSON status ERROR_VARIABLE err2 GET "${row}" status)
+        message(FATAL_ERROR "occt: cases[${i}].${member} is '${t}', expected ${allowed} "
+                            "(status: ${status}) ${err}")
       endif()
     endforeach()
   endforeach()
@@ -94,5 +112,16 @@ endif()
 file(READ ${svg} picture)
 if(NOT picture MATCHES "</svg>")
   message(FATAL_ERROR "${BENCH_COMMAND}: ${svg} is truncated")
+endif()
+find_program(XMLLINT xmllint)
+if(XMLLINT)
+  execute_process(COMMAND ${XMLLINT} --noout ${svg} RESULT_VARIABLE lint_rc
+    ERROR_VARIABLE lint_err)
+  if(NOT lint_rc EQUAL 0)
+    message(FATAL_ERROR "${BENCH_COMMAND}: ${svg} fails xmllint: ${lint_err}")
+  endif()
+  message(STATUS "${BENCH_COMMAND}: ${svg} passes xmllint")
+else()
+  message(STATUS "${BENCH_COMMAND}: xmllint not installed, ${svg} not validated")
 endif()
 message(STATUS "${BENCH_COMMAND}: quick run and outputs OK")

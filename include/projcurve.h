@@ -613,8 +613,13 @@ PROJCURVE_API const char *projcurve_model_skipped(const projcurve_model *model,
  * write them as one IGES 5.3 file. */
 typedef struct projcurve_iges_writer projcurve_iges_writer;
 
+/* Creates an empty writer in *out; release it with
+ * projcurve_iges_writer_destroy. ctx receives the message of a failure and
+ * may be NULL. Statuses: OK, NULL_ARGUMENT (out is NULL), NO_MEMORY.
+ * Thread-safe; a writer itself is to be used by one thread at a time. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_create(projcurve_context *ctx,
                                                             projcurve_iges_writer **out);
+/* Releases a writer (NULL is ignored). */
 PROJCURVE_API void projcurve_iges_writer_destroy(projcurve_iges_writer *writer);
 
 /* Adds a surface (entity 128); the surface is copied.

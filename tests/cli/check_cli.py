@@ -2,16 +2,18 @@
 """End-to-end checks of the projcurve command.
 
 usage: check_cli.py PART PROJCURVE SHARED_DIR WORK_DIR
-PART is one of: usage, info, demo, cases. Exit 0 = pass, 1 = fail, 77 = skip.
+PART is one of: usage, info, demo, cases, svg. Exit 0 = pass, 1 = fail, 77 = skip.
 """
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
 import iges_geometry
+import model_summary
 
 failures = []
 
@@ -29,27 +31,15 @@ def check(cond, what):
         failures.append(what)
 
 
-def xml_valid(path):
-    """xmllint --noout; None when xmllint is not installed."""
-    if shutil.which("xmllint") is None:
-        return None
-    return subprocess.run(["xmllint", "--noout", path], capture_output=True).returncode == 0
-
-
 SVG = "{http://www.w3.org/2000/svg}"
 ISO_LINES = 9  # per direction and surface (docs/cli.md)
 
 
 def check_svg(path, n_branches, n_surfaces, n_curves, what):
-    """Well-formed (xmllint when installed, and Python's XML parser),
-    self-contained SVG with the parts docs/cli.md describes: iso-parameter
-    lines, the input curves, dashed rays, a legend line per branch and each
-    branch drawn in its legend colour in both panels."""
-    valid = xml_valid(path)
-    if valid is None:
-        print("xmllint not installed: checked with Python's XML parser only")
-    else:
-        check(valid, f"{path} passes xmllint")
+    """Well-formed (Python's XML parser; xmllint in part svg), self-contained
+    SVG with the parts docs/cli.md describes: iso-parameter lines, the input
+    curves, dashed rays, a legend line per branch and each branch drawn in
+    its legend colour in both panels."""
     root = ET.parse(path).getroot()
     geometry = ("points", "d", "x", "y", "width", "height")
     check(not any(k in geometry and ("nan" in v.lower() or "inf" in v.lower())
@@ -102,7 +92,41 @@ def part_usage(exe, shared, work):
     run([exe, "project", teapot, "--dir", "0,0,-1"], 2, "surfaces without curves")
 
 
+def info_files(shared):
+    """Every file of data/real (SOURCES.md and the LICENSES folder aside)
+    and every case."""
+    real = os.path.join(shared, "data", "real")
+    cases = os.path.join(shared, "cases")
+    return ([os.path.join(real, n) for n in sorted(os.listdir(real))
+             if os.path.isfile(os.path.join(real, n)) and not n.endswith(".md")] +
+            [os.path.join(cases, n) for n in sorted(os.listdir(cases)) if n.endswith(".igs")])
+
+
 def part_info(exe, shared, work):
+    """The counts SOURCES.md gives, and for every file the degrees and knot
+    spans of each surface, in order, against model_summary's reading of the
+    file; for the cases also the degree of the input curve (126). Curves of
+    the real files are not re-derived: they come from lines, arcs,
+    composites and trims that the reader converts to B-splines."""
+    files = info_files(shared)
+    check(len([f for f in files if "data" in f]) == 13,
+          f"13 files in data/real, found {[os.path.basename(f) for f in files]}")
+    for path in files:
+        name = os.path.basename(path)
+        out = run([exe, "info", path], 0, f"info {name}").stdout
+        expected = model_summary.surfaces(path)
+        printed = model_summary.printed_surfaces(out)
+        check(f": {len(expected)} surface(s)" in out.splitlines()[0] if out else False,
+              f"info {name}: expected {len(expected)} surfaces:\n{out[:300]}")
+        if printed != expected:
+            wrong = [(i, p, e) for i, (p, e) in enumerate(zip(printed, expected)) if p != e]
+            failures.append(f"info {name}: {len(printed)} surfaces printed, {len(expected)} in "
+                            f"the file; (index, printed, expected) degrees u, v and spans u, v "
+                            f"differ at {wrong[:5]}")
+        if "/cases/" in path:
+            degrees = [int(d) for d in re.findall(r"^  curve \d+: degree (\d+),", out, re.M)]
+            want = [c.degree for c in iges_geometry.input_curves(path)]
+            check(degrees == want, f"info {name}: curve degrees {degrees}, the file's 126 {want}")
     expect = {"sunglasses_lens.igs": 9, "hammer.iges": 45, "linkrods.step": 18,
               "car_shell1.xml": 8, "teapot_newell_spd.txt": 32}
     for name, n in expect.items():
@@ -222,18 +246,63 @@ def ray_hit(surface, origin, direction, u, v):
 FOOT_STEPS = 3  # Newton steps towards the foot on E(t)
 
 
-def exact_deviation(surface, curve, direction, q, nodes, uv, tol):
+def second_partials(surface, u, v):
+    """S_uu, S_uv, S_vv by central differences of the partials (step 1e-4 of
+    the domain): only Newton's Jacobian uses them, so their error slows the
+    convergence a little and does not move the foot point."""
+    d = surface.domain
+    hu, hv = 1e-4 * (d[1] - d[0]), 1e-4 * (d[3] - d[2])
+    (su_a, _), (su_b, _) = partials(surface, u + hu, v), partials(surface, u - hu, v)
+    (su_c, sv_c), (su_d, sv_d) = partials(surface, u, v + hv), partials(surface, u, v - hv)
+    suu = [(a - b) / (2 * hu) for a, b in zip(su_a, su_b)]
+    suv = [(a - b) / (2 * hv) for a, b in zip(su_c, su_d)]
+    svv = [(a - b) / (2 * hv) for a, b in zip(sv_c, sv_d)]
+    return suu, suv, svv
+
+
+def foot_point(surface, point, u, v):
+    """Newton on (S - P).S_u = (S - P).S_v = 0 from (u, v): the foot of the
+    perpendicular from point on S, or None when it does not converge in 30
+    steps or leaves the domain. Converged when a step moves (u, v) by less
+    than 1e-10 of the domain (the partials by differences carry a relative
+    error near 1e-10, so smaller steps are noise)."""
+    d = surface.domain
+    second = None
+    for step in range(30):
+        r = sub(surface.eval(u, v), point)
+        su, sv = partials(surface, u, v)
+        if step % 3 == 0:  # the second derivatives are refreshed now and then
+            second = second_partials(surface, u, v)
+        suu, suv, svv = second
+        f1, f2 = dot(r, su), dot(r, sv)
+        a = dot(su, su) + dot(r, suu)
+        b = dot(su, sv) + dot(r, suv)
+        c = dot(sv, sv) + dot(r, svv)
+        det = a * c - b * b
+        if det == 0.0:
+            return None
+        du, dv = -(c * f1 - b * f2) / det, -(a * f2 - b * f1) / det
+        u, v = u + du, v + dv
+        if not (d[0] <= u <= d[1] and d[2] <= v <= d[3]):
+            return None
+        if abs(du) <= 1e-10 * (d[1] - d[0]) and abs(dv) <= 1e-10 * (d[3] - d[2]):
+            return surface.eval(u, v)
+    return None
+
+
+def exact_deviation(hit, curve, q, nodes, uv, tol):
     """Largest distance from the 3D curve at the middle of each traced span
-    to the exact projected curve E(t) = C(t) + s Dir on S, and the number of
-    spans where Newton found no exact point. Any point of E bounds that
+    to the exact projected curve E(t) = hit(C(t)) on S (the ray's hit or the
+    foot point, found by Newton from the traced (u, v) interpolated), and
+    the number of spans where Newton found no exact point. Any point of E bounds that
     distance from above: first E at the same t (the composed curve's
     parameter is close to t, not equal); where that exceeds eps_D, the
     parameter is moved towards the foot, t += (X - E)·E' / |E'|^2, and
     the smallest distance seen is kept."""
     def exact(t, i):
         f = (t - nodes[i]) / (nodes[i + 1] - nodes[i])
-        return ray_hit(surface, curve.eval(t), direction, uv[i][0] + f * (uv[i + 1][0] - uv[i][0]),
-                       uv[i][1] + f * (uv[i + 1][1] - uv[i][1]))
+        return hit(curve.eval(t), uv[i][0] + f * (uv[i + 1][0] - uv[i][0]),
+                   uv[i][1] + f * (uv[i + 1][1] - uv[i][1]))
 
     worst, missed = 0.0, 0
     for i in range(len(nodes) - 1):
@@ -262,7 +331,8 @@ def check_branch_geometry(name, case, b, written, curve):
     """A branch judged from the written IGES alone: its pcurve nodes are
     traced points, which must satisfy the projection condition; the 3D
     curve must pass within eps_D of them and, between them, of the exact
-    projection found by Newton's method on the ray."""
+    projection found by Newton's method (on the ray, or on the foot-point
+    equations for orthogonal projection)."""
     surface, pcurve, q = written
     tol = float(case["tol_dist"])
     size = max(norm(sub(surface.eval(surface.domain[0], surface.domain[2]),
@@ -306,12 +376,15 @@ def check_branch_geometry(name, case, b, written, curve):
             u, v, _ = pcurve.eval(t)
             apart = max(apart, norm(sub(q.eval(t), surface.eval(u, v))))
     check(apart <= 1e-12 * size, f"{name}: S(pcurve(t)) is {apart:.3g} from the 3D curve")
-    if not ortho:
-        worst_mid, missed = exact_deviation(surface, curve, direction, q, nodes, uv, tol)
-        check(missed <= max(1, len(nodes) // 50),
-              f"{name}: Newton found {len(nodes) - 1 - missed} of {len(nodes) - 1} midpoints")
-        check(worst_mid <= tol, f"{name}: 3D curve {worst_mid:.3g} from the exact projection "
-                                f"between traced points (eps_D {tol})")
+    if ortho:
+        hit = lambda p, u, v: foot_point(surface, p, u, v)
+    else:
+        hit = lambda p, u, v: ray_hit(surface, p, direction, u, v)
+    worst_mid, missed = exact_deviation(hit, curve, q, nodes, uv, tol)
+    check(missed <= max(1, len(nodes) // 50),
+          f"{name}: Newton found {len(nodes) - 1 - missed} of {len(nodes) - 1} midpoints")
+    check(worst_mid <= tol, f"{name}: 3D curve {worst_mid:.3g} from the exact projection "
+                            f"between traced points (eps_D {tol})")
     # how the branch starts and ends
     on_edge = lambda u, v: min(abs(u - surface.domain[0]), abs(u - surface.domain[1]),
                                abs(v - surface.domain[2]), abs(v - surface.domain[3]))
@@ -382,16 +455,44 @@ def check_several_inputs(exe, shared, work):
           "two inputs: every branch covers its curve")
 
 
+def part_svg(exe, shared, work):
+    """Every SVG the command writes (the demo's two and one per case)
+    passes xmllint --noout. Without xmllint this part is skipped (77)."""
+    if shutil.which("xmllint") is None:
+        print("SKIP: xmllint not installed (Debian: libxml2-utils): SVG not validated")
+        return 77
+    os.makedirs(work, exist_ok=True)
+    run([exe, "demo", "-o", work], 0, "demo")
+    svgs = [os.path.join(work, n + ".svg") for n in ("example1", "freeform")]
+    for case in manifest(shared):
+        out_svg = os.path.join(work, case["name"] + ".svg")
+        args = [exe, "project", os.path.join(shared, "cases", case["name"] + ".igs"),
+                "--tol", case["tol_dist"], "--svg", out_svg]
+        if case["mode"] == "orthogonal":
+            args.append("--orthogonal")
+        else:
+            args += ["--dir", f"{case['dir_x']},{case['dir_y']},{case['dir_z']}"]
+        if run(args, 0, case["name"]).returncode == 0:
+            svgs.append(out_svg)
+    for path in svgs:
+        lint = subprocess.run(["xmllint", "--noout", path], capture_output=True, text=True)
+        check(lint.returncode == 0, f"{path} fails xmllint: {lint.stderr.strip()[:300]}")
+    print(f"xmllint: {len(svgs)} SVG files checked")
+    return None
+
+
 def main():
     if len(sys.argv) != 5:
         print(__doc__)
         return 2
     part, exe, shared, work = sys.argv[1:]
-    if part in ("info", "cases", "usage") and not os.path.isdir(os.path.join(shared, "cases")):
+    if part in ("info", "cases", "usage", "svg") and not os.path.isdir(os.path.join(shared, "cases")):
         print(f"SKIP: {shared}/cases not found")
         return 77
-    {"usage": part_usage, "info": part_info, "demo": part_demo, "cases": part_cases}[part](
-        exe, shared, work)
+    parts = {"usage": part_usage, "info": part_info, "demo": part_demo, "cases": part_cases,
+             "svg": part_svg}
+    if parts[part](exe, shared, work) == 77:
+        return 77
     for f in failures:
         print("FAIL:", f)
     print(f"check_cli {part}: {len(failures)} failure(s)")

@@ -7,9 +7,22 @@
 // transferred shapes must be non-null with faces/edges where expected. For
 // (1) the geometry OCCT builds must be ours: its surfaces and curve agree
 // with the library's evaluation at sample parameters to 1e-12 relative.
+// For (2) and (3) each curve on surface is converted by OCCT's own IGES
+// geometry transfer (IGESToBRep): its 3D curve C(t) and its surface
+// composed with its pcurve, S(p(t)), must agree to 1e-12 relative with the
+// branch's curve and with the library's surface at the (u, v) of the
+// branch's pieces (projcurve_result_piece_pcurve), at samples over every
+// piece.
 #include <BRep_Tool.hxx>
 #include <Geom_Curve.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <Geom_Surface.hxx>
+#include <IGESGeom_BSplineCurve.hxx>
+#include <IGESGeom_BSplineSurface.hxx>
+#include <IGESGeom_CurveOnSurface.hxx>
+#include <IGESToBRep_BasicCurve.hxx>
+#include <IGESToBRep_BasicSurface.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Reader.hxx>
 #include <IGESData_IGESEntity.hxx>
@@ -167,6 +180,102 @@ void check_same_geometry(const std::string &path, const std::vector<const projcu
     }
 }
 
+// (u, v) at s in [0, 1] of a piece's pcurve: a Bezier curve of degree
+// `degree` with (u, v) control points, by de Casteljau.
+void bezier_uv(int degree, const double *uv_ctrl, double s, double uv[2])
+{
+    double w[2 * PROJCURVE_MAX_PCURVE_POINTS];
+    std::copy(uv_ctrl, uv_ctrl + 2 * (degree + 1), w);
+    for (int r = 1; r <= degree; ++r)
+        for (int i = 0; i <= degree - r; ++i)
+            for (int k = 0; k < 2; ++k)
+                w[2 * i + k] = (1.0 - s) * w[2 * i + k] + s * w[2 * (i + 1) + k];
+    uv[0] = w[0];
+    uv[1] = w[1];
+}
+
+// Samples per composed piece (its ends included) when comparing a written
+// curve on surface with the branch it came from.
+constexpr int kPieceSamples = 5;
+
+// Every curve on surface (142) of path, in file order, is branch i of r on
+// s: OCCT's 3D curve and its surface composed with its pcurve, both built
+// by IGESToBRep from the entities, are compared with the branch's curve
+// and with S at the (u, v) of the branch's pieces.
+void check_curves_on_surface(const std::string &path, const projcurve_surface *s,
+                             const projcurve_result *r, double scale)
+{
+    IGESControl_Reader reader;
+    if (reader.ReadFile(path.c_str()) != IFSelect_RetDone)
+        return; // reported by check_file
+    Handle(IGESData_IGESModel) model = reader.IGESModel();
+    std::vector<Handle(IGESGeom_CurveOnSurface)> cos;
+    for (Standard_Integer i = 1; i <= model->NbEntities(); ++i) {
+        Handle(IGESGeom_CurveOnSurface) c =
+            Handle(IGESGeom_CurveOnSurface)::DownCast(model->Entity(i));
+        if (!c.IsNull())
+            cos.push_back(c);
+    }
+    const size_t n_branches = projcurve_result_branch_count(r);
+    CHECK(cos.size() == n_branches);
+    IGESToBRep_BasicCurve curves;
+    IGESToBRep_BasicSurface surfaces;
+    for (size_t b = 0; b < std::min(cos.size(), n_branches); ++b) {
+        Handle(IGESGeom_BSplineSurface) gs =
+            Handle(IGESGeom_BSplineSurface)::DownCast(cos[b]->Surface());
+        Handle(IGESGeom_BSplineCurve) g2 =
+            Handle(IGESGeom_BSplineCurve)::DownCast(cos[b]->CurveUV());
+        Handle(IGESGeom_BSplineCurve) g3 =
+            Handle(IGESGeom_BSplineCurve)::DownCast(cos[b]->Curve3D());
+        CHECK(!gs.IsNull() && !g2.IsNull() && !g3.IsNull());
+        if (gs.IsNull() || g2.IsNull() || g3.IsNull())
+            continue;
+        Handle(Geom_Surface) occt_s = surfaces.TransferBSplineSurface(gs);
+        Handle(Geom2d_Curve) occt_p = curves.Transfer2dBSplineCurve(g2);
+        Handle(Geom_Curve) occt_c = curves.TransferBSplineCurve(g3);
+        CHECK(!occt_s.IsNull() && !occt_p.IsNull() && !occt_c.IsNull());
+        if (occt_s.IsNull() || occt_p.IsNull() || occt_c.IsNull())
+            continue;
+        projcurve_curve *ours = nullptr;
+        size_t n_pieces = 0;
+        CHECK_OK(projcurve_result_branch_info(ctx, r, b, nullptr, nullptr, nullptr, nullptr,
+                                              &n_pieces));
+        CHECK_OK(projcurve_result_branch_curve(ctx, r, b, &ours));
+        CHECK(n_pieces > 0);
+        double curve_gap = 0.0, on_surface_gap = 0.0, worst_t = 0.0;
+        for (size_t k = 0; ours != nullptr && k < n_pieces; ++k) {
+            int degree = 0;
+            double range[2], uv_ctrl[2 * PROJCURVE_MAX_PCURVE_POINTS];
+            CHECK_OK(projcurve_result_piece(ctx, r, b, k, nullptr, nullptr, nullptr, range,
+                                            nullptr));
+            CHECK_OK(projcurve_result_piece_pcurve(ctx, r, b, k, &degree, uv_ctrl));
+            for (int i = 0; i < kPieceSamples; ++i) {
+                const double f = i / (kPieceSamples - 1.0);
+                const double t = range[0] + f * (range[1] - range[0]);
+                double p[3], uv[2], q[3];
+                CHECK_OK(projcurve_curve_eval(ctx, ours, t, 0, p));
+                const double gap_c = distance(occt_c->Value(t), p);
+                bezier_uv(degree, uv_ctrl, f, uv);
+                CHECK_OK(projcurve_surface_eval(ctx, s, uv[0], uv[1], 0, q));
+                const gp_Pnt2d puv = occt_p->Value(t);
+                const double gap_s = distance(occt_s->Value(puv.X(), puv.Y()), q);
+                if (std::max(gap_c, gap_s) > std::max(curve_gap, on_surface_gap))
+                    worst_t = t;
+                curve_gap = std::max(curve_gap, gap_c);
+                on_surface_gap = std::max(on_surface_gap, gap_s);
+            }
+        }
+        if (!(curve_gap <= kAgreeRel * scale) || !(on_surface_gap <= kAgreeRel * scale))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "%s: 142 #%zu: OCCT's 3D curve is %g from the branch's, its S(p(t)) "
+                            "%g from ours (worst at t = %.17g; allowed %g)",
+                            path.c_str(), b, curve_gap, on_surface_gap, worst_t,
+                            kAgreeRel * scale);
+        ++pc_test_checks;
+        projcurve_curve_destroy(ours);
+    }
+}
+
 projcurve_surface *plane()
 {
     const double ctrl[] = {0, 0, 0, 10, 0, 0, 0, 10, 1, 10, 10, 1};
@@ -234,6 +343,15 @@ void check_case(const std::string &dir_out, const char *name, const double dir[3
     CHECK_OK(projcurve_iges_writer_write(ctx, w, out.c_str()));
     projcurve_iges_writer_destroy(w);
     check_file(out, {{128, 1}, {126, 2 * branches}, {142, branches}}, 0, branches);
+    double d[4];
+    CHECK_OK(projcurve_surface_domain(ctx, s, d));
+    double corners[2][3];
+    CHECK_OK(projcurve_surface_eval(ctx, s, d[0], d[2], 0, corners[0]));
+    CHECK_OK(projcurve_surface_eval(ctx, s, d[1], d[3], 0, corners[1]));
+    const double size = std::max(1.0, std::hypot(corners[1][0] - corners[0][0],
+                                                 corners[1][1] - corners[0][1],
+                                                 corners[1][2] - corners[0][2]));
+    check_curves_on_surface(out, s, r, size);
     projcurve_result_destroy(r);
     projcurve_model_destroy(in);
 }
@@ -267,6 +385,7 @@ int main(int argc, char **argv)
     // The 142 is the only root (it references the rest), so OCCT transfers
     // it as an edge on the surface; the surface is there as entity 128.
     check_file(projected, {{128, 1}, {126, 2}, {142, 1}}, 0, 1);
+    check_curves_on_surface(projected, s1, r, 10.0);
 
     const double minus_x[3] = {-1.0, 0.0, 0.0}, minus_z[3] = {0.0, 0.0, -1.0};
     check_case(dir, "song_yong_example1", minus_x);
