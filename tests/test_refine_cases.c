@@ -23,12 +23,6 @@
 
 #define MAX_CASES 32
 #define NAME_LEN 96
-/* A composed piece lies on S exactly (compose/: convex combinations of the
- * patch's control points); it and S at its pcurve differ by the rounding of
- * two evaluations, a few ulps of the coordinates. The shared cases' models
- * sit within a few sizes of the origin, so 1e-12 of the size is ~100 ulps. */
-#define ON_SURFACE_REL 1e-12
-#define ON_SURFACE_SAMPLES 99 /* 100 parameters per piece */
 
 typedef struct manifest_case {
     char name[NAME_LEN];
@@ -61,27 +55,6 @@ static size_t read_manifest(manifest_case *cases, size_t capacity)
     }
     fclose(f);
     return n;
-}
-
-/* Every piece of r equals S at its pcurve (public accessors only); the
- * largest difference relative to the model size. */
-static double check_on_surface(const char *name, const projcurve_result *r,
-                             const projcurve_surface *s, int pcurve_degree)
-{
-    pc_on_surface_report rep;
-    pc_on_surface_measure(r, s, ON_SURFACE_SAMPLES, &rep);
-    CHECK(rep.failures == 0);
-    CHECK(rep.pieces == (size_t)r->stats.pieces);
-    CHECK(rep.worst_end == 0.0);
-    /* straight mode makes straight pcurves only */
-    CHECK(pcurve_degree == 3 || rep.pcurve_degree[3] == 0);
-    if (!(rep.worst <= ON_SURFACE_REL * s->size))
-        fprintf(stderr, "%s: piece %zu of branch %zu is off S(pcurve) by %.3g at s = %g "
-                        "(bound %.3g)\n",
-                name, rep.worst_piece, rep.worst_branch, rep.worst, rep.worst_s,
-                ON_SURFACE_REL * s->size);
-    CHECK(rep.worst <= ON_SURFACE_REL * s->size);
-    return rep.worst / s->size;
 }
 
 static void check_case(const manifest_case *c, const projcurve_surface *s,
@@ -122,7 +95,7 @@ static void check_case(const manifest_case *c, const projcurve_surface *s,
     CHECK(sum.worst.max_gap <= 1e-12 * s->size);
     CHECK(sum.worst.max_end_err <= 1e-9 * s->size);
     CHECK(sum.worst.off_patch == 0);
-    const double off_surface = check_on_surface(c->name, r, s, pcurve_degree);
+    const double off_surface = pc_on_surface_check(c->name, r, s, pcurve_degree);
     const size_t pieces = sum.pieces;
     const double worst = sum.worst.hausdorff / (rel_eps * s->size);
     const double worst_angle = sum.worst.max_angle;

@@ -2,20 +2,29 @@
  * Tolerance control end to end on the shapes of the tracing tests
  * (tests/support/trace_shapes): a plane seen along a slanted direction, the
  * exact rational half cylinder, a sphere whose two branches are born and end
- * on the silhouette (Dir tangent to S, det J -> 0), a rational bumpy sheet,
- * the paper's Example 1 and the C-folded sheet past the tip of its bend. For
- * eps_D = 1e-2, 1e-4, 1e-6 of the model size at eps_T = 1 degree, and 1e-3 at
- * 10 degrees, every branch is measured by the oracles of
+ * on the silhouette (Dir tangent to S, det J -> 0), a line over the sphere's
+ * pole (a collapsed edge, Su = 0), a rational bumpy sheet, the paper's
+ * Example 1, the C-folded sheet over its flat parts, past the tip of its bend
+ * and reversed (branches ending on, and born on, the silhouette), the
+ * Z-folded sheet met three times, and a bumpy sheet left and re-entered and
+ * overrun at both ends (branches ending on the boundary). For eps_D = 1e-2,
+ * 1e-3, 1e-4, 1e-5, 1e-6 of the model size at eps_T = 1 degree, and 1e-3 at
+ * 10 degrees, with straight and cubic pcurves (PROJCURVE_OPT_PCURVE_DEGREE 1
+ * and 3), every branch is measured by the oracles of
  * tests/support/piece_oracle (the exact projection by the oracle's own
  * Newton): Hausdorff distance both ways <= eps_D, joints <= eps_T, joins,
- * piece ends on the projection, one patch per piece; and the branch as one
- * NURBS curve handle traces its pieces.
+ * piece ends on the projection, one patch per piece; every piece, read
+ * through the public accessors, equals S at its pcurve at 100 parameters
+ * (tests/support/on_surface); and the branch as one NURBS curve handle
+ * traces its pieces. Also: eps_D left unset is 1e-4 of the model size, and
+ * the values the setter rejects leave it so.
  */
 #include <math.h>
 #include <stdio.h>
 
 #include "api/handles.h"
 #include "check.h"
+#include "on_surface.h"
 #include "piece_oracle.h"
 #include "shapes.h"
 #include "trace_shapes.h"
@@ -30,7 +39,9 @@ typedef struct shape_case {
 
 /* The branch as one NURBS curve (projcurve_result_branch_curve) traces the
  * same points as its pieces: the piece over [t0, t1] at s is the curve at
- * t0 + s (t1 - t0). */
+ * t = t0 + s (t1 - t0). The piece is evaluated at the s of t as rounded
+ * (t - t0 is exact): next to a fold a piece may span 1e-12 in t for 1e-5 in
+ * length, and one ulp of t would move the point by 1e-9. */
 static void check_branch_curves(const projcurve_result *r, double size)
 {
     for (size_t i = 0; i < r->n_branches; ++i) {
@@ -44,28 +55,32 @@ static void check_branch_curves(const projcurve_result *r, double size)
         for (size_t k = 0; k < b->n_pieces; ++k) {
             const pc_piece *pc = &b->pieces[k];
             for (int j = 0; j <= 4; ++j) {
-                const double sp = j / 4.0;
+                const double t = pc->t0 + j / 4.0 * (pc->t1 - pc->t0);
                 pc_vec3 x;
                 double y[3];
-                pc_oracle_piece_eval(pc, sp, &x, NULL);
-                eval_failures += projcurve_curve_eval(NULL, joined, pc->t0 + sp * (pc->t1 - pc->t0),
-                                                      0, y) != PROJCURVE_OK;
+                pc_oracle_piece_eval(pc, (t - pc->t0) / (pc->t1 - pc->t0), &x, NULL);
+                eval_failures += projcurve_curve_eval(NULL, joined, t, 0, y) != PROJCURVE_OK;
                 worst = fmax(worst, vec3_dist(x, vec3_load(y)));
             }
         }
         CHECK(eval_failures == 0);
+        if (!(worst <= 1e-11 * size))
+            fprintf(stderr, "branch %zu (%zu pieces): joined curve off its pieces by %.3g "
+                            "(bound %.3g)\n",
+                    i, b->n_pieces, worst, 1e-11 * size);
         CHECK(worst <= 1e-11 * size);
         projcurve_curve_destroy(joined);
     }
 }
 
-static void run(const shape_case *c, double rel_eps, double angle)
+static void run(const shape_case *c, double rel_eps, double angle, int pcurve_degree)
 {
     const projcurve_surface *s = c->surface;
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, rel_eps * s->size));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_ANGLE_DEG, angle));
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_PCURVE_DEGREE, pcurve_degree));
     projcurve_result *r = NULL;
     CHECK_OK(projcurve_project_directional(NULL, s, c->curve, c->dir, o, &r));
     projcurve_options_destroy(o);
@@ -77,10 +92,11 @@ static void run(const shape_case *c, double rel_eps, double angle)
     pc_oracle_projector(s, c->curve, c->dir, &d, &proj);
     pc_oracle_summary sum;
     pc_oracle_measure_result(r, &proj, &s->grid, &sum);
-    printf("%-22s eps_D %.0e eps_T %4.1f: %zu branches, %4zu pieces, Hausdorff %.2f eps_D, "
-           "joints <= %.3f deg\n",
-           c->name, rel_eps, angle, projcurve_result_branch_count(r), sum.pieces,
-           sum.worst.hausdorff / (rel_eps * s->size), sum.worst.max_angle);
+    const double off_surface = pc_on_surface_check(c->name, r, s, pcurve_degree);
+    printf("%-26s pcurve %d eps_D %.0e eps_T %4.1f: %zu branches, %4zu pieces, Hausdorff "
+           "%.2f eps_D, joints <= %.3f deg, on S to %.1e size\n",
+           c->name, pcurve_degree, rel_eps, angle, projcurve_result_branch_count(r), sum.pieces,
+           sum.worst.hausdorff / (rel_eps * s->size), sum.worst.max_angle, off_surface);
     CHECK(sum.branches_without_pieces == 0);
     CHECK(sum.failures == 0);
     CHECK(sum.worst.hausdorff <= rel_eps * s->size);
@@ -99,11 +115,18 @@ int main(void)
     const double cyl_curve[18] = {-25, 10, 50, -10, 30, 55, 0, 40, 45,
                                   10, 60, 50, 20, 70, 52, 25, 90, 50};
     const double sphere_line[6] = {-15, 3, 20, 15, 3, 20};
+    const double pole_line[6] = {-5, 0, 20, 5, 0, 20};
     const double bumpy_curve[15] = {0.1, 0.2, 1, 0.3, 0.8, 1.2, 0.5, 0.3,
                                     0.9, 0.7, 0.9, 1.1, 0.85, 0.6, 1};
-    const double fold_line[6] = {-10, 50, 40, 125, 50, 40};
+    const double fold_flat[6] = {-10, 50, 40, 70, 50, 40};
+    const double fold_past[6] = {-10, 50, 40, 125, 50, 40};
+    const double fold_back[6] = {125, 50, 40, -10, 50, 40};
+    const double z_line[6] = {90, 50, 60, 45, 50, 60};
+    const double out_back[15] = {40, 20, 45, 90, 35, 45, 125, 50, 45, 90, 65, 45, 40, 80, 45};
+    const double longer[12] = {-20, 30, 45, 30, 60, 50, 70, 40, 40, 120, 70, 45};
     pc_shape_surface bumpy = pc_shape_bumpy(2024, 5, 5, 0.15, 1);
 
+    /* the branch counts are test_trace_shapes' and test_trace_jumps' */
     shape_case cases[] = {
         {"plane", shape_plane(plane_o, plane_a, plane_b), shape_bspline_curve(3, 6, plane_curve),
          {0.05, -0.05, -1}, 1},
@@ -111,21 +134,32 @@ int main(void)
          {0, 0, -1}, 1},
         {"sphere silhouettes", shape_sphere(10.0), shape_bspline_curve(1, 2, sphere_line),
          {0, 0, -1}, 2},
+        {"sphere pole", shape_sphere(10.0), shape_bspline_curve(1, 2, pole_line), {0, 0, -1}, 4},
         {"rational bumpy", pc_shape_surface_create(&bumpy), shape_bspline_curve(3, 5, bumpy_curve),
          {0.05, 0.02, -1}, 1},
         {"example 1", shape_example1_surface(), shape_example1_curve(), {-1, 0, 0}, 1},
-        {"c-fold past the tip", shape_c_fold(), shape_bspline_curve(1, 2, fold_line), {0, 0, -1},
+        {"c-fold flat", shape_c_fold(), shape_bspline_curve(1, 2, fold_flat), {0, 0, -1}, 2},
+        {"c-fold past the tip", shape_c_fold(), shape_bspline_curve(1, 2, fold_past), {0, 0, -1},
          2},
+        {"c-fold reversed", shape_c_fold(), shape_bspline_curve(1, 2, fold_back), {0, 0, -1}, 2},
+        {"z-fold", shape_z_fold(), shape_bspline_curve(1, 2, z_line), {0, 0, -1}, 3},
+        {"bumpy exit and re-entry", shape_bumpy(8.0, 12345), shape_bspline_curve(3, 5, out_back),
+         {0, 0, -1}, 2},
+        {"bumpy longer at both ends", shape_bumpy(8.0, 12345), shape_bspline_curve(3, 4, longer),
+         {0, 0, -1}, 1},
     };
     pc_shape_surface_free(&bumpy);
-    static const double rel_eps[] = {1e-2, 1e-4, 1e-6};
+    static const double rel_eps[] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+    static const int pcurve_degrees[] = {1, 3};
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         CHECK(cases[k].surface != NULL && cases[k].curve != NULL);
         if (cases[k].surface == NULL || cases[k].curve == NULL)
             continue;
-        for (size_t e = 0; e < sizeof rel_eps / sizeof rel_eps[0]; ++e)
-            run(&cases[k], rel_eps[e], 1.0);
-        run(&cases[k], 1e-3, 10.0);
+        for (size_t m = 0; m < 2; ++m) {
+            for (size_t e = 0; e < sizeof rel_eps / sizeof rel_eps[0]; ++e)
+                run(&cases[k], rel_eps[e], 1.0, pcurve_degrees[m]);
+            run(&cases[k], 1e-3, 10.0, pcurve_degrees[m]);
+        }
     }
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
         projcurve_surface_destroy(cases[k].surface);

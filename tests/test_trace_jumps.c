@@ -137,33 +137,9 @@ static void test_c_fold(void)
     projcurve_surface_destroy(s);
 }
 
-/* A Z-folded sheet (three layers at z = 0, 20, 40): a ray from above meets
- * it three times where the layers overlap. Quadratic profile, linear in y. */
-static projcurve_surface *z_fold(void)
-{
-    const double px[11] = {20, 60, 100, 115, 100, 60, 10, -5, 10, 40, 70};
-    const double pz[11] = {0, 0, 0, 10, 20, 20, 20, 30, 40, 40, 40};
-    double ctrl[3 * 22];
-    for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 11; ++i) {
-            ctrl[3 * (j * 11 + i) + 0] = px[i];
-            ctrl[3 * (j * 11 + i) + 1] = 100.0 * j;
-            ctrl[3 * (j * 11 + i) + 2] = pz[i];
-        }
-    double ku[14];
-    for (int i = 0; i < 14; ++i) {
-        const double k = (double)(i - 2);
-        ku[i] = k < 0 ? 0.0 : (k > 9 ? 1.0 : k / 9.0);
-    }
-    const double kv[4] = {0, 0, 1, 1};
-    projcurve_surface *s = NULL;
-    projcurve_surface_create_nurbs(NULL, 2, 1, 11, 2, ctrl, NULL, ku, kv, &s);
-    return s;
-}
-
 static void test_z_fold(void)
 {
-    projcurve_surface *s = z_fold();
+    projcurve_surface *s = shape_z_fold();
     CHECK(s != NULL);
     /* from x = 90 back to x = 45: bottom and middle all along; the top
      * layer (ending near x = 55) is born at its edge in mid-curve */

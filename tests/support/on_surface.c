@@ -6,7 +6,10 @@
 #include "on_surface.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
+
+#include "check.h"
 
 /* de Casteljau on n + 1 points of dim coordinates each (n <= 2 * MAX_DEGREE):
  * convex combinations only, stable at any degree. */
@@ -77,4 +80,26 @@ void pc_on_surface_measure(const projcurve_result *r, const projcurve_surface *s
             }
         }
     }
+}
+
+double pc_on_surface_check(const char *name, const projcurve_result *r,
+                           const projcurve_surface *s, int pcurve_degree)
+{
+    double box[6], pieces = NAN;
+    CHECK_OK(projcurve_surface_bounds(NULL, s, box));
+    const double size = hypot(hypot(box[3] - box[0], box[4] - box[1]), box[5] - box[2]);
+    pc_on_surface_report rep;
+    pc_on_surface_measure(r, s, PC_ON_SURFACE_SAMPLES, &rep);
+    CHECK_OK(projcurve_result_stat(NULL, r, PROJCURVE_STAT_PIECES, &pieces));
+    CHECK(rep.failures == 0);
+    CHECK((double)rep.pieces == pieces);
+    CHECK(rep.worst_end == 0.0);
+    CHECK(pcurve_degree == 3 || rep.pcurve_degree[3] == 0);
+    if (!(rep.worst <= PC_ON_SURFACE_REL * size))
+        fprintf(stderr,
+                "%s: piece %zu of branch %zu is off S(pcurve) by %.3g at s = %g (bound %.3g)\n",
+                name, rep.worst_piece, rep.worst_branch, rep.worst, rep.worst_s,
+                PC_ON_SURFACE_REL * size);
+    CHECK(rep.worst <= PC_ON_SURFACE_REL * size);
+    return rep.worst / size;
 }

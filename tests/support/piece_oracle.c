@@ -366,6 +366,7 @@ typedef struct branch_exact {
     const pc_projector *proj;
     const pc_branch *branch;
     int *failures; /* corrector failures, counted */
+    int *singular; /* points with a difference quotient for Q', counted */
 } branch_exact;
 
 static void pcurve_guess(const pc_branch *b, double t, double uv[2])
@@ -387,23 +388,57 @@ static void pcurve_guess(const pc_branch *b, double t, double uv[2])
     uv[1] = a[2] + w * (c[2] - a[2]);
 }
 
+/* The exact point at t, from the branch's pcurve; 0 when the corrector fails. */
+static int exact_point(const branch_exact *e, double t, double uv[2], pc_vec3 *x)
+{
+    pcurve_guess(e->branch, t, uv);
+    if (!e->proj->correct(e->proj, t, uv, NULL))
+        return 0;
+    double s[3];
+    projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 0, s);
+    *x = vec3_load(s);
+    return 1;
+}
+
+/* Step of the difference quotient for Q' where q' is singular, relative to
+ * the branch's t range: Q' only steers the Newton iteration on t (the
+ * distances are those of exact points), so its O(step) error is harmless. */
+#define SINGULAR_DIFF_REL 1e-7
+
 static void exact_on_branch(const void *user, double t, pc_vec3 q[3])
 {
     const branch_exact *e = user;
     double uv[2];
-    pcurve_guess(e->branch, t, uv);
     pc_proj_point pt;
-    if (!e->proj->correct(e->proj, t, uv, NULL) ||
-        !e->proj->derivatives(e->proj, t, uv[0], uv[1], &pt)) {
+    q[2] = vec3(0.0, 0.0, 0.0);
+    if (!exact_point(e, t, uv, &q[0])) {
         ++*e->failures;
         q[0] = vec3(NAN, NAN, NAN);
         return;
     }
-    double s[18];
-    projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 1, s);
-    q[0] = vec3_load(s);
-    q[1] = vec3_add(vec3_scale(vec3_load(s + 3), pt.du), vec3_scale(vec3_load(s + 6), pt.dv));
-    q[2] = vec3(0.0, 0.0, 0.0);
+    if (e->proj->derivatives(e->proj, t, uv[0], uv[1], &pt)) {
+        double s[9];
+        projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 1, s);
+        q[1] = vec3_add(vec3_scale(vec3_load(s + 3), pt.du), vec3_scale(vec3_load(s + 6), pt.dv));
+        return;
+    }
+    /* q' is singular (on a collapsed edge, where Su = 0, the projection's
+     * Jacobian is singular though the point is well defined): Q' as the
+     * difference quotient of exact points inside the branch */
+    const pc_branch *b = e->branch;
+    const double first = b->points[0], last = b->points[3 * (b->n_points - 1)];
+    const double lo = fmin(first, last), hi = fmax(first, last);
+    const double h = SINGULAR_DIFF_REL * (hi - lo);
+    const double ta = fmax(lo, t - h), tb = fmin(hi, t + h);
+    double uv_a[2], uv_b[2];
+    pc_vec3 xa, xb;
+    if (!(tb > ta) || !exact_point(e, ta, uv_a, &xa) || !exact_point(e, tb, uv_b, &xb)) {
+        ++*e->failures;
+        q[0] = vec3(NAN, NAN, NAN);
+        return;
+    }
+    ++*e->singular;
+    q[1] = vec3_scale(vec3_sub(xb, xa), 1.0 / (tb - ta));
 }
 
 void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *proj,
@@ -416,7 +451,7 @@ void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *pro
             ++out->branches_without_pieces;
             continue;
         }
-        const branch_exact e = {proj, b, &out->failures};
+        const branch_exact e = {proj, b, &out->failures, &out->singular_points};
         const pc_oracle_measure m = pc_oracle_measure_branch(b, exact_on_branch, &e, grid);
         out->worst.hausdorff = fmax(out->worst.hausdorff, m.hausdorff);
         out->worst.max_angle = fmax(out->worst.max_angle, m.max_angle);

@@ -116,6 +116,29 @@ projcurve_surface *shape_c_fold(void)
     return s;
 }
 
+projcurve_surface *shape_z_fold(void)
+{
+    /* quadratic profile in the xz-plane: three layers joined by two bends */
+    const double px[11] = {20, 60, 100, 115, 100, 60, 10, -5, 10, 40, 70};
+    const double pz[11] = {0, 0, 0, 10, 20, 20, 20, 30, 40, 40, 40};
+    double ctrl[3 * 22];
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 11; ++i) {
+            ctrl[3 * (j * 11 + i) + 0] = px[i];
+            ctrl[3 * (j * 11 + i) + 1] = 100.0 * j;
+            ctrl[3 * (j * 11 + i) + 2] = pz[i];
+        }
+    double ku[14];
+    for (int i = 0; i < 14; ++i) {
+        const double k = (double)(i - 2);
+        ku[i] = k < 0 ? 0.0 : (k > 9 ? 1.0 : k / 9.0);
+    }
+    const double kv[4] = {0, 0, 1, 1};
+    projcurve_surface *s = NULL;
+    projcurve_surface_create_nurbs(NULL, 2, 1, 11, 2, ctrl, NULL, ku, kv, &s);
+    return s;
+}
+
 projcurve_surface *shape_bumpy(double amp, unsigned long long seed)
 {
     pc_test_rng rng;

@@ -36,6 +36,13 @@ projcurve_curve *shape_example1_curve(void);
  * back to x = 20 (quadratic B-spline profile, linear in y). */
 projcurve_surface *shape_c_fold(void);
 
+/* A Z-folded sheet, extruded along y in [0, 100]: layers z = 0 (x from 20
+ * to 100), z = 20 (x from 100 back to 10) and z = 40 (x from 10 to 70),
+ * joined by bends with tips near x = 110 and x = 0 (quadratic B-spline
+ * profile, linear in y). A ray from above meets it three times where the
+ * layers overlap. */
+projcurve_surface *shape_z_fold(void);
+
 /* A bicubic bumpy sheet over [0, 100]^2 (heights from a fixed seed, within
  * +-amp), 8 x 8 control net, domain [0, 1]^2. */
 projcurve_surface *shape_bumpy(double amp, unsigned long long seed);
