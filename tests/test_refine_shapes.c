@@ -99,6 +99,7 @@ static void run(const shape_case *c, double rel_eps, double angle, int pcurve_de
            sum.worst.hausdorff / (rel_eps * s->size), sum.worst.max_angle, off_surface);
     CHECK(sum.branches_without_pieces == 0);
     CHECK(sum.failures == 0);
+    CHECK(sum.loose_points == 0); /* the oracle's exact points to 1e-12 of the size */
     CHECK(sum.worst.hausdorff <= rel_eps * s->size);
     CHECK(sum.worst.max_angle <= angle * (1.0 + 1e-9));
     CHECK(sum.worst.max_gap <= 1e-12 * s->size);

@@ -367,7 +367,19 @@ typedef struct branch_exact {
     const pc_branch *branch;
     int *failures; /* corrector failures, counted */
     int *singular; /* points with a difference quotient for Q', counted */
+    int *loose;    /* points within LOOSE_RESIDUAL_REL only, counted */
 } branch_exact;
+
+/* Where the oracle's Newton cannot reach its own tolerance (1e-12 of the
+ * model size) — at a fold the projection has a double root and beyond its
+ * tip none, at a domain edge the solution may lie outside the domain by a
+ * rounding — a point whose residual (distance of S(u, v) from the line
+ * P(t) + s Dir, or the tangential part of S - P) is within 1e-9 of the
+ * model size is taken. On a fold such a point can lie along the ray up to
+ * sqrt(2 r R) from the tip (R the radius of the surface's section, ~ the
+ * model size): 4.5e-5 of the size, under 5% of the tightest eps_D this is
+ * used with (1e-3 of the size, test_refine_robust). */
+#define LOOSE_RESIDUAL_REL 1e-9
 
 static void pcurve_guess(const pc_branch *b, double t, double uv[2])
 {
@@ -392,8 +404,16 @@ static void pcurve_guess(const pc_branch *b, double t, double uv[2])
 static int exact_point(const branch_exact *e, double t, double uv[2], pc_vec3 *x)
 {
     pcurve_guess(e->branch, t, uv);
-    if (!e->proj->correct(e->proj, t, uv, NULL))
-        return 0;
+    const double guess[2] = {uv[0], uv[1]};
+    if (!e->proj->correct(e->proj, t, uv, NULL)) {
+        pc_projector loose = *e->proj;
+        loose.newton_tol = LOOSE_RESIDUAL_REL * e->proj->model_size;
+        uv[0] = guess[0];
+        uv[1] = guess[1];
+        if (!loose.correct(&loose, t, uv, NULL))
+            return 0;
+        ++*e->loose;
+    }
     double s[3];
     projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 0, s);
     *x = vec3_load(s);
@@ -451,7 +471,8 @@ void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *pro
             ++out->branches_without_pieces;
             continue;
         }
-        const branch_exact e = {proj, b, &out->failures, &out->singular_points};
+        const branch_exact e = {proj, b, &out->failures, &out->singular_points,
+                                &out->loose_points};
         const pc_oracle_measure m = pc_oracle_measure_branch(b, exact_on_branch, &e, grid);
         out->worst.hausdorff = fmax(out->worst.hausdorff, m.hausdorff);
         out->worst.max_angle = fmax(out->worst.max_angle, m.max_angle);
