@@ -133,8 +133,12 @@ typedef struct projcurve_options projcurve_options;
 /* Option keys. Each has a type (double or integer), bounds and a default;
  * projcurve_option_info tells them. */
 typedef enum projcurve_option {
-    /* double: Hausdorff tolerance eps_D in model units; 0 = automatic
-     * (1e-4 of the surface's bounding-box diagonal). Bounds [0, 1e300]. */
+    /* double: Hausdorff tolerance eps_D in model units, (0, 1e300]: 0 and
+     * negative values give OUT_OF_RANGE, NaN and infinities NOT_FINITE.
+     * Unset (the default of a new handle) it is automatic: 1e-4 of the
+     * surface's bounding-box diagonal (projcurve_surface_bounds), which the
+     * result reports as PROJCURVE_STAT_TOL_DISTANCE. While unset, the getter
+     * and projcurve_option_info's default give 0. */
     PROJCURVE_OPT_TOL_DISTANCE = 1,
     /* double: joint angle tolerance eps_T in degrees, (0, 90]. Default 1. */
     PROJCURVE_OPT_TOL_ANGLE_DEG = 2,
@@ -194,8 +198,9 @@ PROJCURVE_API projcurve_status projcurve_options_create(projcurve_context *ctx,
 PROJCURVE_API void projcurve_options_destroy(projcurve_options *opts);
 
 /* Type, bounds and default of an option (any output pointer may be NULL).
- * Bounds are inclusive, except the lower bound 0 of TOL_ANGLE_DEG, which is
- * excluded. Statuses: OK, UNKNOWN_OPTION. Thread-safe. */
+ * Bounds are inclusive, except the lower bounds 0 of TOL_DISTANCE and
+ * TOL_ANGLE_DEG, which are excluded. Statuses: OK, UNKNOWN_OPTION.
+ * Thread-safe. */
 PROJCURVE_API projcurve_status projcurve_option_info(projcurve_context *ctx,
                                                      projcurve_option key,
                                                      projcurve_option_type *type,

@@ -21,6 +21,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "api/handles.h"
 #include "check.h"
@@ -109,6 +110,87 @@ static void run(const shape_case *c, double rel_eps, double angle, int pcurve_de
     projcurve_result_destroy(r);
 }
 
+/* Model size as projcurve.h defines it: the diagonal of the bounding box. */
+static double model_size(const projcurve_surface *s)
+{
+    double box[6] = {0, 0, 0, 0, 0, 0};
+    CHECK_OK(projcurve_surface_bounds(NULL, s, box));
+    return sqrt((box[3] - box[0]) * (box[3] - box[0]) + (box[4] - box[1]) * (box[4] - box[1]) +
+                (box[5] - box[2]) * (box[5] - box[2]));
+}
+
+/* PROJCURVE_STAT_TOL_DISTANCE of a projection of c with o (NULL: defaults),
+ * directional or orthogonal; NAN when it fails. Checks that the result is
+ * within that eps_D of the exact projection. */
+static double used_distance(const shape_case *c, const projcurve_options *o, int orthogonal)
+{
+    projcurve_result *r = NULL;
+    const projcurve_status st =
+        orthogonal ? projcurve_project_orthogonal(NULL, c->surface, c->curve, o, &r)
+                   : projcurve_project_directional(NULL, c->surface, c->curve, c->dir, o, &r);
+    CHECK_OK(st);
+    double eps = NAN;
+    if (r == NULL)
+        return eps;
+    CHECK_OK(projcurve_result_stat(NULL, r, PROJCURVE_STAT_TOL_DISTANCE, &eps));
+    pc_oracle_dir d;
+    pc_projector proj;
+    if (orthogonal)
+        pc_oracle_projector_orthogonal(c->surface, c->curve, &proj);
+    else
+        pc_oracle_projector(c->surface, c->curve, c->dir, &d, &proj);
+    pc_oracle_summary sum;
+    pc_oracle_measure_result(r, &proj, &c->surface->grid, &sum);
+    CHECK(sum.pieces > 0 && sum.failures == 0);
+    CHECK(sum.worst.hausdorff <= eps);
+    projcurve_result_destroy(r);
+    return eps;
+}
+
+/* eps_D left unset is automatic: 1e-4 of the model size (projcurve.h),
+ * which the result reports. 0 (of either sign), negative values, NaN and
+ * infinities are rejected with a message naming the option, and leave the
+ * handle as it was: unset (still automatic), then set (still that value). */
+static void test_distance_option(const shape_case *c)
+{
+    const double size = model_size(c->surface);
+    /* the library's diagonal may round differently: a few ulps */
+    const double ulps = 8.0 * 2.2204460492503131e-16;
+    projcurve_context *ctx = NULL;
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    CHECK_OK(projcurve_options_create(ctx, &o));
+    for (int orthogonal = 0; orthogonal <= 1; ++orthogonal) {
+        CHECK_NEAR(used_distance(c, o, orthogonal), 1e-4 * size, ulps * 1e-4 * size);
+        CHECK_NEAR(used_distance(c, NULL, orthogonal), 1e-4 * size, ulps * 1e-4 * size);
+    }
+    static const double bad[] = {0.0, -0.0, -1.0, -1e300, NAN, INFINITY, -INFINITY};
+    static const projcurve_status why[] = {
+        PROJCURVE_ERR_OUT_OF_RANGE, PROJCURVE_ERR_OUT_OF_RANGE, PROJCURVE_ERR_OUT_OF_RANGE,
+        PROJCURVE_ERR_OUT_OF_RANGE, PROJCURVE_ERR_NOT_FINITE,   PROJCURVE_ERR_NOT_FINITE,
+        PROJCURVE_ERR_NOT_FINITE};
+    const double set = 1e-3 * size;
+    for (int round = 0; round < 2; ++round) {
+        if (round == 1)
+            CHECK_OK(projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE, set));
+        for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+            CHECK_STATUS(projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE, bad[k]),
+                         why[k]);
+            const char *msg = projcurve_context_message(ctx);
+            if (strstr(msg, "TOL_DISTANCE") == NULL)
+                fprintf(stderr, "setting TOL_DISTANCE to %g: message '%s'\n", bad[k], msg);
+            CHECK(strstr(msg, "TOL_DISTANCE") != NULL);
+        }
+        double v = NAN;
+        CHECK_OK(projcurve_options_get_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE, &v));
+        CHECK(v == (round == 0 ? 0.0 : set)); /* 0 is how the getter shows "unset" */
+        CHECK_NEAR(used_distance(c, o, 0), round == 0 ? 1e-4 * size : set,
+                   round == 0 ? ulps * 1e-4 * size : 0.0);
+    }
+    projcurve_options_destroy(o);
+    projcurve_context_destroy(ctx);
+}
+
 int main(void)
 {
     const double plane_o[3] = {0, 0, 0}, plane_a[3] = {10, 0, 1}, plane_b[3] = {0, 10, 2};
@@ -150,6 +232,8 @@ int main(void)
          {0, 0, -1}, 1},
     };
     pc_shape_surface_free(&bumpy);
+    if (cases[0].surface != NULL && cases[0].curve != NULL)
+        test_distance_option(&cases[0]);
     static const double rel_eps[] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
     static const int pcurve_degrees[] = {1, 3};
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
