@@ -159,7 +159,9 @@ typedef enum projcurve_option {
      * Default 10,000,000, [16, 2^40]. */
     PROJCURVE_OPT_MAX_POINTS = 8,
     /* integer: maximum number of composed pieces per projection.
-     * Default 1,000,000, [1, 2^40]. */
+     * Default 1,000,000, [1, 2^40]. A projection that needs more returns
+     * PROJCURVE_ERR_LIMIT_REACHED with the partial result described at
+     * projcurve_project_directional. */
     PROJCURVE_OPT_MAX_PIECES = 9,
     /* integer: 1 = compose pieces exactly on S (default), 0 = trace only
      * (polylines, no eps_D / eps_T refinement). */
@@ -419,8 +421,15 @@ typedef struct projcurve_result projcurve_result;
 
 /* Directional projection of curve onto surface along dir (seed 000). opts
  * may be NULL (defaults). On success *out holds every branch.
- * PROJCURVE_ERR_LIMIT_REACHED also sets *out: a partial result, readable,
- * whose truncated branches end with PROJCURVE_END_LIMIT.
+ * PROJCURVE_ERR_LIMIT_REACHED also sets *out: a partial result, readable
+ * with every result function, whose truncated branches end with
+ * PROJCURVE_END_LIMIT. When PROJCURVE_OPT_MAX_PIECES is reached, the
+ * branches before the one being composed are complete; that branch keeps
+ * its pieces from its start up to the limit (the same pieces as without the
+ * limit: within eps_D and eps_T), its points (projcurve_result_branch_points)
+ * are then the pcurve of those pieces only — the traced polyline beyond them
+ * is dropped — and its t range ends with its last piece; every later branch
+ * has no pieces and keeps its traced polyline.
  * A curve that misses the surface gives OK and a result with no branches.
  * Statuses: OK, LIMIT_REACHED, NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION,
  * OUT_OF_RANGE (tolerances), CALLBACK, NO_MEMORY. Thread-safe for distinct
