@@ -346,7 +346,10 @@ pc_oracle_measure pc_oracle_measure_branch(const pc_branch *b, pc_oracle_exact_f
     /* exact -> output: dense samples of the exact curve onto their piece */
     size_t i = 0; /* pieces follow t (either way): walk them along */
     for (int k = 0; k <= DENSE_EXACT; ++k) {
-        const double t = ta + (tb - ta) * k / DENSE_EXACT;
+        /* (the last sample is the branch end itself, not a rounding past it:
+         * where a branch ends on a pole or a fold, the projection of the
+         * curve just beyond is on another sheet, or does not exist) */
+        const double t = k == DENSE_EXACT ? tb : ta + (tb - ta) * k / DENSE_EXACT;
         pc_vec3 q[3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
         exact(user, t, q);
         while (i + 1 < b->n_pieces && (b->pieces[i].t1 - t) * (tb - ta) < 0.0)
