@@ -18,7 +18,7 @@ typedef struct pcb_case {
     char name[PCB_CASE_NAME_MAX];
     int orthogonal;              /* 0 directional, 1 orthogonal */
     double dir[3];               /* directional only */
-    double tol_dist;             /* eps_D in model units */
+    double tol_dist;             /* eps_D in model units; 0 = left unset (automatic) */
     double tol_angle_deg;        /* eps_T */
     int expected_branches;       /* -1 when not known */
     int pcurve_degree;           /* PROJCURVE_OPT_PCURVE_DEGREE; 0 = the default (1) */

@@ -133,8 +133,12 @@ typedef struct projcurve_options projcurve_options;
 /* Option keys. Each has a type (double or integer), bounds and a default;
  * projcurve_option_info tells them. */
 typedef enum projcurve_option {
-    /* double: Hausdorff tolerance eps_D in model units; 0 = automatic
-     * (1e-4 of the surface's bounding-box diagonal). Bounds [0, 1e300]. */
+    /* double: Hausdorff tolerance eps_D in model units, (0, 1e300]: 0 and
+     * negative values give OUT_OF_RANGE, NaN and infinities NOT_FINITE.
+     * Unset (the default of a new handle) it is automatic: 1e-4 of the
+     * surface's bounding-box diagonal (projcurve_surface_bounds), which the
+     * result reports as PROJCURVE_STAT_TOL_DISTANCE. While unset, the getter
+     * and projcurve_option_info's default give 0. */
     PROJCURVE_OPT_TOL_DISTANCE = 1,
     /* double: joint angle tolerance eps_T in degrees, (0, 90]. Default 1. */
     PROJCURVE_OPT_TOL_ANGLE_DEG = 2,
@@ -155,7 +159,9 @@ typedef enum projcurve_option {
      * Default 10,000,000, [16, 2^40]. */
     PROJCURVE_OPT_MAX_POINTS = 8,
     /* integer: maximum number of composed pieces per projection.
-     * Default 1,000,000, [1, 2^40]. */
+     * Default 1,000,000, [1, 2^40]. A projection that needs more returns
+     * PROJCURVE_ERR_LIMIT_REACHED with the partial result described at
+     * projcurve_project_directional. */
     PROJCURVE_OPT_MAX_PIECES = 9,
     /* integer: 1 = compose pieces exactly on S (default), 0 = trace only
      * (polylines, no eps_D / eps_T refinement). */
@@ -194,8 +200,9 @@ PROJCURVE_API projcurve_status projcurve_options_create(projcurve_context *ctx,
 PROJCURVE_API void projcurve_options_destroy(projcurve_options *opts);
 
 /* Type, bounds and default of an option (any output pointer may be NULL).
- * Bounds are inclusive, except the lower bound 0 of TOL_ANGLE_DEG, which is
- * excluded. Statuses: OK, UNKNOWN_OPTION. Thread-safe. */
+ * Bounds are inclusive, except the lower bounds 0 of TOL_DISTANCE and
+ * TOL_ANGLE_DEG, which are excluded. Statuses: OK, UNKNOWN_OPTION.
+ * Thread-safe. */
 PROJCURVE_API projcurve_status projcurve_option_info(projcurve_context *ctx,
                                                      projcurve_option key,
                                                      projcurve_option_type *type,
@@ -414,8 +421,15 @@ typedef struct projcurve_result projcurve_result;
 
 /* Directional projection of curve onto surface along dir (seed 000). opts
  * may be NULL (defaults). On success *out holds every branch.
- * PROJCURVE_ERR_LIMIT_REACHED also sets *out: a partial result, readable,
- * whose truncated branches end with PROJCURVE_END_LIMIT.
+ * PROJCURVE_ERR_LIMIT_REACHED also sets *out: a partial result, readable
+ * with every result function, whose truncated branches end with
+ * PROJCURVE_END_LIMIT. When PROJCURVE_OPT_MAX_PIECES is reached, the
+ * branches before the one being composed are complete; that branch keeps
+ * its pieces from its start up to the limit (the same pieces as without the
+ * limit: within eps_D and eps_T), its points (projcurve_result_branch_points)
+ * are then the pcurve of those pieces only — the traced polyline beyond them
+ * is dropped — and its t range ends with its last piece; every later branch
+ * has no pieces and keeps its traced polyline.
  * A curve that misses the surface gives OK and a result with no branches.
  * Statuses: OK, LIMIT_REACHED, NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION,
  * OUT_OF_RANGE (tolerances), CALLBACK, NO_MEMORY. Thread-safe for distinct

@@ -1,12 +1,16 @@
 /*
  * End to end on the shared cases (../shared/cases/MANIFEST.tsv): every
  * directional and orthogonal case is projected through the public API at
- * eps_D = 1e-2 and 1e-6 of the model size with eps_T = 1 degree, and at
- * 1e-3 with 10 degrees; every composed branch is measured against the exact projection
- * by the test oracles (tests/support/piece_oracle): the Hausdorff distance
- * both ways on dense samples, the joint angles, the joins, and that each
- * piece stays in one Bezier patch. The exact projection at t is the oracle
- * projector's own Newton solution, started from the branch's pcurve.
+ * eps_D = 1e-2, 1e-3, 1e-4, 1e-5 and 1e-6 of the model size with eps_T = 1
+ * degree, and at 1e-3 with 10 degrees, with straight and with cubic pcurves
+ * (PROJCURVE_OPT_PCURVE_DEGREE 1 and 3). Every composed branch is measured
+ * against the exact projection by the test oracles
+ * (tests/support/piece_oracle): the Hausdorff distance both ways on dense
+ * samples, the joint angles, the joins, and that each piece stays in one
+ * Bezier patch. The exact projection at t is the oracle projector's own
+ * Newton solution, started from the branch's pcurve. Every piece, read
+ * through the public accessors, equals S at its pcurve at 100 parameters
+ * (tests/support/on_surface).
  */
 #include <math.h>
 #include <stdio.h>
@@ -14,6 +18,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "on_surface.h"
 #include "piece_oracle.h"
 
 #define MAX_CASES 32
@@ -53,12 +58,14 @@ static size_t read_manifest(manifest_case *cases, size_t capacity)
 }
 
 static void check_case(const manifest_case *c, const projcurve_surface *s,
-                       const projcurve_curve *curve, double rel_eps, double angle)
+                       const projcurve_curve *curve, double rel_eps, double angle,
+                       int pcurve_degree)
 {
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, rel_eps * s->size));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_ANGLE_DEG, angle));
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_PCURVE_DEGREE, pcurve_degree));
     projcurve_result *r = NULL;
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
@@ -83,17 +90,20 @@ static void check_case(const manifest_case *c, const projcurve_surface *s,
     pc_oracle_measure_result(r, &proj, &s->grid, &sum);
     CHECK(sum.branches_without_pieces == 0);
     CHECK(sum.failures == 0);
+    CHECK(sum.loose_points == 0); /* the oracle's exact points to 1e-12 of the size */
     CHECK(sum.worst.hausdorff <= rel_eps * s->size);
     CHECK(sum.worst.max_angle <= angle * (1.0 + 1e-9));
     CHECK(sum.worst.max_gap <= 1e-12 * s->size);
     CHECK(sum.worst.max_end_err <= 1e-9 * s->size);
     CHECK(sum.worst.off_patch == 0);
+    const double off_surface = pc_on_surface_check(c->name, r, s, pcurve_degree);
     const size_t pieces = sum.pieces;
     const double worst = sum.worst.hausdorff / (rel_eps * s->size);
     const double worst_angle = sum.worst.max_angle;
-    printf("%-28s eps_D %.0e eps_T %4.1f: %zu branches, %5zu pieces, Hausdorff %.2f eps_D, "
-           "joints <= %.3f deg\n",
-           c->name, rel_eps, angle, r->n_branches, pieces, worst, worst_angle);
+    printf("%-28s pcurve %d eps_D %.0e eps_T %4.1f: %zu branches, %5zu pieces, Hausdorff "
+           "%.2f eps_D, joints <= %.3f deg, on S to %.1e size\n",
+           c->name, pcurve_degree, rel_eps, angle, r->n_branches, pieces, worst, worst_angle,
+           off_surface);
     projcurve_result_destroy(r);
     projcurve_context_destroy(ctx);
     projcurve_options_destroy(o);
@@ -105,7 +115,8 @@ int main(void)
     const size_t n = read_manifest(cases, MAX_CASES);
     if (n == 0)
         pc_test_skip("no cases in ../shared/cases/MANIFEST.tsv");
-    static const double rel_eps[] = {1e-2, 1e-6}; /* test_refine_shapes does 1e-4 */
+    static const double rel_eps[] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
+    static const int pcurve_degrees[] = {1, 3};
     for (size_t k = 0; k < n; ++k) {
         char rel[NAME_LEN + 16];
         snprintf(rel, sizeof rel, "cases/%.*s.igs", NAME_LEN - 1, cases[k].name);
@@ -114,10 +125,10 @@ int main(void)
         const projcurve_surface *s = projcurve_model_surface(model, 0);
         const projcurve_curve *curve = projcurve_model_curve(model, 0);
         CHECK(s != NULL && curve != NULL);
-        if (s != NULL && curve != NULL) {
+        for (size_t m = 0; m < 2 && s != NULL && curve != NULL; ++m) {
             for (size_t e = 0; e < sizeof rel_eps / sizeof rel_eps[0]; ++e)
-                check_case(&cases[k], s, curve, rel_eps[e], 1.0);
-            check_case(&cases[k], s, curve, 1e-3, 10.0);
+                check_case(&cases[k], s, curve, rel_eps[e], 1.0, pcurve_degrees[m]);
+            check_case(&cases[k], s, curve, 1e-3, 10.0, pcurve_degrees[m]);
         }
         projcurve_model_destroy(model);
     }

@@ -12,8 +12,11 @@
  * exact projection (the residual of the projection equation at its (u, v)
  * ends is below 1e-9 of the model size: no vertex replaced by a point off
  * the projection), consecutive pieces of a branch join and meet within
- * eps_T, and the piece count stays that of a smooth curve of this length
- * (below PIECES_MAX, where the limit is 1,000,000).
+ * eps_T, the piece count stays that of a smooth curve of this length
+ * (below PIECES_MAX, where the limit is 1,000,000), and every composed
+ * branch is within eps_D of the exact projection: the Hausdorff distance
+ * both ways on dense samples, each output sample projected onto the exact
+ * curve by the oracle's Newton on t (pc_oracle_measure_result).
  */
 #include <math.h>
 #include <stdio.h>
@@ -80,9 +83,15 @@ static void check_result(const char *name, const projcurve_surface *s, const pro
                                                   vec3_load(b->pieces[k + 1].ctrl)));
         }
     }
+    pc_oracle_summary sum;
+    pc_oracle_measure_result(r, &proj, NULL, &sum);
     printf("%-28s %2zu branches (%zu end on a silhouette), %5zu pieces, piece ends off the "
-           "projection by <= %.2g\n",
-           name, r->n_branches, silhouette_ends, pieces, worst_residual);
+           "projection by <= %.2g, Hausdorff %.2f eps_D (%d exact points next to folds to "
+           "1e-9 only)\n",
+           name, r->n_branches, silhouette_ends, pieces, worst_residual,
+           sum.worst.hausdorff / (EPS_D_REL * s->size), sum.loose_points);
+    CHECK(sum.failures == 0);
+    CHECK(sum.worst.hausdorff <= EPS_D_REL * s->size);
     CHECK(pieces > 0);
     CHECK(pieces < PIECES_MAX);
     CHECK(worst_residual <= END_RESIDUAL_REL * s->size);

@@ -37,7 +37,7 @@ projcurve_status pc_curve_eval(const projcurve_curve *c, double t, int n_deriv, 
                                pc_vec3 *out);
 
 struct projcurve_options {
-    double tol_distance;       /* eps_D, 0 = automatic */
+    double tol_distance;       /* eps_D; 0 = unset, automatic (setters reject 0) */
     double tol_angle_deg;      /* eps_T */
     double newton_tol;         /* relative to model size */
     long long newton_max_iter;

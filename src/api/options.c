@@ -33,8 +33,10 @@ typedef struct pc_option_desc {
 #define PC_FIELD(field) offsetof(struct projcurve_options, field)
 
 static const pc_option_desc pc_option_table[] = {
+    /* the default 0 is no value a caller can set: it marks eps_D as unset,
+     * which the projection resolves to 1e-4 of the model size */
     {PROJCURVE_OPT_TOL_DISTANCE, "TOL_DISTANCE", PROJCURVE_OPTION_DOUBLE,
-     0.0, PC_OPTION_LENGTH_LIMIT, 0, 0.0, PC_FIELD(tol_distance)},
+     0.0, PC_OPTION_LENGTH_LIMIT, 1, 0.0, PC_FIELD(tol_distance)},
     {PROJCURVE_OPT_TOL_ANGLE_DEG, "TOL_ANGLE_DEG", PROJCURVE_OPTION_DOUBLE,
      0.0, 90.0, 1, 1.0, PC_FIELD(tol_angle_deg)},
     {PROJCURVE_OPT_NEWTON_TOL, "NEWTON_TOL", PROJCURVE_OPTION_DOUBLE,

@@ -53,7 +53,8 @@ static projcurve_status check_options(projcurve_context *ctx, const struct projc
         return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "distance tolerance is not finite");
     if (o->tol_distance < 0.0)
         return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
-                       "distance tolerance %g is negative (0 = automatic)", o->tol_distance);
+                       "distance tolerance %g is negative (0 is unset: automatic)",
+                       o->tol_distance);
     if (!isfinite(o->tol_angle_deg))
         return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "angle tolerance is not finite");
     if (!(o->tol_angle_deg > 0.0 && o->tol_angle_deg <= 90.0))

@@ -346,7 +346,10 @@ pc_oracle_measure pc_oracle_measure_branch(const pc_branch *b, pc_oracle_exact_f
     /* exact -> output: dense samples of the exact curve onto their piece */
     size_t i = 0; /* pieces follow t (either way): walk them along */
     for (int k = 0; k <= DENSE_EXACT; ++k) {
-        const double t = ta + (tb - ta) * k / DENSE_EXACT;
+        /* (the last sample is the branch end itself, not a rounding past it:
+         * where a branch ends on a pole or a fold, the projection of the
+         * curve just beyond is on another sheet, or does not exist) */
+        const double t = k == DENSE_EXACT ? tb : ta + (tb - ta) * k / DENSE_EXACT;
         pc_vec3 q[3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
         exact(user, t, q);
         while (i + 1 < b->n_pieces && (b->pieces[i].t1 - t) * (tb - ta) < 0.0)
@@ -366,7 +369,20 @@ typedef struct branch_exact {
     const pc_projector *proj;
     const pc_branch *branch;
     int *failures; /* corrector failures, counted */
+    int *singular; /* points with a difference quotient for Q', counted */
+    int *loose;    /* points within LOOSE_RESIDUAL_REL only, counted */
 } branch_exact;
+
+/* Where the oracle's Newton cannot reach its own tolerance (1e-12 of the
+ * model size) — at a fold the projection has a double root and beyond its
+ * tip none, at a domain edge the solution may lie outside the domain by a
+ * rounding — a point whose residual (distance of S(u, v) from the line
+ * P(t) + s Dir, or the tangential part of S - P) is within 1e-9 of the
+ * model size is taken. On a fold such a point can lie along the ray up to
+ * sqrt(2 r R) from the tip (R the radius of the surface's section, ~ the
+ * model size): 4.5e-5 of the size, under 5% of the tightest eps_D this is
+ * used with (1e-3 of the size, test_refine_robust). */
+#define LOOSE_RESIDUAL_REL 1e-9
 
 static void pcurve_guess(const pc_branch *b, double t, double uv[2])
 {
@@ -387,23 +403,65 @@ static void pcurve_guess(const pc_branch *b, double t, double uv[2])
     uv[1] = a[2] + w * (c[2] - a[2]);
 }
 
+/* The exact point at t, from the branch's pcurve; 0 when the corrector fails. */
+static int exact_point(const branch_exact *e, double t, double uv[2], pc_vec3 *x)
+{
+    pcurve_guess(e->branch, t, uv);
+    const double guess[2] = {uv[0], uv[1]};
+    if (!e->proj->correct(e->proj, t, uv, NULL)) {
+        pc_projector loose = *e->proj;
+        loose.newton_tol = LOOSE_RESIDUAL_REL * e->proj->model_size;
+        uv[0] = guess[0];
+        uv[1] = guess[1];
+        if (!loose.correct(&loose, t, uv, NULL))
+            return 0;
+        ++*e->loose;
+    }
+    double s[3];
+    projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 0, s);
+    *x = vec3_load(s);
+    return 1;
+}
+
+/* Step of the difference quotient for Q' where q' is singular, relative to
+ * the branch's t range: Q' only steers the Newton iteration on t (the
+ * distances are those of exact points), so its O(step) error is harmless. */
+#define SINGULAR_DIFF_REL 1e-7
+
 static void exact_on_branch(const void *user, double t, pc_vec3 q[3])
 {
     const branch_exact *e = user;
     double uv[2];
-    pcurve_guess(e->branch, t, uv);
     pc_proj_point pt;
-    if (!e->proj->correct(e->proj, t, uv, NULL) ||
-        !e->proj->derivatives(e->proj, t, uv[0], uv[1], &pt)) {
+    q[2] = vec3(0.0, 0.0, 0.0);
+    if (!exact_point(e, t, uv, &q[0])) {
         ++*e->failures;
         q[0] = vec3(NAN, NAN, NAN);
         return;
     }
-    double s[18];
-    projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 1, s);
-    q[0] = vec3_load(s);
-    q[1] = vec3_add(vec3_scale(vec3_load(s + 3), pt.du), vec3_scale(vec3_load(s + 6), pt.dv));
-    q[2] = vec3(0.0, 0.0, 0.0);
+    if (e->proj->derivatives(e->proj, t, uv[0], uv[1], &pt)) {
+        double s[9];
+        projcurve_surface_eval(NULL, e->proj->surface, uv[0], uv[1], 1, s);
+        q[1] = vec3_add(vec3_scale(vec3_load(s + 3), pt.du), vec3_scale(vec3_load(s + 6), pt.dv));
+        return;
+    }
+    /* q' is singular (on a collapsed edge, where Su = 0, the projection's
+     * Jacobian is singular though the point is well defined): Q' as the
+     * difference quotient of exact points inside the branch */
+    const pc_branch *b = e->branch;
+    const double first = b->points[0], last = b->points[3 * (b->n_points - 1)];
+    const double lo = fmin(first, last), hi = fmax(first, last);
+    const double h = SINGULAR_DIFF_REL * (hi - lo);
+    const double ta = fmax(lo, t - h), tb = fmin(hi, t + h);
+    double uv_a[2], uv_b[2];
+    pc_vec3 xa, xb;
+    if (!(tb > ta) || !exact_point(e, ta, uv_a, &xa) || !exact_point(e, tb, uv_b, &xb)) {
+        ++*e->failures;
+        q[0] = vec3(NAN, NAN, NAN);
+        return;
+    }
+    ++*e->singular;
+    q[1] = vec3_scale(vec3_sub(xb, xa), 1.0 / (tb - ta));
 }
 
 void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *proj,
@@ -416,7 +474,8 @@ void pc_oracle_measure_result(const projcurve_result *r, const pc_projector *pro
             ++out->branches_without_pieces;
             continue;
         }
-        const branch_exact e = {proj, b, &out->failures};
+        const branch_exact e = {proj, b, &out->failures, &out->singular_points,
+                                &out->loose_points};
         const pc_oracle_measure m = pc_oracle_measure_branch(b, exact_on_branch, &e, grid);
         out->worst.hausdorff = fmax(out->worst.hausdorff, m.hausdorff);
         out->worst.max_angle = fmax(out->worst.max_angle, m.max_angle);

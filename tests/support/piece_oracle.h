@@ -51,11 +51,17 @@ pc_oracle_measure pc_oracle_measure_branch(const pc_branch *b, pc_oracle_exact_f
  * projector proj defines: the exact point at t is proj's own Newton solution
  * started from the branch's pcurve, Q' = Su u' + Sv v' from its q'.
  * `worst` holds the largest of each measure over the branches (off_patch:
- * their sum); failures counts exact points the oracle could not compute. */
+ * their sum); failures counts exact points the oracle could not compute;
+ * singular_points those where q' is singular (a collapsed edge of S, where
+ * Su = 0) and Q' is a difference quotient of exact points instead;
+ * loose_points those where the oracle's Newton reached only 1e-9 of the
+ * model size (next to folds and domain edges, see piece_oracle.c). */
 typedef struct pc_oracle_summary {
     pc_oracle_measure worst;
     size_t pieces;
     int failures;
+    int singular_points;
+    int loose_points;
     int branches_without_pieces;
 } pc_oracle_summary;
 

@@ -116,25 +116,9 @@ projcurve_surface *shape_c_fold(void)
     return s;
 }
 
-projcurve_surface *shape_bumpy(double amp, unsigned long long seed)
-{
-    pc_test_rng rng;
-    pc_test_rng_seed(&rng, seed);
-    double ctrl[3 * 64];
-    for (int j = 0; j < 8; ++j)
-        for (int i = 0; i < 8; ++i) {
-            ctrl[3 * (j * 8 + i) + 0] = 100.0 * i / 7.0;
-            ctrl[3 * (j * 8 + i) + 1] = 100.0 * j / 7.0;
-            ctrl[3 * (j * 8 + i) + 2] = pc_test_rng_uniform(&rng, -amp, amp);
-        }
-    const double k[12] = {0, 0, 0, 0, 0.2, 0.4, 0.6, 0.8, 1, 1, 1, 1};
-    projcurve_surface *s = NULL;
-    projcurve_surface_create_nurbs(NULL, 3, 3, 8, 8, ctrl, NULL, k, k, &s);
-    return s;
-}
-
 projcurve_surface *shape_z_fold(void)
 {
+    /* quadratic profile in the xz-plane: three layers joined by two bends */
     const double px[11] = {20, 60, 100, 115, 100, 60, 10, -5, 10, 40, 70};
     const double pz[11] = {0, 0, 0, 10, 20, 20, 20, 30, 40, 40, 40};
     double ctrl[3 * 22];
@@ -152,6 +136,23 @@ projcurve_surface *shape_z_fold(void)
     const double kv[4] = {0, 0, 1, 1};
     projcurve_surface *s = NULL;
     projcurve_surface_create_nurbs(NULL, 2, 1, 11, 2, ctrl, NULL, ku, kv, &s);
+    return s;
+}
+
+projcurve_surface *shape_bumpy(double amp, unsigned long long seed)
+{
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, seed);
+    double ctrl[3 * 64];
+    for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i) {
+            ctrl[3 * (j * 8 + i) + 0] = 100.0 * i / 7.0;
+            ctrl[3 * (j * 8 + i) + 1] = 100.0 * j / 7.0;
+            ctrl[3 * (j * 8 + i) + 2] = pc_test_rng_uniform(&rng, -amp, amp);
+        }
+    const double k[12] = {0, 0, 0, 0, 0.2, 0.4, 0.6, 0.8, 1, 1, 1, 1};
+    projcurve_surface *s = NULL;
+    projcurve_surface_create_nurbs(NULL, 3, 3, 8, 8, ctrl, NULL, k, k, &s);
     return s;
 }
 
