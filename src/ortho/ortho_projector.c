@@ -254,22 +254,68 @@ int pc_ortho_second_derivative(const pc_vec3 *s, const pc_vec3 p[3], const doubl
     return mat2_solve(k[0], k[1], k[2], k[3], rhs, qdd);
 }
 
+/* An edge collapsed to a point is a regular point of S (a pole) when the
+ * regular derivative S_r(., edge), which sweeps the tangent plane there,
+ * stays in the plane of S_r and S_cr: |S_ccr . n| / |S_ccr| below this.
+ * At the apex of a cone S_r sweeps a cone and the ratio is of order 1; at
+ * the pole of a sphere it is 0 on the edge and of order of the parameter
+ * distance to it in the collapsed zone (< 1e-6). */
+#define ORTHO_APEX_RATIO 1e-3
+
+/* The two factors 1 + rho k of K's eigenvalues where the parametrisation is
+ * collapsed (collapsed.h), along the regular direction r and the collapsed
+ * c: f_r = K_rr / g_rr, exact. f_c = K_cc / g_cc is a ratio of two
+ * quantities of order |S_c|^2 there, the first with a rounding of order
+ * |S - P| DBL_EPSILON size: noise in the collapsed zone. It is replaced by
+ * its limit on the edge. Near an edge point that is regular (a pole),
+ * f_c -> f_r: the pole of a surface of revolution is an umbilic (taken so
+ * for other poles too). Near an apex (collapsed.h's cone),
+ * K_cc / g_cc ~ 1 + (S - P).S_ccr / (e |S_cr|^2), e the signed parameter
+ * distance to the edge: it diverges, with the sign of (S - P).S_ccr
+ * towards the interior; f_c gets that sign and the magnitude of f_r (only
+ * its sign and whether it is small are used). */
+static void collapsed_factors(const pc_projector *self, const pc_vec3 *sd, pc_vec3 p,
+                              const double k[4], pc_collapse c, const double uv[2], double *f_r,
+                              double *f_c)
+{
+    const int cu = c == PC_COLLAPSE_U;
+    const pc_vec3 sr = cu ? sd[PC_D3_V] : sd[PC_D3_U];
+    const pc_vec3 scr = sd[PC_D3_UV];
+    const pc_vec3 sccr = cu ? sd[PC_D3_UUV] : sd[PC_D3_UVV];
+    *f_r = k[cu ? 3 : 0] / vec3_dot(sr, sr);
+    *f_c = *f_r;
+    const pc_vec3 n = vec3_cross(sr, scr);
+    const double nn = vec3_norm(n), nccr = vec3_norm(sccr);
+    if (!(nn > 0.0) || !(fabs(vec3_dot(sccr, n)) > ORTHO_APEX_RATIO * nccr * nn))
+        return;   /* a pole */
+    const double *dom = self->surface->nurbs.domain;
+    const double x = cu ? uv[1] : uv[0];
+    const double lo = cu ? dom[2] : dom[0], hi = cu ? dom[3] : dom[1];
+    const double inward = x - lo <= hi - x ? 1.0 : -1.0;
+    const double a = vec3_dot(vec3_sub(sd[PC_D3_S], p), sccr) * inward;
+    if (a != 0.0)
+        *f_c = copysign(fabs(*f_r), a);
+}
+
 /* q', q'' and det where the parametrisation is collapsed (collapsed.h):
  * the regular row of K q' = b and of its derivative, the collapsed
  * parameter held (its rate is that of a direction at a point, and S does
- * not depend on it to first order). det is reported as (K_rr / g_rr)^2 =
- * (1 + rho k_r)^2: the normalised det K at the pole of a surface of
- * revolution, where both principal curvatures agree; det K itself is 0/0
- * here. Returns 0 where K_rr vanishes (a centre of curvature). */
-static int collapsed_derivatives(const pc_vec3 *sd, const pc_vec3 p[3], const double k[4],
-                                 pc_collapse c, pc_proj_point *out)
+ * not depend on it to first order). det K / (|Su||Sv|)^2 is 0/0 here and
+ * is reported as f_r f_c (collapsed_factors): its limit at the pole of a
+ * surface of revolution, its sign at an apex. Returns 0 where K_rr
+ * vanishes (a centre of curvature). */
+static int collapsed_derivatives(const pc_projector *self, const pc_vec3 *sd,
+                                 const pc_vec3 p[3], const double k[4], pc_collapse c,
+                                 pc_proj_point *out)
 {
     const int r = c == PC_COLLAPSE_U ? 1 : 0;
     const pc_vec3 sr = sd[r == 1 ? PC_D3_V : PC_D3_U];
     const double krr = k[3 * r], grr = vec3_dot(sr, sr);
-    const double ratio = krr / grr;
-    out->det = ratio * ratio;
-    if (!(fabs(out->det) > ORTHO_DET_SINGULAR))
+    const double uv[2] = {out->u, out->v};
+    double f_r, f_c;
+    collapsed_factors(self, sd, p[0], k, c, uv, &f_r, &f_c);
+    out->det = f_r * f_c;
+    if (!(fabs(out->det) > ORTHO_DET_SINGULAR) || !(fabs(f_r) > ORTHO_DET_SINGULAR))
         return 0;
     double qd[2] = {0.0, 0.0}, rhs[2];
     qd[r] = vec3_dot(p[1], sr) / krr;
@@ -306,7 +352,7 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
     tensor_and_residual(sd, p[0], k, f);
     const pc_collapse c = pc_collapsed_direction(sd[PC_D3_U], sd[PC_D3_V]);
     if (c != PC_COLLAPSE_NONE)
-        return collapsed_derivatives(sd, p, k, c, out);
+        return collapsed_derivatives(self, sd, p, k, c, out);
     out->det = normalized_det(sd, k);
 
     /* seed 003 eq. (16): q' = K^-1 [P'.Su; P'.Sv]. */
@@ -349,7 +395,7 @@ static double ortho_residual(const pc_projector *self, double t, double u, doubl
 
 int pc_ortho_morse_index(const pc_projector *proj, double t, double u, double v, int *index)
 {
-    pc_vec3 sd[6], p;
+    pc_vec3 sd[PC_D3_COUNT], p;
     double k[4], f[2];
     if (!eval_curve(proj, t, 0, &p))
         return 0;
@@ -358,9 +404,13 @@ int pc_ortho_morse_index(const pc_projector *proj, double t, double u, double v,
     tensor_and_residual(sd, p, k, f);
     const pc_collapse c = pc_collapsed_direction(sd[PC_D3_U], sd[PC_D3_V]);
     if (c != PC_COLLAPSE_NONE) {
-        /* det K is 0/0 here; the regular entry of K decides, both
-         * eigenvalues taken alike (collapsed_derivatives) */
-        *index = k[c == PC_COLLAPSE_U ? 3 : 0] > 0.0 ? 0 : 2;
+        /* det K is 0/0 here: the index from the two factors */
+        pc_surface_eval_d3(&proj->surface->nurbs, u, v, &cache_of(proj)->hint_u,
+                           &cache_of(proj)->hint_v, sd);
+        const double uv[2] = {u, v};
+        double f_r, f_c;
+        collapsed_factors(proj, sd, p, k, c, uv, &f_r, &f_c);
+        *index = (f_r < 0.0) + (f_c < 0.0);
         return 1;
     }
     *index = pc_morse_index(k[0] * k[3] - k[1] * k[2], k[0] + k[3]);
