@@ -145,7 +145,7 @@ typedef struct degenerate_case {
  * corrector converges there, which it does along the regular direction; a
  * branch traced back from a seed found beside the edge starts where that
  * search found it, and seeds within the collapsed zone (|Su| < 1e-6 |Sv|,
- * ~3e-7 of the sphere's radius around the pole) are dropped: 1.5e-7 in t
+ * 4.5e-7 of the sphere's radius around the pole) are dropped: 1.5e-7 in t
  * was measured at one start of the seam case. 1e-6 in t is 8e-7 in space
  * here (|q'| <= 0.8): far below eps_D. */
 #define T_END_TOL 1e-6

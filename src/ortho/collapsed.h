@@ -22,8 +22,8 @@
 #include "common/vec.h"
 
 /* Below this ratio of |Su| to |Sv| (or of |Sv| to |Su|) a point counts as
- * collapsed. On the unit-radius NURBS sphere that is within ~2e-7 of the
- * pole in v, ~1e-6 of the radius in space. Above it K is still well enough
+ * collapsed. On the NURBS sphere of tests/support/shapes.c that is within
+ * 1.6e-7 of the pole in v, 4.5e-7 of the radius in space. Above it K is still well enough
  * conditioned for the 2 x 2 solves: its smaller diagonal entry is
  * ~ratio^2 times the larger, 1e-12, against the 1e-15 floor of mat2_solve,
  * and the rounding of Su is 1e-16 / 1e-6 = 1e-10 of its length. */
