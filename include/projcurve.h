@@ -445,8 +445,11 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
  * every continuous branch of foot points (minima, saddles and maxima of the
  * distance alike). A branch that reaches a centre of curvature of S ends
  * there with PROJCURVE_END_CURVATURE_CENTRE; one born there starts with
- * PROJCURVE_START_SILHOUETTE. Same result and statuses as the directional
- * projection (ZERO_DIRECTION aside). */
+ * PROJCURVE_START_SILHOUETTE. An edge of the domain collapsed to a point
+ * (the pole of a NURBS sphere, the apex of a cone) is a boundary: a branch
+ * through it ends there with PROJCURVE_END_BOUNDARY and continues as one
+ * starting with PROJCURVE_START_BOUNDARY. Same result and statuses as the
+ * directional projection (ZERO_DIRECTION aside). */
 PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
                                                             const projcurve_surface *surface,
                                                             const projcurve_curve *curve,
@@ -460,7 +463,10 @@ typedef int (*projcurve_implicit_fn)(void *user, const double x[3], double *valu
 
 /* Orthogonal projection onto an implicit surface (seed 003, eq. 32): traces the
  * foot point curve in 3-space starting from the foot point of P(t0) nearest
- * to it. Branches carry 3D points instead of (u, v) and composed pieces are a
+ * to it. One branch only: the other foot points of P(t0) and branches born
+ * in mid-curve are not traced (the callback gives no global view of the
+ * surface to find them; projcurve_project_orthogonal traces every branch on
+ * a NURBS surface). Branches carry 3D points instead of (u, v) and composed pieces are a
  * cubic B-spline approximation within eps_D (degree-3 pieces over
  * [t_i, t_i+1], C1 at the joins; their uv_range is 0). The branch ends at
  * the end of the curve, at a centre of curvature, or where the corrector

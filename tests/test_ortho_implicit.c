@@ -2,7 +2,9 @@
  * Orthogonal projection onto implicit surfaces (seed 003 s5): sphere, plane,
  * cylinder and torus given by f, grad f and Hess f, against their analytic
  * foot points; x' and x'' against finite differences of the analytic foot
- * point curve; centres of curvature; bad input.
+ * point curve; centres of curvature; the one branch traced (the parametric
+ * route finds more); bad input, among it a gradient that vanishes at one
+ * point the trace runs into.
  */
 #include <math.h>
 #include <stdio.h>
@@ -11,6 +13,7 @@
 #include "check.h"
 #include "ortho/implicit.h"
 #include "projcurve.h"
+#include "shapes.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -435,6 +438,126 @@ static void test_bad_input(void)
     projcurve_context_destroy(ctx);
 }
 
+/* The implicit route traces one branch, from the foot point nearest P(t0)
+ * (projcurve.h, docs/orthogonal.md): a point outside a sphere has two foot
+ * points at every t, the near one and the antipodal one, and the parametric
+ * route on the exact NURBS sphere returns both; the implicit route returns
+ * the near one alone, over the whole curve, with no branch found in
+ * mid-curve. */
+static void test_one_branch(void)
+{
+    const double R = 10.0, centre[3] = {0, 0, 0};
+    shape sphere = {SPHERE, R, 0.0};
+    wave w = {{1, 0, 2}, 13.0, 3.0, 0};
+    projcurve_curve *curve = NULL;
+    CHECK_OK(projcurve_curve_create_callback(NULL, wave_fn, &w, 0.0, 2.0, &curve));
+    projcurve_result *ri = NULL, *rp = NULL;
+    CHECK_OK(projcurve_project_orthogonal_implicit(NULL, shape_fn, &sphere, 20.0, curve, NULL,
+                                                   &ri));
+    pc_shape_surface data = pc_shape_sphere(centre, R);
+    projcurve_surface *surf = pc_shape_surface_create(&data);
+    pc_shape_surface_free(&data);
+    CHECK_OK(projcurve_project_orthogonal(NULL, surf, curve, NULL, &rp));
+    const size_t ni = ri ? projcurve_result_branch_count(ri) : 0;
+    const size_t np = rp ? projcurve_result_branch_count(rp) : 0;
+    printf("sphere: implicit route %zu branch(es), parametric route %zu\n", ni, np);
+    CHECK(np == 2);
+    CHECK(ni == 1);
+    if (ni == 1) {
+        double range[2] = {0, 0}, jumps = -1.0, pts[4 * 512];
+        size_t got = 0;
+        projcurve_result_branch_info(NULL, ri, 0, range, NULL, NULL, NULL, NULL);
+        CHECK_NEAR(range[0], 0.0, 1e-12);
+        CHECK_NEAR(range[1], 2.0, 1e-12);
+        CHECK_OK(projcurve_result_stat(NULL, ri, PROJCURVE_STAT_JUMPS, &jumps));
+        CHECK(jumps == 0.0);
+        CHECK_OK(projcurve_result_branch_points(NULL, ri, 0, 512, pts, &got));
+        /* every vertex is the near foot point R P / |P| (to newton_tol) */
+        double worst = 0.0;
+        for (size_t i = 0; i < got && i < 512; ++i) {
+            double p[3], q[3];
+            wave_point(&w, pts[4 * i], p);
+            const double n = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            for (int k = 0; k < 3; ++k)
+                q[k] = R * p[k] / n;
+            worst = fmax(worst, dist3(pts + 4 * i + 1, q));
+        }
+        CHECK(worst <= 1e-8);
+    }
+    projcurve_result_destroy(ri);
+    projcurve_result_destroy(rp);
+    projcurve_surface_destroy(surf);
+    projcurve_curve_destroy(curve);
+}
+
+/* The double cone x^2 + y^2 = z^2: its gradient vanishes at the apex only. */
+static int cone_fn(void *user, const double x[3], double *value, double grad[3], double hess[9])
+{
+    (void)user;
+    *value = x[0] * x[0] + x[1] * x[1] - x[2] * x[2];
+    grad[0] = 2.0 * x[0];
+    grad[1] = 2.0 * x[1];
+    grad[2] = -2.0 * x[2];
+    memset(hess, 0, 9 * sizeof *hess);
+    hess[0] = hess[4] = 2.0;
+    hess[8] = -2.0;
+    return 0;
+}
+
+/* A gradient that vanishes in mid-trace: P(t) = (1.2 - t, 0, 1 - t) moves
+ * parallel to a generator of the cone, its foot point (1.1 - t) (1, 0, 1)
+ * along the generator into the apex at t = 1.1, where grad f = 0 (and the
+ * cone is no regular surface). The branch ends there cleanly: status OK,
+ * END_FAILED (the corrector cannot go on), measured 2e-9 before t = 1.1 and
+ * 3e-9 from the apex (1e-6 allowed: where |grad f| ~ 3 |x| falls to the
+ * corrector's scale the step can no longer be resolved), every vertex the
+ * exact foot point, in bounded time (the ctest timeout guards against a
+ * hang). A curve whose foot point starts at the apex cannot be seeded:
+ * P(t0) on the cone's axis plane z = 0 projects along the gradient into
+ * the apex, and the call says so with PROJCURVE_ERR_SINGULAR. */
+static void test_gradient_vanishing(void)
+{
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    line into = {{1.2, 0, 1}, {-1, 0, -1}}, from = {{-1, 0, 0}, {1, 0, 0}};
+    projcurve_curve *c1 = NULL, *c2 = NULL;
+    CHECK_OK(projcurve_curve_create_callback(NULL, line_fn, &into, 0.0, 2.0, &c1));
+    CHECK_OK(projcurve_curve_create_callback(NULL, line_fn, &from, 0.0, 2.0, &c2));
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_orthogonal_implicit(ctx, cone_fn, NULL, 2.0, c1, NULL, &r));
+    if (r) {
+        double range[2] = {0, 0}, pts[4 * 1024];
+        projcurve_branch_end end = PROJCURVE_END_CURVE_END;
+        size_t got = 0;
+        CHECK(projcurve_result_branch_count(r) == 1);
+        projcurve_result_branch_info(NULL, r, 0, range, NULL, &end, NULL, NULL);
+        CHECK_OK(projcurve_result_branch_points(NULL, r, 0, 1024, pts, &got));
+        double worst = 0.0, apex = INFINITY;
+        for (size_t i = 0; i < got && i < 1024; ++i) {
+            const double s = 1.1 - pts[4 * i], q[3] = {s, 0.0, s};
+            worst = fmax(worst, dist3(pts + 4 * i + 1, q));
+            apex = sqrt(pts[4 * i + 1] * pts[4 * i + 1] + pts[4 * i + 2] * pts[4 * i + 2] +
+                        pts[4 * i + 3] * pts[4 * i + 3]);
+        }
+        printf("cone into the apex: end %d at t = %.12f, last vertex %.1e from the apex, "
+               "vertex error %.1e\n",
+               (int)end, range[1], apex, worst);
+        CHECK(end == PROJCURVE_END_FAILED);
+        CHECK_NEAR(range[1], 1.1, 1e-6);
+        CHECK(apex <= 1e-6);
+        CHECK(worst <= 1e-8);
+    }
+    projcurve_result_destroy(r);
+    r = NULL;
+    CHECK_STATUS(projcurve_project_orthogonal_implicit(ctx, cone_fn, NULL, 2.0, c2, NULL, &r),
+                 PROJCURVE_ERR_SINGULAR);
+    CHECK(r == NULL);
+    CHECK(strstr(projcurve_context_message(ctx), "gradient") != NULL);
+    projcurve_curve_destroy(c1);
+    projcurve_curve_destroy(c2);
+    projcurve_context_destroy(ctx);
+}
+
 int main(void)
 {
     test_shape("sphere", (shape){SPHERE, 10.0, 0.0}, (wave){{1, 0, 2}, 13.0, 3.0, 0}, 0.0, 5.0);
@@ -443,6 +566,8 @@ int main(void)
     test_shape("torus", (shape){TORUS, 10.0, 3.0}, (wave){{0, 0, 1}, 11.0, 2.0, 0}, 0.0, 6.0);
     test_derivatives();
     test_centres();
+    test_one_branch();
     test_bad_input();
+    test_gradient_vanishing();
     return pc_test_finish("test_ortho_implicit");
 }

@@ -304,25 +304,136 @@ static void expect_whole(const projcurve_result *r, size_t b, double t0, double 
     CHECK_NEAR(range[1], t1, 1e-12);
 }
 
-/* Near and far foot points of a sphere, away from its seam and poles; the
- * near branch agrees with the implicit route. */
-static int sphere_fn(void *user, const double x[3], double *value, double grad[3],
-                     double hess[9])
+/* The same shapes as implicit functions f(x) = 0, for the implicit route:
+ * sphere |x|^2 - a^2, cylinder x^2 + y^2 - a^2, torus (|x|^2 + a^2 - b^2)^2
+ * - 4 a^2 (x^2 + y^2), plane z. */
+static int shape_fn(void *user, const double x[3], double *value, double grad[3],
+                    double hess[9])
 {
-    const double R = *(const double *)user;
-    *value = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - R * R;
+    const shape *s = user;
     memset(hess, 0, 9 * sizeof *hess);
-    for (int i = 0; i < 3; ++i) {
-        grad[i] = 2 * x[i];
-        hess[4 * i] = 2;
+    switch (s->k) {
+    case SPHERE:
+    case CYLINDER: {
+        const int n = s->k == SPHERE ? 3 : 2;
+        *value = -s->a * s->a;
+        for (int i = 0; i < 3; ++i) {
+            const int on = i < n;
+            *value += on ? x[i] * x[i] : 0.0;
+            grad[i] = on ? 2 * x[i] : 0.0;
+            hess[4 * i] = on ? 2 : 0;
+        }
+        return 0;
     }
-    return 0;
+    case TORUS: {
+        const double q = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + s->a * s->a - s->b * s->b;
+        const double a2 = s->a * s->a;
+        *value = q * q - 4 * a2 * (x[0] * x[0] + x[1] * x[1]);
+        for (int i = 0; i < 3; ++i) {
+            grad[i] = 4 * q * x[i] - (i < 2 ? 8 * a2 * x[i] : 0.0);
+            for (int j = 0; j < 3; ++j)
+                hess[3 * i + j] = 8 * x[i] * x[j] + (i == j ? 4 * q - (i < 2 ? 8 * a2 : 0.0) : 0.0);
+        }
+        return 0;
+    }
+    case PLANE:
+        *value = x[2];
+        grad[0] = grad[1] = 0;
+        grad[2] = 1;
+        return 0;
+    }
+    return 1;
+}
+
+/* One-sided Hausdorff distance from the pieces of branch ba of ra to those
+ * of the branches of rb listed in bb[0..nbb): every sample of a piece of ba
+ * against the sampled pieces of bb whose t-range comes within `window` of
+ * the piece's. Both are parametrised by the curve's t, so a point is
+ * compared with the other route's curve near the same t only. */
+static double pieces_distance(const projcurve_result *ra, size_t ba, const projcurve_result *rb,
+                              const size_t *bb, size_t nbb, double window)
+{
+    static double a_pts[3 * PIECE_CAP * PIECE_SAMPLES], a_rng[2 * PIECE_CAP],
+        b_pts[3 * PIECE_CAP * PIECE_SAMPLES], b_rng[2 * PIECE_CAP];
+    const size_t na = sample_pieces(ra, ba, a_pts, a_rng, PIECE_CAP);
+    double worst = na > 0 ? 0.0 : INFINITY;
+    double *best = malloc((na * PIECE_SAMPLES + 1) * sizeof *best);
+    for (size_t i = 0; i < na * PIECE_SAMPLES; ++i)
+        best[i] = INFINITY;
+    for (size_t j = 0; j < nbb; ++j) {
+        const size_t nb = sample_pieces(rb, bb[j], b_pts, b_rng, PIECE_CAP);
+        for (size_t ka = 0; ka < na; ++ka)
+            for (size_t kb = 0; kb < nb; ++kb) {
+                if (b_rng[2 * kb + 1] < a_rng[2 * ka] - window ||
+                    b_rng[2 * kb] > a_rng[2 * ka + 1] + window)
+                    continue;
+                for (size_t i = 0; i < PIECE_SAMPLES; ++i) {
+                    double *d = best + ka * PIECE_SAMPLES + i;
+                    *d = fmin(*d, to_polyline(a_pts + 3 * (ka * PIECE_SAMPLES + i),
+                                              b_pts + 3 * kb * PIECE_SAMPLES, PIECE_SAMPLES));
+                }
+            }
+    }
+    for (size_t i = 0; i < na * PIECE_SAMPLES; ++i)
+        worst = fmax(worst, best[i]);
+    free(best);
+    return worst;
+}
+
+/* The implicit route on the same shape and curve traces the foot point
+ * nearest P(t0) (family 0 of foot()); its pieces and those of the
+ * parametric branches of family 0 must be within 2 eps_D of each other
+ * both ways (Hausdorff): each is within eps_D of the exact curve (checked
+ * above for the parametric route, in test_ortho_implicit for the other),
+ * so 2 eps_D is what the triangle inequality allows; the polylines through
+ * PIECE_SAMPLES samples per piece add a chord error below 1e-3 eps_D on
+ * these pieces. The implicit branch must cover the same range as the
+ * parametric family. */
+static void check_agreement(const char *name, const projcurve_result *r, const int families[8],
+                            const shape *s, const wave *w, double t0, double t1,
+                            double model_size)
+{
+    const double eps_d = 1e-4;
+    projcurve_curve *curve = NULL;
+    CHECK_OK(projcurve_curve_create_callback(NULL, wave_fn, (void *)w, t0, t1, &curve));
+    projcurve_options *o = options(eps_d);
+    projcurve_result *ri = NULL;
+    CHECK_OK(projcurve_project_orthogonal_implicit(NULL, shape_fn, (void *)s, model_size, curve,
+                                                   o, &ri));
+    size_t near[8], n_near = 0;
+    for (size_t b = 0; b < projcurve_result_branch_count(r) && b < 8; ++b)
+        if (families[b] == 0)
+            near[n_near++] = b;
+    CHECK(n_near > 0);
+    if (ri && projcurve_result_branch_count(ri) == 1) {
+        double range[2] = {0, 0};
+        projcurve_result_branch_info(NULL, ri, 0, range, NULL, NULL, NULL, NULL);
+        CHECK_NEAR(range[0], t0, 1e-12);
+        CHECK_NEAR(range[1], t1, 1e-12);
+        const double window = 1e-9 * (t1 - t0);
+        const size_t implicit_branch = 0;
+        const double to_param = pieces_distance(ri, 0, r, near, n_near, window);
+        double to_implicit = 0.0;
+        for (size_t j = 0; j < n_near; ++j)
+            to_implicit = fmax(to_implicit,
+                               pieces_distance(r, near[j], ri, &implicit_branch, 1, window));
+        printf("%s: implicit vs parametric pieces %.1e, parametric vs implicit %.1e "
+               "(bound 2 eps_D = %.0e)\n",
+               name, to_param, to_implicit, 2 * eps_d);
+        CHECK(to_param <= 2 * eps_d);
+        CHECK(to_implicit <= 2 * eps_d);
+    } else {
+        CHECK(ri != NULL && projcurve_result_branch_count(ri) == 1);
+    }
+    projcurve_result_destroy(ri);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(curve);
 }
 
 static void test_sphere(void)
 {
     const double centre[3] = {0, 0, 0};
-    double R = 10.0;
+    const double R = 10.0;
     const shape s = {SPHERE, R, 0};
     const wave w = {{0, 0, 0}, 13.0, 3.0, {0, 0, 0}, 0};
     int fam[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
@@ -333,35 +444,7 @@ static void test_sphere(void)
         expect_whole(r, 0, 0.5, 2.5);
         expect_whole(r, 1, 0.5, 2.5);
         CHECK(fam[0] + fam[1] == 1);   /* one near, one far */
-        /* The implicit route on the same sphere: its vertices lie on the
-         * parametric near branch's pieces within 2 eps_D. */
-        projcurve_curve *curve = NULL;
-        CHECK_OK(projcurve_curve_create_callback(NULL, wave_fn, (void *)&w, 0.5, 2.5, &curve));
-        projcurve_options *o = options(1e-4);
-        projcurve_result *ri = NULL;
-        CHECK_OK(projcurve_project_orthogonal_implicit(NULL, sphere_fn, &R, 20.0, curve, o, &ri));
-        static double piece_pts[3 * PIECE_CAP * PIECE_SAMPLES], ranges[2 * PIECE_CAP],
-            ipts[4 * 4096];
-        const size_t near = fam[0] == 0 ? 0 : 1;
-        const size_t np = sample_pieces(r, near, piece_pts, ranges, PIECE_CAP);
-        size_t ni = 0;
-        CHECK_OK(projcurve_result_branch_points(NULL, ri, 0, 4096, ipts, &ni));
-        double worst = 0.0;
-        for (size_t i = 0; i < ni && i < 4096; ++i) {
-            /* Pieces whose t-range holds the vertex's t. */
-            double best = INFINITY;
-            for (size_t k = 0; k < np; ++k)
-                if (ranges[2 * k] <= ipts[4 * i] && ipts[4 * i] <= ranges[2 * k + 1])
-                    best = fmin(best, to_polyline(ipts + 4 * i + 1,
-                                                  piece_pts + 3 * k * PIECE_SAMPLES,
-                                                  PIECE_SAMPLES));
-            worst = fmax(worst, best);
-        }
-        printf("sphere: implicit vertices vs parametric pieces %.1e\n", worst);
-        CHECK(worst <= 2e-4);
-        projcurve_result_destroy(ri);
-        projcurve_options_destroy(o);
-        projcurve_curve_destroy(curve);
+        check_agreement("sphere", r, fam, &s, &w, 0.5, 2.5, 20.0);
     }
     projcurve_result_destroy(r);
     projcurve_surface_destroy(surf);
@@ -377,6 +460,8 @@ static void test_cylinder_torus_plane(void)
     const wave wc = {{0, 0, 5}, 7.0, 3.0, {0, 0, 0}, 0};
     projcurve_result *r = run("cylinder", pc_shape_cylinder(5.0, 10.0), &cyl, &wc, 0.3, 1.3, 2,
                               PROJCURVE_METHOD_RK4, fam, &surf);
+    if (r && projcurve_result_branch_count(r) == 2)
+        check_agreement("cylinder", r, fam, &cyl, &wc, 0.3, 1.3, 15.0);
     projcurve_result_destroy(r);
     projcurve_surface_destroy(surf);
 
@@ -385,6 +470,8 @@ static void test_cylinder_torus_plane(void)
     const wave wt = {{0, 0, 1}, 11.0, 0.5, {0, 0, 0}, 0};
     r = run("torus", pc_shape_torus(10.0, 3.0), &tor, &wt, 0.3, 2.8, 4,
             PROJCURVE_METHOD_SECOND_ORDER, fam, &surf);
+    if (r && projcurve_result_branch_count(r) == 4)
+        check_agreement("torus", r, fam, &tor, &wt, 0.3, 2.8, 30.0);
     projcurve_result_destroy(r);
     projcurve_surface_destroy(surf);
 
@@ -393,8 +480,10 @@ static void test_cylinder_torus_plane(void)
     const wave wp = {{0, 0.5, 0.3}, 0.8, 0.2, {0, 0, 0}, 0};
     r = run("plane", pc_shape_plane(3, 3, 2, 2), &pl, &wp, 0.0, 6.0, 1,
             PROJCURVE_METHOD_SECOND_ORDER, fam, &surf);
-    if (r && projcurve_result_branch_count(r) == 1)
+    if (r && projcurve_result_branch_count(r) == 1) {
         expect_whole(r, 0, 0.0, 6.0);
+        check_agreement("plane", r, fam, &pl, &wp, 0.0, 6.0, 4.0);
+    }
     projcurve_result_destroy(r);
     projcurve_surface_destroy(surf);
 

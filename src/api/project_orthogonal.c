@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "ortho/implicit.h"
 #include "ortho/ortho_centres.h"
+#include "ortho/ortho_duplicates.h"
 #include "ortho/ortho_projector.h"
 #include "ortho/ortho_seeds.h"
 #include "refine/refine.h"
@@ -65,6 +66,7 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     if (status == PROJCURVE_OK)
         status = pc_ortho_split_at_centres(ctx, &proj, r);
     if (status == PROJCURVE_OK) {
+        pc_ortho_drop_duplicates(&proj, r);
         name_singular_ends(r);
         r->stats.tol_distance = distance_tolerance(&o, surface->size);
         if (o.compose)

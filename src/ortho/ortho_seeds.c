@@ -3,6 +3,7 @@
 #include <stdlib.h>
 
 #include "common/error.h"
+#include "ortho/collapsed.h"
 
 /* Initial capacity of the foot-point buffer; it grows when a search finds
  * more (the geometry reports the full count). */
@@ -34,6 +35,19 @@ static projcurve_status known_points(projcurve_context *ctx, const pc_ortho_find
     return status;
 }
 
+/* 1 when (u, v) is a collapsed point of the parametrisation (collapsed.h).
+ * Such a foot point is no seed: its u (or v) is arbitrary (at the pole of a
+ * sphere every u is a foot point of a P on the axis, and the search returns
+ * several), q' has no reliable component along it, and the branch through
+ * it is the one that reached the edge or the one the next search finds
+ * beside it and traces back to the edge. */
+static int at_collapsed_point(const projcurve_surface *s, double u, double v)
+{
+    pc_vec3 sd[3];
+    pc_nurbs_surface_eval(&s->nurbs, u, v, 1, NULL, NULL, sd);
+    return pc_collapsed_direction(sd[1], sd[2]) != PC_COLLAPSE_NONE;
+}
+
 /* Every local foot point of P(t) (projcurve_surface_foot_points), or the
  * known ones where may_jump asked for no search. */
 static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx, double t,
@@ -63,7 +77,8 @@ static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx,
             count = st->capacity;
     }
     for (size_t i = 0; status == PROJCURVE_OK && i < count; ++i)
-        status = pc_seed_list_push(ctx, out, t, st->uv[2 * i], st->uv[2 * i + 1]);
+        if (!at_collapsed_point(st->surface, st->uv[2 * i], st->uv[2 * i + 1]))
+            status = pc_seed_list_push(ctx, out, t, st->uv[2 * i], st->uv[2 * i + 1]);
     return status;
 }
 

@@ -43,9 +43,51 @@ static double first_root(double a, double b, double c, double xmax)
     return best;
 }
 
+/* A branch on a side whose rate across it is below this fraction of its
+ * rate along it (both relative to the domain's widths) runs along that side
+ * (a foot point on the seam of a closed surface): it does not leave through
+ * it, whatever the rounding of q' says. */
+#define PC_EXIT_ALONG_SIDE 1e-6
+
+/* The sides (bits 0..3: u0, u1, v0, v1) that p lies on, within
+ * PC_TRACE_BOUNDARY_TOL, and runs along. Such a side is no exit of the
+ * branch: it is left out of the crossings, the margin and the snap, so
+ * that the exit is located on the side it does leave through. */
+static unsigned sides_along(const double dom[4], const pc_proj_point *p)
+{
+    const double wu = dom[1] - dom[0] > 0.0 ? dom[1] - dom[0] : 1.0;
+    const double wv = dom[3] - dom[2] > 0.0 ? dom[3] - dom[2] : 1.0;
+    const double ru = fabs(p->du) / wu, rv = fabs(p->dv) / wv;
+    const double off[4] = {(p->u - dom[0]) / wu, (dom[1] - p->u) / wu, (p->v - dom[2]) / wv,
+                           (dom[3] - p->v) / wv};
+    unsigned along = 0;
+    for (int k = 0; k < 4; ++k) {
+        const double across = k < 2 ? ru : rv, parallel = k < 2 ? rv : ru;
+        if (off[k] <= PC_TRACE_BOUNDARY_TOL && across <= PC_EXIT_ALONG_SIDE * parallel)
+            along |= 1u << k;
+    }
+    return along;
+}
+
+/* pc_domain_margin over the sides not in skip. */
+static double margin_except(const double dom[4], double u, double v, unsigned skip)
+{
+    const double wu = dom[1] - dom[0] > 0.0 ? dom[1] - dom[0] : 1.0;
+    const double wv = dom[3] - dom[2] > 0.0 ? dom[3] - dom[2] : 1.0;
+    const double off[4] = {(u - dom[0]) / wu, (dom[1] - u) / wu, (v - dom[2]) / wv,
+                           (dom[3] - v) / wv};
+    double m = INFINITY;
+    for (int k = 0; k < 4; ++k)
+        if (!(skip & (1u << k)))
+            m = fmin(m, off[k]);
+    return m;
+}
+
 /* Where the Taylor model at p, moving in direction s, first meets a side of
- * the domain within a parameter distance gap; -1 if it does not. */
-static double first_crossing(const double dom[4], const pc_proj_point *p, double s, double gap)
+ * the domain not in skip within a parameter distance gap; -1 if it does
+ * not. */
+static double first_crossing(const double dom[4], const pc_proj_point *p, double s, double gap,
+                             unsigned skip)
 {
     const double sides[4][4] = {
         /* offset from the side, first and second derivative along x = s t */
@@ -56,6 +98,8 @@ static double first_crossing(const double dom[4], const pc_proj_point *p, double
     };
     double best = -1.0;
     for (int k = 0; k < 4; ++k) {
+        if (skip & (1u << k))
+            continue;
         const double x = first_root(sides[k][0], sides[k][1], sides[k][2], gap);
         if (x > 0.0 && (best < 0.0 || x < best))
             best = x;
@@ -63,8 +107,8 @@ static double first_crossing(const double dom[4], const pc_proj_point *p, double
     return best;
 }
 
-/* Puts (u, v) exactly on the nearest side. */
-static void snap_to_boundary(const double dom[4], pc_proj_point *p)
+/* Puts (u, v) exactly on the nearest side not in skip. */
+static void snap_to_boundary(const double dom[4], pc_proj_point *p, unsigned skip)
 {
     const double d[4] = {p->u - dom[0], dom[1] - p->u, p->v - dom[2], dom[3] - p->v};
     const double w[2] = {dom[1] - dom[0], dom[3] - dom[2]};
@@ -72,7 +116,7 @@ static void snap_to_boundary(const double dom[4], pc_proj_point *p)
     double best = INFINITY;
     for (int k = 0; k < 4; ++k) {
         const double rel = d[k] / (w[k / 2] > 0.0 ? w[k / 2] : 1.0);
-        if (rel < best) {
+        if (!(skip & (1u << k)) && rel < best) {
             best = rel;
             side = k;
         }
@@ -95,8 +139,11 @@ int pc_locate_exit(pc_tracer *tr, const pc_proj_point *cur, double h, pc_proj_po
     pc_proj_point in = *cur;
     double gap = fabs(h); /* t-distance from `in` to a parameter known outside */
     int advanced = 0;
+    const unsigned along = sides_along(tr->dom, cur);
+    if (along == 0xfu)
+        return -1;   /* a domain of no extent */
     for (int k = 0; k < PC_EXIT_MAX_ITER && gap > tr->min_step; ++k) {
-        double x = first_crossing(tr->dom, &in, s, gap);
+        double x = first_crossing(tr->dom, &in, s, gap, along);
         if (!(x > 0.0) || x >= gap)
             x = 0.5 * gap;
         const double t = in.t + s * x;
@@ -113,8 +160,8 @@ int pc_locate_exit(pc_tracer *tr, const pc_proj_point *cur, double h, pc_proj_po
             in = p;
             advanced = 1;
             gap -= x;
-            if (pc_domain_margin(tr->dom, in.u, in.v) <= PC_TRACE_BOUNDARY_TOL) {
-                snap_to_boundary(tr->dom, &in);
+            if (margin_except(tr->dom, in.u, in.v, along) <= PC_TRACE_BOUNDARY_TOL) {
+                snap_to_boundary(tr->dom, &in, along);
                 *out = in;
                 return 1;
             }
@@ -122,8 +169,8 @@ int pc_locate_exit(pc_tracer *tr, const pc_proj_point *cur, double h, pc_proj_po
             gap = x;
         }
     }
-    if (advanced && pc_domain_margin(tr->dom, in.u, in.v) <= PC_EXIT_LOOSE_TOL) {
-        snap_to_boundary(tr->dom, &in);
+    if (advanced && margin_except(tr->dom, in.u, in.v, along) <= PC_EXIT_LOOSE_TOL) {
+        snap_to_boundary(tr->dom, &in, along);
         *out = in;
         return 1;
     }

@@ -23,9 +23,17 @@ double pc_domain_margin(const double dom[4], double u, double v)
     return fmin(mu, mv);
 }
 
+/* (u, v) beyond a side by more than PC_TRACE_BOUNDARY_TOL of the domain's
+ * width. A prediction beyond it by less is rounding, not an exit: a branch
+ * running along a side (a foot point moving along the seam of a closed
+ * surface) predicts points a few ulps outside at every step, and must not
+ * end there. */
 static int outside(const double dom[4], const double uv[2])
 {
-    return uv[0] < dom[0] || uv[0] > dom[1] || uv[1] < dom[2] || uv[1] > dom[3];
+    const double mu = PC_TRACE_BOUNDARY_TOL * (dom[1] - dom[0]);
+    const double mv = PC_TRACE_BOUNDARY_TOL * (dom[3] - dom[2]);
+    return uv[0] < dom[0] - mu || uv[0] > dom[1] + mu || uv[1] < dom[2] - mv ||
+           uv[1] > dom[3] + mv;
 }
 
 /* (u, v) within two strides (parameter length of the step) of a side. */

@@ -122,6 +122,13 @@ pc_shape_surface pc_shape_cylinder(double r, double height)
     return revolve(1, 2, profile, w, knots, 4, origin);
 }
 
+pc_shape_surface pc_shape_cone(double height)
+{
+    const double profile[2][2] = {{0, 0}, {height, height}};
+    const double w[2] = {1, 1}, knots[4] = {0, 0, 1, 1}, origin[3] = {0, 0, 0};
+    return revolve(1, 2, profile, w, knots, 4, origin);
+}
+
 pc_shape_surface pc_shape_torus(double R, double r)
 {
     double profile[9][2], w[9];

@@ -48,6 +48,11 @@ pc_shape_surface pc_shape_sphere(const double centre[3], double r);
  * v along z (linear, [0, 1]). */
 pc_shape_surface pc_shape_cylinder(double r, double height);
 
+/* Cone x^2 + y^2 = z^2, z in [0, height], apex at the origin: u around
+ * (quadratic, [0, 1]), v along the generators (linear, [0, 1]); the edge
+ * v = 0 is collapsed to the apex (Su = 0 there). */
+pc_shape_surface pc_shape_cone(double height);
+
 /* Torus around the z axis: (sqrt(x^2 + y^2) - R)^2 + z^2 = r^2; u around the
  * axis, v around the tube, both [0, 1]. */
 pc_shape_surface pc_shape_torus(double R, double r);
