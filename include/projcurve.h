@@ -138,7 +138,9 @@ typedef enum projcurve_option {
      * Unset (the default of a new handle) it is automatic: 1e-4 of the
      * surface's bounding-box diagonal (projcurve_surface_bounds), which the
      * result reports as PROJCURVE_STAT_TOL_DISTANCE. While unset, the getter
-     * and projcurve_option_info's default give 0. */
+     * and projcurve_option_info's default give 0. A projection refuses, with
+     * OUT_OF_RANGE, a value below max(NEWTON_TOL, 1e-12) times the model
+     * size: its exact points are not placed more closely than that. */
     PROJCURVE_OPT_TOL_DISTANCE = 1,
     /* double: joint angle tolerance eps_T in degrees, (0, 90]. Default 1. */
     PROJCURVE_OPT_TOL_ANGLE_DEG = 2,

@@ -2,11 +2,14 @@
  * projcurve_project_directional on bad or awkward input: NULL arguments,
  * zero and non-finite directions, a curve that misses the surface (an empty
  * result, not an error), degenerate patches (the collapsed pole edges of a
- * sphere, a collapsed row inside the domain), the point limit (a partial result), a failing curve callback.
+ * sphere, a collapsed row inside the domain), the point limit (a partial result), a failing curve callback,
+ * a distance tolerance finer than double precision or the corrector can
+ * deliver (for the orthogonal projections too).
  * Each gives its documented status, and nothing hangs.
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "api/handles.h"
 #include "check.h"
@@ -237,6 +240,59 @@ static void test_callback(void)
     projcurve_surface_destroy(s);
 }
 
+/* The plane z = 0 as an implicit surface. */
+static int plane_z(void *user, const double x[3], double *value, double grad[3], double hess[9])
+{
+    (void)user;
+    *value = x[2];
+    grad[0] = grad[1] = 0.0;
+    grad[2] = 1.0;
+    for (int k = 0; k < 9; ++k)
+        hess[k] = 0.0;
+    return 0;
+}
+
+/* eps_D below max(NEWTON_TOL, 1e-12) of the model size is OUT_OF_RANGE,
+ * with a message naming the option, and no result; at the floor it is
+ * accepted. (1e-300 once gave an OK result whose branch had no pieces.) */
+static void test_unreachable_tolerance(const projcurve_surface *s, const projcurve_curve *c)
+{
+    const double d[3] = {0, 0, -1};
+    const double size = s->size;
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    const double too_fine[3] = {1e-300, 1e-15 * size, 0.99e-12 * size};
+    for (int k = 0; k < 3; ++k) {
+        CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, too_fine[k]));
+        projcurve_result *r = (projcurve_result *)o; /* a sentinel: must stay untouched */
+        CHECK_STATUS(projcurve_project_directional(ctx, s, c, d, o, &r),
+                     PROJCURVE_ERR_OUT_OF_RANGE);
+        CHECK(r == (projcurve_result *)o);
+        CHECK(strstr(projcurve_context_message(ctx), "TOL_DISTANCE") != NULL);
+        CHECK_STATUS(projcurve_project_orthogonal(ctx, s, c, o, &r), PROJCURVE_ERR_OUT_OF_RANGE);
+        CHECK(r == (projcurve_result *)o);
+        CHECK_STATUS(projcurve_project_orthogonal_implicit(ctx, plane_z, NULL, size, c, o, &r),
+                     PROJCURVE_ERR_OUT_OF_RANGE);
+        CHECK(r == (projcurve_result *)o);
+    }
+    /* a coarser corrector raises the floor with it */
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_NEWTON_TOL, 1e-6));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, 1e-7 * size));
+    projcurve_result *r = NULL;
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, d, o, &r), PROJCURVE_ERR_OUT_OF_RANGE);
+    CHECK(r == NULL);
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, 1e-6 * size));
+    CHECK_OK(projcurve_project_directional(ctx, s, c, d, o, &r));
+    double used = 0.0;
+    CHECK_OK(projcurve_result_stat(NULL, r, PROJCURVE_STAT_TOL_DISTANCE, &used));
+    CHECK_NEAR(used, 1e-6 * size, 0.0);
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_context_destroy(ctx);
+}
+
 int main(void)
 {
     projcurve_surface *s = shape_bumpy(8.0, 1);
@@ -245,6 +301,7 @@ int main(void)
     CHECK(s != NULL && c != NULL);
     test_arguments(s, c);
     test_miss(s);
+    test_unreachable_tolerance(s, c);
     projcurve_curve_destroy(c);
     projcurve_surface_destroy(s);
     test_degenerate_patch();

@@ -59,4 +59,23 @@ struct projcurve_options {
 /* Fills o with every default (used when the caller passes NULL options). */
 void pc_options_defaults(struct projcurve_options *o);
 
+/* Automatic eps_D, while TOL_DISTANCE is unset: this fraction of the model
+ * size (projcurve.h). */
+#define PC_AUTO_TOL_DISTANCE 1e-4
+/* The smallest eps_D a projection accepts, relative to the model size: the
+ * points of the exact projection carry the rounding of double-precision
+ * evaluations, ~1e-15 of the size, and the refinement measures distances
+ * to ~1e-13 of it; below 1e-12 it would chase rounding (and split branches
+ * where it cannot follow it) rather than the curve. */
+#define PC_MIN_TOL_DISTANCE 1e-12
+
+/* eps_D for a model of size model_size (> 0): the caller's TOL_DISTANCE,
+ * or PC_AUTO_TOL_DISTANCE of the size while unset. A caller's value below
+ * max(NEWTON_TOL, PC_MIN_TOL_DISTANCE) of the size cannot be met (the
+ * corrector places the exact points only that closely) and is
+ * OUT_OF_RANGE, with a message naming both. */
+projcurve_status pc_options_distance_tolerance(projcurve_context *ctx,
+                                               const struct projcurve_options *o,
+                                               double model_size, double *eps_d);
+
 #endif /* PC_API_HANDLES_H */

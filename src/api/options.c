@@ -141,6 +141,24 @@ static projcurve_status pc_option_lookup(projcurve_context *ctx, projcurve_optio
     return PROJCURVE_OK;
 }
 
+projcurve_status pc_options_distance_tolerance(projcurve_context *ctx,
+                                               const struct projcurve_options *o,
+                                               double model_size, double *eps_d)
+{
+    if (!(o->tol_distance > 0.0)) {
+        *eps_d = PC_AUTO_TOL_DISTANCE * model_size;
+        return PROJCURVE_OK;
+    }
+    const double floor_rel = fmax(o->newton_tol, PC_MIN_TOL_DISTANCE);
+    if (o->tol_distance < floor_rel * model_size)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "option TOL_DISTANCE: %g is below %g, what this model allows "
+                       "(%g of its size %g: NEWTON_TOL or the rounding of double precision)",
+                       o->tol_distance, floor_rel * model_size, floor_rel, model_size);
+    *eps_d = o->tol_distance;
+    return PROJCURVE_OK;
+}
+
 void pc_options_defaults(struct projcurve_options *o)
 {
     for (size_t i = 0; i < PC_OPTION_COUNT; ++i) {

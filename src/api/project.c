@@ -15,14 +15,11 @@
 #include "trace/result.h"
 #include "trace/trace.h"
 
-/* Automatic eps_D: this fraction of the surface's size (projcurve.h). */
-#define PC_AUTO_TOL_DISTANCE 1e-4
-
 /* Names of the option keys for messages, indexed by key. */
 static const char *const pc_option_names[] = {
     "?", "TOL_DISTANCE", "TOL_ANGLE_DEG", "NEWTON_TOL", "NEWTON_MAX_ITER", "METHOD",
     "PARAM_STEP", "ARC_STEP_FRACTION", "MAX_POINTS", "MAX_PIECES", "COMPOSE",
-    "JUMP_DETECTION"};
+    "JUMP_DETECTION", "PCURVE_DEGREE"};
 
 projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_options *opts,
                                     struct projcurve_options *out)
@@ -31,7 +28,7 @@ projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_opti
         pc_options_defaults(out);
         return PROJCURVE_OK;
     }
-    for (int key = PROJCURVE_OPT_TOL_DISTANCE; key <= PROJCURVE_OPT_JUMP_DETECTION; ++key) {
+    for (int key = PROJCURVE_OPT_TOL_DISTANCE; key <= PROJCURVE_OPT_PCURVE_DEGREE; ++key) {
         projcurve_option_type type;
         double lo, hi, value;
         if (projcurve_option_info(NULL, (projcurve_option)key, &type, &lo, &hi, NULL) !=
@@ -87,8 +84,13 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     projcurve_status st = unit_direction(ctx, dir, &unit);
     if (st == PROJCURVE_OK)
         st = pc_options_resolve(ctx, opts, &o);
+    double eps_d = 0.0;
+    if (st == PROJCURVE_OK)
+        st = pc_options_distance_tolerance(ctx, &o, surface->size > 0.0 ? surface->size : 1.0,
+                                           &eps_d);
     if (st != PROJCURVE_OK)
         return st;
+    o.tol_distance = eps_d; /* resolved once, for the refinement too */
 
     pc_projector proj;
     pc_directional_data data;
@@ -110,8 +112,7 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
         const int need_length = o.param_step == 0.0 || o.jump_detection;
         const pc_trace_config config = {
             need_length ? pc_directional_length_estimate(&finder) : 0.0, proj.model_size};
-        r->stats.tol_distance =
-            o.tol_distance > 0.0 ? o.tol_distance : PC_AUTO_TOL_DISTANCE * proj.model_size;
+        r->stats.tol_distance = eps_d;
         st = pc_trace_branches(ctx, &proj, &o, &finder.base, &config, r);
     }
     /* tolerance control and composition also on a partial result */

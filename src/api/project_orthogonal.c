@@ -5,6 +5,7 @@
  */
 #include <math.h>
 
+#include "api/project.h"
 #include "common/error.h"
 #include "ortho/implicit.h"
 #include "ortho/ortho_centres.h"
@@ -14,14 +15,6 @@
 #include "refine/refine.h"
 #include "trace/result.h"
 #include "trace/trace.h"
-
-/* Automatic eps_D: this fraction of the model size (projcurve.h). */
-#define ORTHO_AUTO_TOL_DISTANCE 1e-4
-
-static double distance_tolerance(const struct projcurve_options *o, double model_size)
-{
-    return o->tol_distance > 0.0 ? o->tol_distance : ORTHO_AUTO_TOL_DISTANCE * model_size;
-}
 
 /* A det K = 0 end (or start) is what the engine calls a fold; for the
  * orthogonal projection that is a centre of curvature (corollary 2.1). */
@@ -42,10 +35,14 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     PC_REQUIRE(ctx, curve, "curve");
     PC_REQUIRE(ctx, out, "out");
     struct projcurve_options o;
-    if (opts)
-        o = *opts;
-    else
-        pc_options_defaults(&o);
+    double eps_d = 0.0;
+    projcurve_status st = pc_options_resolve(ctx, opts, &o);
+    if (st == PROJCURVE_OK)
+        st = pc_options_distance_tolerance(ctx, &o, surface->size > 0.0 ? surface->size : 1.0,
+                                           &eps_d);
+    if (st != PROJCURVE_OK)
+        return st;
+    o.tol_distance = eps_d; /* resolved once, for the refinement too */
 
     pc_ortho_cache cache;
     pc_projector proj;
@@ -68,7 +65,7 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     if (status == PROJCURVE_OK) {
         pc_ortho_drop_duplicates(&proj, r);
         name_singular_ends(r);
-        r->stats.tol_distance = distance_tolerance(&o, surface->size);
+        r->stats.tol_distance = eps_d;
         if (o.compose)
             status = pc_refine_and_compose(ctx, &proj, &o, r);
     }
@@ -100,10 +97,12 @@ projcurve_status projcurve_project_orthogonal_implicit(
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "model size must be positive (got %.17g)", model_size);
     struct projcurve_options o;
-    if (opts)
-        o = *opts;
-    else
-        pc_options_defaults(&o);
+    double eps_d = 0.0;
+    projcurve_status st = pc_options_resolve(ctx, opts, &o);
+    if (st == PROJCURVE_OK)
+        st = pc_options_distance_tolerance(ctx, &o, model_size, &eps_d);
+    if (st != PROJCURVE_OK)
+        return st;
 
     pc_implicit imp;
     imp.fn = fn;
@@ -113,7 +112,6 @@ projcurve_status projcurve_project_orthogonal_implicit(
     imp.newton_tol = o.newton_tol * model_size;
     imp.newton_max_iter = (int)o.newton_max_iter;
     imp.grad_floor = 0.0;
-    const double eps_d = distance_tolerance(&o, model_size);
 
     projcurve_result *r = NULL;
     projcurve_status status = pc_result_create(ctx, 4, &r);

@@ -24,8 +24,6 @@
 #include "refine/refine.h"
 #include "refine/refine_internal.h"
 
-/* Automatic eps_D, relative to the model size (projcurve.h). */
-#define PC_REFINE_AUTO_DISTANCE 1e-4
 /* The deviation is estimated from samples; aiming a little below eps_D
  * covers the estimate's error and the difference between the two one-sided
  * distances, which agree to second order for curves this close. */
@@ -317,9 +315,10 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
                        res->point_dim);
     if (!opts->compose)
         return PROJCURVE_OK;
-    const double eps = opts->tol_distance > 0.0
-                           ? opts->tol_distance
-                           : PC_REFINE_AUTO_DISTANCE * proj->surface->size;
+    double eps;
+    st = pc_options_distance_tolerance(ctx, opts, proj->model_size, &eps);
+    if (st != PROJCURVE_OK)
+        return st;
     res->stats.tol_distance = eps;
 
     pc_refiner r;
