@@ -88,6 +88,11 @@ def part_usage(exe, shared, work):
     run([exe, "project", case, "--dir", "-1,0,0", "--pcurve-degree", "3"], 0, "cubic pcurves")
     run([exe, "project", "/nonexistent/x.igs", "--dir", "0,0,-1"], 2, "missing input")
     run([exe, "project", case, "--dir", "0,0,0"], 1, "zero direction: projection fails")
+    # a tolerance finer than the model's double precision carries: the
+    # projection refuses it (exit 1) and says why
+    proc = run([exe, "project", case, "--dir", "-1,0,0", "--tol", "1e-300"], 1,
+               "eps_D below the model's precision: projection fails")
+    check("TOL_DISTANCE" in proc.stderr, "unreachable eps_D: no message naming TOL_DISTANCE")
     teapot = os.path.join(shared, "data", "real", "teapot_newell_spd.txt")
     run([exe, "project", teapot, "--dir", "0,0,-1"], 2, "surfaces without curves")
 
