@@ -136,7 +136,7 @@ static size_t line_hits(const test_patch *const *patches, int n_patches, const d
           sizeof g_work / sizeof g_work[0]);
     for (int k = 0; k < n_patches; ++k)
         CHECK_OK(pc_ray_patch_hits(NULL, &frame, &patches[k]->patch, g_work, hits));
-    pc_hit_list_finish(hits, domain, vec3_norm(vec3_load(d)), scale, NULL);
+    pc_hit_list_finish(hits, domain, vec3_norm(vec3_load(d)), scale, frame.tol_residual, NULL);
     return hits->count;
 }
 

@@ -75,7 +75,7 @@ static void finish(const projcurve_surface *s, const pc_ray_frame *frame, pc_vec
     const graze_context g = {s, frame};
     const pc_graze_test graze = {same_graze, &g};
     pc_hit_list_finish(hits, s->nurbs.domain, pc_vec3_length_robust(dir),
-                       s->size + query_magnitude(s, frame->origin), &graze);
+                       s->size + query_magnitude(s, frame->origin), frame->tol_residual, &graze);
 }
 
 static int visit_patch(void *user, size_t patch_index)

@@ -34,6 +34,16 @@
 /* The normal at a pole is taken this far inside the patch. */
 #define PC_POLE_NORMAL_OFFSET 1e-6
 
+/* A hit's (u, v) are rounded to doubles. In an ordinary span that moves the
+ * local (s, t) by ~1e-16 / (span width), nothing; in a span much narrower
+ * than its parameters' magnitude (knot clusters: spans of 1e-8 at v ~ 4)
+ * one ulp of v is a sizeable step of t, and S at the reported parameters
+ * may lie off the line by |S_t| times that step, beyond the hit tolerance:
+ * no double (u, v) does better. Where the rounding moves (s, t) by more
+ * than this, the residual recorded is re-evaluated at the reported
+ * parameters (the local root itself stays the accepted one). */
+#define PC_LOCAL_ROUNDING 1e-13
+
 /* After a failed Newton try on a box, the next waits until the box has
  * shrunk by this factor: a try costs about as much as a clipping round. */
 #define PC_NEWTON_RETRY_FACTOR 0.01
@@ -83,6 +93,12 @@ static projcurve_status record_root_flagged(const patch_search *ps, const pc_fra
     hit.u = s >= 1.0 ? p->u1 : p->u0 + s * (p->u1 - p->u0);
     hit.v = t >= 1.0 ? p->v1 : p->v0 + t * (p->v1 - p->v0);
     hit.residual = r->residual;
+    const double s_rep = (hit.u - p->u0) / (p->u1 - p->u0), t_rep = (hit.v - p->v0) / (p->v1 - p->v0);
+    if (fabs(s_rep - s) > PC_LOCAL_ROUNDING || fabs(t_rep - t) > PC_LOCAL_ROUNDING) {
+        pc_frame_root at;
+        pc_frame_net_point(&ps->net, s_rep, t_rep, &at);
+        hit.residual = fmax(hit.residual, at.residual);
+    }
     hit.flags = (forced_tangent || r->cos_dir < PC_HIT_TANGENT_COS) ? PROJCURVE_HIT_TANGENT : 0u;
     hit.flags |= extra_flags;
     return pc_hit_list_push(ps->ctx, ps->hits, hit);
