@@ -84,7 +84,7 @@ static void compare_random_lines(const projcurve_surface *s, const char *name, i
     pc_test_rng rng;
     pc_test_rng_seed(&rng, seed);
     pc_hit_list hits = {0};
-    pc_oracle_stats st = {0, 0, 0, 0};
+    pc_oracle_stats st = {0};
     double *uvl = NULL;
     unsigned *flags = NULL;
     for (int k = 0; k < n_lines; ++k) {

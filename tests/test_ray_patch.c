@@ -277,7 +277,7 @@ static void test_against_oracle(const test_patch *tp, const char *name, int n_ra
     const test_patch *patches[1] = {tp};
     pc_test_rng rng;
     pc_test_rng_seed(&rng, seed);
-    pc_oracle_stats st = {0, 0, 0, 0};
+    pc_oracle_stats st = {0};
     for (int k = 0; k < n_rays; ++k) {
         double o[3], d[3];
         random_line(&rng, tp->patch.box, 1.2, o, d);

@@ -55,29 +55,52 @@ static void group_box(const pc_oracle_mesh *m, int bi0, int bi1, int bj0, int bj
 int pc_oracle_mesh_build(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *user,
                          const double domain[4], int cells_u, int cells_v)
 {
+    double *us = malloc(sizeof(double) * (size_t)(cells_u + 1));
+    double *vs = malloc(sizeof(double) * (size_t)(cells_v + 1));
+    int ok = us != NULL && vs != NULL;
+    if (ok) {
+        /* The last sample is the domain's end exactly. */
+        for (int i = 0; i <= cells_u; ++i)
+            us[i] = i == cells_u ? domain[1] : domain[0] + (domain[1] - domain[0]) * i / cells_u;
+        for (int j = 0; j <= cells_v; ++j)
+            vs[j] = j == cells_v ? domain[3] : domain[2] + (domain[3] - domain[2]) * j / cells_v;
+        ok = pc_oracle_mesh_build_samples(mesh, eval, user, us, cells_u, vs, cells_v);
+    }
+    free(us);
+    free(vs);
+    return ok;
+}
+
+int pc_oracle_mesh_build_samples(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *user,
+                                 const double *us, int cells_u, const double *vs, int cells_v)
+{
     memset(mesh, 0, sizeof *mesh);
     mesh->eval = eval;
     mesh->user = user;
-    memcpy(mesh->domain, domain, sizeof mesh->domain);
+    mesh->domain[0] = us[0];
+    mesh->domain[1] = us[cells_u];
+    mesh->domain[2] = vs[0];
+    mesh->domain[3] = vs[cells_v];
     mesh->cells_u = cells_u;
     mesh->cells_v = cells_v;
     mesh->block = ORACLE_BLOCK;
     mesh->blocks_u = (cells_u + ORACLE_BLOCK - 1) / ORACLE_BLOCK;
     mesh->blocks_v = (cells_v + ORACLE_BLOCK - 1) / ORACLE_BLOCK;
+    mesh->us = malloc(sizeof(double) * (size_t)(cells_u + 1));
+    mesh->vs = malloc(sizeof(double) * (size_t)(cells_v + 1));
     mesh->points = malloc(sizeof(double) * 3 * (size_t)(cells_u + 1) * (size_t)(cells_v + 1));
     mesh->block_boxes = malloc(sizeof(double) * 6 * (size_t)mesh->blocks_u * (size_t)mesh->blocks_v);
-    if (!mesh->points || !mesh->block_boxes) {
+    if (!mesh->us || !mesh->vs || !mesh->points || !mesh->block_boxes) {
         pc_oracle_mesh_free(mesh);
         return 0;
     }
+    memcpy(mesh->us, us, sizeof(double) * (size_t)(cells_u + 1));
+    memcpy(mesh->vs, vs, sizeof(double) * (size_t)(cells_v + 1));
     double all[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
     for (int j = 0; j <= cells_v; ++j) {
         for (int i = 0; i <= cells_u; ++i) {
-            /* The last sample is the domain's end exactly. */
-            const double u = i == cells_u ? domain[1] : domain[0] + (domain[1] - domain[0]) * i / cells_u;
-            const double v = j == cells_v ? domain[3] : domain[2] + (domain[3] - domain[2]) * j / cells_v;
             double out[9];
-            eval(user, u, v, out);
+            eval(user, us[i], vs[j], out);
             double *p = mesh->points + 3 * ((size_t)j * (size_t)(cells_u + 1) + (size_t)i);
             memcpy(p, out, 3 * sizeof *p);
             for (int k = 0; k < 3; ++k) {
@@ -86,6 +109,8 @@ int pc_oracle_mesh_build(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *use
             }
         }
     }
+    for (int k = 0; k < 3; ++k)
+        mesh->centre[k] = 0.5 * (all[k] + all[k + 3]);
     mesh->scale = sqrt((all[3] - all[0]) * (all[3] - all[0]) + (all[4] - all[1]) * (all[4] - all[1]) +
                        (all[5] - all[2]) * (all[5] - all[2]));
     for (int bj = 0; bj < mesh->blocks_v; ++bj) {
@@ -129,6 +154,9 @@ int pc_oracle_mesh_build(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *use
 
 void pc_oracle_mesh_free(pc_oracle_mesh *mesh)
 {
+    free(mesh->us);
+    free(mesh->vs);
+    mesh->us = mesh->vs = NULL;
     free(mesh->points);
     free(mesh->block_boxes);
     free(mesh->group_boxes);
@@ -225,7 +253,7 @@ static int polish(const pc_oracle_mesh *m, const double *o, const double *d, dou
     const double dn = sqrt(dot3(d, d));
     cross3(w, d, c);
     const double dist = sqrt(dot3(c, c)) / dn;
-    if (!(dist <= ORACLE_RESIDUAL_REL * m->scale))
+    if (!(dist <= ORACLE_RESIDUAL_REL * m->scale + pc_oracle_resolution(u, v, f)))
         return 0;
     double n[3];
     cross3(f + 3, f + 6, n);
@@ -234,20 +262,45 @@ static int polish(const pc_oracle_mesh *m, const double *o, const double *d, dou
     out->v = v;
     out->lambda = dot3(w, d) / (dn * dn);
     out->cos_dir = nn > 0.0 ? fabs(dot3(n, d)) / (nn * dn) : 0.0;
+    const double span_u = m->domain[1] - m->domain[0], span_v = m->domain[3] - m->domain[2];
+    out->edge = fmin(fmin(u - m->domain[0], m->domain[1] - u) / span_u,
+                     fmin(v - m->domain[2], m->domain[3] - v) / span_v);
     return 1;
 }
 
-static int same_root(const pc_oracle_mesh *m, const pc_oracle_hit *a, const pc_oracle_hit *b)
+double pc_oracle_resolution(double u, double v, const double f[9])
 {
-    return fabs(a->u - b->u) <= ORACLE_MERGE_REL * (m->domain[1] - m->domain[0]) &&
-           fabs(a->v - b->v) <= ORACLE_MERGE_REL * (m->domain[3] - m->domain[2]);
+    const double ulp_u = nextafter(fabs(u), INFINITY) - fabs(u);
+    const double ulp_v = nextafter(fabs(v), INFINITY) - fabs(v);
+    return sqrt(dot3(f + 3, f + 3)) * ulp_u + sqrt(dot3(f + 6, f + 6)) * ulp_v;
+}
+
+/* Fraction of the model's size plus its coordinates' magnitude within
+ * which two points of a line are one. */
+#define ORACLE_SAME_POINT_REL 1e-8
+
+double pc_oracle_same_point(const pc_oracle_mesh *m, const double origin[3], const double dir[3])
+{
+    double oc[3];
+    sub3(origin, m->centre, oc);
+    const double magnitude = sqrt(dot3(m->centre, m->centre)) + sqrt(dot3(oc, oc));
+    return ORACLE_SAME_POINT_REL * (m->scale + magnitude) / sqrt(dot3(dir, dir));
+}
+
+static int same_root(const pc_oracle_mesh *m, const pc_oracle_hit *a, const pc_oracle_hit *b,
+                     double same_lambda)
+{
+    return (fabs(a->u - b->u) <= ORACLE_MERGE_REL * (m->domain[1] - m->domain[0]) &&
+            fabs(a->v - b->v) <= ORACLE_MERGE_REL * (m->domain[3] - m->domain[2])) ||
+           fabs(a->lambda - b->lambda) <= same_lambda;
 }
 
 static void seed_cell(const pc_oracle_mesh *m, const double *o, const double *d, int ray_only,
-                      int i, int j, pc_oracle_hit *hits, size_t capacity, size_t *count)
+                      double same_lambda, int i, int j, pc_oracle_hit *hits, size_t capacity,
+                      size_t *count)
 {
-    const double du = (m->domain[1] - m->domain[0]) / m->cells_u;
-    const double dv = (m->domain[3] - m->domain[2]) / m->cells_v;
+    const double u0 = m->us[i], du = m->us[i + 1] - m->us[i];
+    const double v0 = m->vs[j], dv = m->vs[j + 1] - m->vs[j];
     const double *p00 = mesh_point(m, i, j), *p10 = mesh_point(m, i + 1, j);
     const double *p01 = mesh_point(m, i, j + 1), *p11 = mesh_point(m, i + 1, j + 1);
     /* Two triangles: (00, 10, 11) and (00, 11, 01), with their (u, v). */
@@ -261,13 +314,18 @@ static void seed_cell(const pc_oracle_mesh *m, const double *o, const double *d,
         const double lu = b0 * uv[k][0][0] + b1 * uv[k][1][0] + b2 * uv[k][2][0];
         const double lv = b0 * uv[k][0][1] + b1 * uv[k][1][1] + b2 * uv[k][2][1];
         pc_oracle_hit h;
-        if (!polish(m, o, d, m->domain[0] + (i + lu) * du, m->domain[2] + (j + lv) * dv, t, &h))
+        if (!polish(m, o, d, u0 + lu * du, v0 + lv * dv, t, &h))
             continue;
         if (ray_only && !(h.lambda > 0.0))
             continue;
         int dup = 0;
-        for (size_t q = 0; q < *count && q < capacity && !dup; ++q)
-            dup = same_root(m, &hits[q], &h);
+        for (size_t q = 0; q < *count && q < capacity && !dup; ++q) {
+            dup = same_root(m, &hits[q], &h, same_lambda);
+            if (dup) { /* a copy: its flags count too */
+                hits[q].cos_dir = fmin(hits[q].cos_dir, h.cos_dir);
+                hits[q].edge = fmin(hits[q].edge, h.edge);
+            }
+        }
         if (dup)
             continue;
         if (*count < capacity)
@@ -277,13 +335,14 @@ static void seed_cell(const pc_oracle_mesh *m, const double *o, const double *d,
 }
 
 static size_t block_hits(const pc_oracle_mesh *m, const double origin[3], const double dir[3],
-                         int ray_only, int bi0, int bi1, int bj0, int bj1, pc_oracle_hit *hits,
-                         size_t capacity, size_t count);
+                         int ray_only, double same_lambda, int bi0, int bi1, int bj0, int bj1,
+                         pc_oracle_hit *hits, size_t capacity, size_t count);
 
 size_t pc_oracle_line_hits(const pc_oracle_mesh *m, const double origin[3], const double dir[3],
                            int ray_only, pc_oracle_hit *hits, size_t capacity)
 {
     size_t count = 0;
+    const double same_lambda = pc_oracle_same_point(m, origin, dir);
     /* Groups of ORACLE_GROUP x ORACLE_GROUP blocks first, then blocks. */
     for (int gj = 0; gj < m->blocks_v; gj += ORACLE_GROUP) {
         for (int gi = 0; gi < m->blocks_u; gi += ORACLE_GROUP) {
@@ -292,15 +351,16 @@ size_t pc_oracle_line_hits(const pc_oracle_mesh *m, const double origin[3], cons
             const double *gbox = m->group_boxes + 6 * ((size_t)(gj / ORACLE_GROUP) * (size_t)m->groups_u +
                                                       (size_t)(gi / ORACLE_GROUP));
             if (line_meets_box(gbox, origin, dir, ray_only))
-                count = block_hits(m, origin, dir, ray_only, gi, gi1, gj, gj1, hits, capacity, count);
+                count = block_hits(m, origin, dir, ray_only, same_lambda, gi, gi1, gj, gj1, hits,
+                                   capacity, count);
         }
     }
     return count;
 }
 
 static size_t block_hits(const pc_oracle_mesh *m, const double origin[3], const double dir[3],
-                         int ray_only, int bi0, int bi1, int bj0, int bj1, pc_oracle_hit *hits,
-                         size_t capacity, size_t count)
+                         int ray_only, double same_lambda, int bi0, int bi1, int bj0, int bj1,
+                         pc_oracle_hit *hits, size_t capacity, size_t count)
 {
     for (int bj = bj0; bj < bj1; ++bj) {
         for (int bi = bi0; bi < bi1; ++bi) {
@@ -309,7 +369,7 @@ static size_t block_hits(const pc_oracle_mesh *m, const double origin[3], const 
                 continue;
             for (int j = bj * m->block; j < (bj + 1) * m->block && j < m->cells_v; ++j)
                 for (int i = bi * m->block; i < (bi + 1) * m->block && i < m->cells_u; ++i)
-                    seed_cell(m, origin, dir, ray_only, i, j, hits, capacity, &count);
+                    seed_cell(m, origin, dir, ray_only, same_lambda, i, j, hits, capacity, &count);
         }
     }
     return count;
@@ -340,14 +400,67 @@ int pc_oracle_check_hit(const pc_oracle_mesh *mesh, const double origin[3], cons
 #define ORACLE_GRAZING_COS 0.05
 #define ORACLE_MAX_HITS 256
 
-static int matches(const pc_oracle_mesh *m, double u, double v, unsigned flags,
-                   const pc_oracle_hit *e)
+/* A claimed hit is an oracle hit when their parameters agree, or their
+ * lambda (one point of space: another copy of it, e.g. the other side of a
+ * seam). */
+static int matches(const pc_oracle_mesh *m, double u, double v, double lambda, unsigned flags,
+                   const pc_oracle_hit *e, double same_lambda)
 {
     const double rel = (flags & PROJCURVE_HIT_TANGENT) || e->cos_dir < 1e-4
                            ? ORACLE_MATCH_TANGENT_REL
                            : ORACLE_MATCH_REL;
-    return fabs(u - e->u) <= rel * (m->domain[1] - m->domain[0]) &&
-           fabs(v - e->v) <= rel * (m->domain[3] - m->domain[2]);
+    return (fabs(u - e->u) <= rel * (m->domain[1] - m->domain[0]) &&
+            fabs(v - e->v) <= rel * (m->domain[3] - m->domain[2])) ||
+           fabs(lambda - e->lambda) <= same_lambda;
+}
+
+/* The cell of the samples xs[0..n] holding x (binary search). */
+static int cell_of(const double *xs, int n, double x)
+{
+    int lo = 0, hi = n;
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        if (xs[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* Flags the oracle can decide (see ray_oracle.h), checked against the
+ * claimed ones. */
+#define ORACLE_EDGE_ON 1e-12
+#define ORACLE_EDGE_OFF 1e-7
+#define ORACLE_TANGENT_ON 1e-9
+#define ORACLE_TANGENT_OFF 1e-3
+
+static void check_flags(const pc_oracle_hit *e, unsigned flags, const double *o, const double *d,
+                        pc_oracle_stats *stats)
+{
+    const int boundary = (flags & PROJCURVE_HIT_BOUNDARY) != 0;
+    const int tangent = (flags & PROJCURVE_HIT_TANGENT) != 0;
+    if (e->edge <= ORACLE_EDGE_ON || e->edge >= ORACLE_EDGE_OFF) {
+        ++stats->flags_checked;
+        ++pc_test_checks;
+        if (boundary != (e->edge <= ORACLE_EDGE_ON))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "hit (%.17g, %.17g, lambda %.17g) %s flagged boundary, oracle's "
+                            "distance to the edge %.3g; line o = (%.17g, %.17g, %.17g) d = "
+                            "(%.17g, %.17g, %.17g)",
+                            e->u, e->v, e->lambda, boundary ? "is" : "is not", e->edge, o[0],
+                            o[1], o[2], d[0], d[1], d[2]);
+    }
+    if (e->cos_dir <= ORACLE_TANGENT_ON || e->cos_dir >= ORACLE_TANGENT_OFF) {
+        ++stats->flags_checked;
+        ++pc_test_checks;
+        if (tangent != (e->cos_dir <= ORACLE_TANGENT_ON))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "hit (%.17g, %.17g, lambda %.17g) %s flagged tangent, oracle's cos "
+                            "%.3g; line o = (%.17g, %.17g, %.17g) d = (%.17g, %.17g, %.17g)",
+                            e->u, e->v, e->lambda, tangent ? "is" : "is not", e->cos_dir, o[0],
+                            o[1], o[2], d[0], d[1], d[2]);
+    }
 }
 
 void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const double dir[3],
@@ -365,12 +478,20 @@ void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const
         return;
     }
     const double *o = origin, *d = dir;
+    const double same_lambda = pc_oracle_same_point(mesh, origin, dir);
     for (size_t e = 0; e < n_exp; ++e) {
         int found = 0;
+        size_t which = 0;
         for (size_t k = 0; k < n; ++k)
-            found += matches(mesh, hits[3 * k], hits[3 * k + 1], flags[k], &expected[e]);
+            if (matches(mesh, hits[3 * k], hits[3 * k + 1], hits[3 * k + 2], flags[k],
+                        &expected[e], same_lambda)) {
+                ++found;
+                which = k;
+            }
         ++pc_test_checks;
-        if (found != 1)
+        if (found == 1)
+            check_flags(&expected[e], flags[which], o, d, stats);
+        else
             pc_test_fail_at(__FILE__, __LINE__,
                             "oracle hit (%.17g, %.17g, lambda %.17g, cos %.3g) found %d times; "
                             "line o = (%.17g, %.17g, %.17g) d = (%.17g, %.17g, %.17g)",
@@ -389,6 +510,18 @@ void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const
             continue;
         }
         const double dn = sqrt(dot3(d, d));
+        {
+            /* The claimed (u, v) and lambda themselves: how far S is from
+             * the line's point, against the accuracy promised. */
+            double f[9], w[3];
+            mesh->eval(mesh->user, u, v, f);
+            for (int c = 0; c < 3; ++c)
+                w[c] = f[c] - o[c] - lambda * d[c];
+            const double r = sqrt(dot3(w, w));
+            stats->max_residual = fmax(stats->max_residual, r);
+            stats->max_excess =
+                fmax(stats->max_excess, r / (1e-12 * mesh->scale + pc_oracle_resolution(u, v, f)));
+        }
         /* lambda to the accuracy of the point along the line: 1e-9 of the
          * model for a transversal hit, ~sqrt(eps) for a grazing one. */
         const double tol = ((flags[k] & PROJCURVE_HIT_TANGENT) ? 1e-6 : 1e-9) * mesh->scale / dn;
@@ -404,16 +537,19 @@ void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const
             pc_test_fail_at(__FILE__, __LINE__, "ray hit with lambda %.17g <= 0", lambda);
         int in_oracle = 0;
         for (size_t e = 0; e < n_exp; ++e)
-            in_oracle |= matches(mesh, u, v, flags[k] | PROJCURVE_HIT_TANGENT, &expected[e]);
+            in_oracle |= matches(mesh, u, v, lambda, flags[k] | PROJCURVE_HIT_TANGENT,
+                                 &expected[e], same_lambda);
         /* The mesh cannot see two crossings inside one of its cells: a hit
-         * with a distinct neighbour that close is a pair it may miss. */
+         * with a distinct neighbour within two cells is a pair it may miss. */
         int paired = 0;
-        const double cell_u = (mesh->domain[1] - mesh->domain[0]) / mesh->cells_u;
-        const double cell_v = (mesh->domain[3] - mesh->domain[2]) / mesh->cells_v;
+        const int ci = cell_of(mesh->us, mesh->cells_u, u), cj = cell_of(mesh->vs, mesh->cells_v, v);
         for (size_t q = 0; q < n; ++q) {
             const double du = fabs(hits[3 * q] - u), dv = fabs(hits[3 * q + 1] - v);
-            paired |= q != k && du <= 2.0 * cell_u && dv <= 2.0 * cell_v &&
-                      (du > 1e-6 * cell_u * mesh->cells_u || dv > 1e-6 * cell_v * mesh->cells_v);
+            const int qi = cell_of(mesh->us, mesh->cells_u, hits[3 * q]);
+            const int qj = cell_of(mesh->vs, mesh->cells_v, hits[3 * q + 1]);
+            paired |= q != k && abs(qi - ci) <= 2 && abs(qj - cj) <= 2 &&
+                      (du > 1e-6 * (mesh->domain[1] - mesh->domain[0]) ||
+                       dv > 1e-6 * (mesh->domain[3] - mesh->domain[2]));
         }
         if (!in_oracle) {
             ++stats->grazing_extra;

@@ -19,7 +19,10 @@ typedef void (*pc_oracle_eval_fn)(void *user, double u, double v, double out[9])
 
 typedef struct pc_oracle_hit {
     double u, v, lambda;
-    double cos_dir; /* |dir . n| / (|dir| |n|) at the hit */
+    double cos_dir;   /* |dir . n| / (|dir| |n|) at the hit; the smallest over
+                       * the copies merged into it */
+    double edge;      /* distance to the domain's edge, fraction of the
+                       * domain; the smallest over the copies */
 } pc_oracle_hit;
 
 typedef struct pc_oracle_mesh {
@@ -27,44 +30,73 @@ typedef struct pc_oracle_mesh {
     void *user;
     double domain[4];
     int cells_u, cells_v, block; /* cells per block side */
+    double *us, *vs;             /* the samples: cells_u + 1, cells_v + 1 */
     double *points;              /* (cells_u + 1) * (cells_v + 1) * 3 */
     double *block_boxes;         /* 6 per block */
     int blocks_u, blocks_v;
     double *group_boxes;         /* 6 per group of blocks */
     int groups_u, groups_v;
     double scale;                /* diagonal of the points' box */
+    double centre[3];            /* of the points' box */
 } pc_oracle_mesh;
 
-/* Samples the surface on a cells_u x cells_v grid. Returns 0 on allocation
- * failure. */
+/* Samples the surface on a uniform cells_u x cells_v grid. Returns 0 on
+ * allocation failure. */
 int pc_oracle_mesh_build(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *user,
                          const double domain[4], int cells_u, int cells_v);
+
+/* Samples the surface at the given parameters (increasing, from the
+ * domain's start to its end: cells_u + 1 values of u, cells_v + 1 of v),
+ * e.g. a few cells per knot span. Returns 0 on allocation failure. */
+int pc_oracle_mesh_build_samples(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, void *user,
+                                 const double *us, int cells_u, const double *vs, int cells_v);
 void pc_oracle_mesh_free(pc_oracle_mesh *mesh);
 
-/* Every hit of origin + lambda dir (lambda > 0 only if ray_only), polished
- * and with copies merged; up to capacity are stored, the number found is
- * returned. */
+/* Every hit of origin + lambda dir (lambda > 0 only if ray_only), polished,
+ * with copies of one point of space merged (the same (u, v), or lambda
+ * within pc_oracle_same_point of each other: the two sides of a seam, sheets
+ * of a surface folded onto itself); up to capacity are stored, the number
+ * found is returned. */
 size_t pc_oracle_line_hits(const pc_oracle_mesh *mesh, const double origin[3],
                            const double dir[3], int ray_only, pc_oracle_hit *hits,
                            size_t capacity);
 
+/* Two hits whose lambda differ by at most this are one point of space: 1e-8
+ * of the model's size plus its coordinates' magnitude (where the model is
+ * and how far the origin is from it), over |dir|. */
+double pc_oracle_same_point(const pc_oracle_mesh *mesh, const double origin[3],
+                            const double dir[3]);
+
+/* How far S moves when (u, v) are rounded to doubles: |Su| ulp(u) +
+ * |Sv| ulp(v). No double (u, v) need put S closer than half this to a
+ * point of S; it matters where knot spans are far narrower than their
+ * parameters' magnitude (knot clusters). */
+double pc_oracle_resolution(double u, double v, const double f[9]);
+
 /* Checks a claimed hit independently: Newton from it must stay within
  * param_tol and the polished point lie on the line to 1e-11 of the model
- * scale. Fills *polished (may be NULL). Returns 1 if it is a hit. */
+ * scale plus the parameters' resolution (pc_oracle_resolution). Fills *polished (may be NULL). Returns 1 if it is a hit. */
 int pc_oracle_check_hit(const pc_oracle_mesh *mesh, const double origin[3], const double dir[3],
                         double u, double v, double param_tol, pc_oracle_hit *polished);
 
 /* Counts kept by pc_oracle_compare. */
 typedef struct pc_oracle_stats {
     long lines, hits, oracle_hits, grazing_extra;
+    long flags_checked;   /* flags the oracle could decide, all checked */
+    double max_residual;  /* largest distance of a claimed hit's S to the line */
+    double max_excess;    /* largest (that distance) / (1e-12 scale + resolution) */
 } pc_oracle_stats;
 
 /* Compares the n hits of a line claimed by the library (hits[3k..3k+2] =
  * u, v, lambda, sorted by lambda; flags[k]) with the oracle's, failing the
  * test (pc_test_fail_at, with the line) when an oracle hit is not found
  * exactly once, a claimed hit is not on the line or its lambda is wrong,
- * the order is wrong, or a claimed hit unknown to the oracle is not grazing
- * (|cos| >= 0.05, where the mesh cannot miss it). */
+ * the order is wrong, a claimed hit unknown to the oracle is not grazing
+ * (|cos| >= 0.05, where the mesh cannot miss it), or a flag the oracle can
+ * decide is wrong: PROJCURVE_HIT_BOUNDARY where some copy lies on the
+ * domain's edge (to 1e-12) or none within 1e-7 of it; PROJCURVE_HIT_TANGENT
+ * where |cos| <= 1e-9 or not where |cos| >= 1e-3 over the copies (the
+ * library's threshold is 1e-6; between, the position's error decides). */
 void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const double dir[3],
                        int ray_only, size_t n, const double *hits, const unsigned *flags,
                        pc_oracle_stats *stats);
