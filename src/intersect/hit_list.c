@@ -130,6 +130,17 @@ static int same_hit(const pc_hit *a, const pc_hit *b, const dedup_tolerances *to
     return graze != NULL && graze->same(graze->user, a, b);
 }
 
+/* Whether copy a, a transversal Newton root, outranks copy b, the
+ * least-squares point of an unresolved box at the same place (a box on a
+ * degenerate, near zero-width span whose image is a curve, or one that
+ * stalled beside the root): Newton's root with |d . n| >= PC_HIT_TANGENT_COS
+ * shows the hit is simple, and b's tangent flag only says its box could
+ * not tell. */
+static int newton_outranks(const pc_hit *a, const pc_hit *b)
+{
+    return !(a->flags & PROJCURVE_HIT_TANGENT) && (b->flags & PC_HIT_STALLED);
+}
+
 /* Which of two copies of one hit is kept: h (1) or k (0). Transversal
  * copies on the line to the hit tolerance are equally exact, and the one
  * with the smaller u (then v, beyond the merging tolerance) is kept, so that
@@ -139,6 +150,8 @@ static int same_hit(const pc_hit *a, const pc_hit *b, const dedup_tolerances *to
  * put S on the line to the tolerance) the one nearest the line. */
 static int keep_new(const pc_hit *h, const pc_hit *k, const dedup_tolerances *tol)
 {
+    if (newton_outranks(h, k) || newton_outranks(k, h))
+        return newton_outranks(h, k);
     const int tangent = ((h->flags | k->flags) & PROJCURVE_HIT_TANGENT) != 0;
     if (tangent || !(h->residual <= tol->residual && k->residual <= tol->residual))
         return h->residual < k->residual;
@@ -162,25 +175,38 @@ void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_no
     tol.dlambda_tangent = PC_DEDUP_TANGENT_REL * scale / dir_norm;
     tol.residual = tol_residual;
     size_t kept = 0;
+    /* The kept hit the previous one went into, and that one's lambda: hits
+     * are chained, so that a run of copies each within dlambda of the next
+     * (the sheets of a folded knot cluster, spread over a little more than
+     * dlambda) is one hit whatever copy represents it. */
+    size_t prev_into = SIZE_MAX;
+    double prev_lambda = 0.0;
     for (size_t i = 0; i < list->count; ++i) {
         const pc_hit h = list->items[i];
-        int merged = 0;
+        size_t into = SIZE_MAX;
+        if (prev_into != SIZE_MAX && h.lambda - prev_lambda <= tol.dlambda)
+            into = prev_into;
         /* Sorted by lambda: only the last few kept hits can match. */
-        for (size_t j = kept; j-- > 0;) {
-            pc_hit *k = &list->items[j];
-            if (h.lambda - k->lambda > tol.dlambda_tangent)
+        for (size_t j = kept; into == SIZE_MAX && j-- > 0;) {
+            if (h.lambda - list->items[j].lambda > tol.dlambda_tangent)
                 break;
-            if (same_hit(k, &h, &tol, graze)) {
-                const unsigned flags = k->flags | h.flags;
-                if (keep_new(&h, k, &tol))
-                    *k = h;
-                k->flags = flags;
-                merged = 1;
-                break;
-            }
+            if (same_hit(&list->items[j], &h, &tol, graze))
+                into = j;
         }
-        if (!merged)
+        if (into == SIZE_MAX) {
+            into = kept;
             list->items[kept++] = h;
+        } else {
+            pc_hit *k = &list->items[into];
+            unsigned flags = k->flags | h.flags;
+            if (newton_outranks(&h, k) || newton_outranks(k, &h))
+                flags = newton_outranks(&h, k) ? h.flags : k->flags;
+            if (keep_new(&h, k, &tol))
+                *k = h;
+            k->flags = flags;
+        }
+        prev_into = into;
+        prev_lambda = h.lambda;
     }
     list->count = kept;
     for (size_t i = 0; i < kept; ++i) {

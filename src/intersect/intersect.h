@@ -16,11 +16,16 @@
  * where a whole patch edge collapses, so the parameter along that edge is
  * arbitrary (the middle of the patch's edge is reported). */
 #define PC_HIT_POLE 0x100u
+/* Internal flag: the hit is the least-squares point of a clipping box that
+ * could not be resolved (a grazing sliver, the depth bound, a failed
+ * Newton), flagged PROJCURVE_HIT_TANGENT for that reason alone. */
+#define PC_HIT_STALLED 0x200u
 
 typedef struct pc_hit {
     double u, v, lambda;
     double residual; /* distance of S(u, v) to the line */
-    unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY | PC_HIT_POLE */
+    unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY | PC_HIT_POLE |
+                      * PC_HIT_STALLED */
 } pc_hit;
 
 /* A growable list of hits owned by the caller (pc_hit_list_free). Start it

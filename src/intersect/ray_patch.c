@@ -106,7 +106,22 @@ static projcurve_status record_root_flagged(const patch_search *ps, const pc_fra
 
 static projcurve_status record_root(const patch_search *ps, const pc_frame_root *r, int forced_tangent)
 {
-    return record_root_flagged(ps, r, forced_tangent, 0u);
+    return record_root_flagged(ps, r, forced_tangent, forced_tangent ? PC_HIT_STALLED : 0u);
+}
+
+/* The least-squares point of a box that could not be resolved is a tangent
+ * hit, unless the line is clearly transversal there: a minimum of the
+ * distance that is not a root has J^T (X, Y) = 0 with (X, Y) != 0, so J is
+ * singular along (X, Y) and |d . n| ~ 0; and near a double root |d . n| is
+ * ~sqrt(tolerance) (1e-6 .. 1e-5). With |d . n| above this bound, far from
+ * both, a point on the line to the hit tolerance is a simple root that the
+ * box could not certify (Newton's steps in a patch of a span 1e-8 wide stall
+ * on rounding noise), and it is reported as one. */
+#define PC_LSQ_TRANSVERSAL_COS 1e-3
+
+static projcurve_status record_least_squares(const patch_search *ps, const pc_frame_root *r)
+{
+    return record_root(ps, r, !(r->cos_dir >= PC_LSQ_TRANSVERSAL_COS));
 }
 
 /* A box that clipping shrank below PC_CLIP_WIDTH_TOL: Newton from its
@@ -121,7 +136,7 @@ static projcurve_status finish_converged(const patch_search *ps, const double bo
         return record_root(ps, &r, 0);
     if (!pc_frame_net_minimize(&ps->net, box, &r))
         return PROJCURVE_OK;
-    return record_root(ps, &r, 1);
+    return record_least_squares(ps, &r);
 }
 
 /* Newton from the centre of a box, accepted when its root lies in the box
@@ -165,7 +180,7 @@ static projcurve_status finish_stalled(const patch_search *ps, const double box[
     pc_frame_root r;
     if (!pc_frame_net_minimize(&ps->net, box, &r))
         return PROJCURVE_OK;
-    return record_root(ps, &r, 1);
+    return record_least_squares(ps, &r);
 }
 
 /* The side to halve: the wider one among those not converged. */

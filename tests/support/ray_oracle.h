@@ -82,6 +82,10 @@ int pc_oracle_check_hit(const pc_oracle_mesh *mesh, const double origin[3], cons
 /* Counts kept by pc_oracle_compare. */
 typedef struct pc_oracle_stats {
     long lines, hits, oracle_hits, grazing_extra;
+    long missed, duplicated; /* oracle hits found 0 times, more than once */
+    long in_run;             /* oracle hits that a claimed hit within 100 times
+                              * pc_oracle_same_point stands for (a run of
+                              * sheets cut differently) */
     long flags_checked;   /* flags the oracle could decide, all checked */
     double max_residual;  /* largest distance of a claimed hit's S to the line */
     double max_excess;    /* largest (that distance) / (1e-12 scale + resolution) */
