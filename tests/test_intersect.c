@@ -9,9 +9,10 @@
  *     tangent lines (one hit, flagged);
  *   - exact tori: lines with four known hits, and random lines whose hits
  *     satisfy the implicit equation and match the brute-force oracle;
- *   - bumpy (also rational) and folded multi-patch surfaces, and real
- *     surfaces from ../shared/data/real, against the brute-force oracle
- *     (tests/support/ray_oracle.c: dense triangulation + Newton).
+ *   - closed surfaces: the seams of a torus, each crossing reported once;
+ *   - bumpy (also rational) and folded multi-patch surfaces against the
+ *     brute-force oracle (tests/support/ray_oracle.c: dense triangulation +
+ *     Newton). The real surfaces are in test_intersect_real.c.
  */
 #include "check.h"
 #include "intersect/intersect.h"
@@ -794,36 +795,6 @@ static void test_patch_subset(void)
     projcurve_surface_destroy(s);
 }
 
-/* ---- real surfaces ---------------------------------------------------------------- */
-
-/* Random lines on the given surfaces of a real model (index list ends with
- * -1); skipped when the model cannot be read (../shared absent). */
-static void test_real(const char *file, const int *indices, int lines_per_surface)
-{
-    char rel[256];
-    snprintf(rel, sizeof rel, "data/real/%s", file);
-    projcurve_model *model = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path(rel), &model) != PROJCURVE_OK) {
-        printf("%s: not readable, skipped\n", file);
-        return;
-    }
-    for (const int *k = indices; *k >= 0; ++k) {
-        const projcurve_surface *s = projcurve_model_surface(model, (size_t)*k);
-        CHECK(s != NULL);
-        if (s == NULL)
-            continue;
-        char name[300];
-        int deg_u, deg_v, rational;
-        size_t spans_u, spans_v;
-        CHECK_OK(projcurve_surface_info(NULL, s, &deg_u, &deg_v, NULL, NULL, &spans_u, &spans_v,
-                                        &rational));
-        snprintf(name, sizeof name, "%s surface %d (degrees %d, %d; %zu x %zu spans%s)", file, *k,
-                 deg_u, deg_v, spans_u, spans_v, rational ? ", rational" : "");
-        compare_random_lines(s, name, lines_per_surface, 128, 71 + (unsigned long long)*k);
-    }
-    projcurve_model_destroy(model);
-}
-
 int main(void)
 {
     test_bad_input();
@@ -837,15 +808,5 @@ int main(void)
     test_bumpy();
     test_folded();
     test_patch_subset();
-    /* Bicubic scans and freeform patches; rational high degrees; mixed
-     * single-span degrees up to (8, 3); rational quadrics of a CAD part. */
-    static const int lens[] = {0, 1, -1}, joinsurf[] = {0, 1, -1};
-    static const int linkrods[] = {0, 1, 2, 5, -1}, bearing[] = {1, 51, 65, -1};
-    static const int hammer[] = {30, 39, 42, -1};
-    test_real("sunglasses_lens.igs", lens, 1500);
-    test_real("test-joinsurf_01.stp", joinsurf, 1500);
-    test_real("linkrods.step", linkrods, 600);
-    test_real("bearing.iges", bearing, 600);
-    test_real("hammer.iges", hammer, 600);
     return pc_test_finish("test_intersect");
 }

@@ -131,14 +131,15 @@ static int same_hit(const pc_hit *a, const pc_hit *b, const dedup_tolerances *to
 }
 
 /* Whether copy a, a transversal Newton root, outranks copy b, the
- * least-squares point of an unresolved box at the same place (a box on a
- * degenerate, near zero-width span whose image is a curve, or one that
- * stalled beside the root): Newton's root with |d . n| >= PC_HIT_TANGENT_COS
- * shows the hit is simple, and b's tangent flag only says its box could
- * not tell. */
+ * least-squares point of an unresolved box or a pole record at the same
+ * place (boxes and poles of a degenerate patch: a span of near zero width
+ * makes a patch a curve or a point, whose normal means nothing): Newton's
+ * root with |d . n| >= PC_HIT_TANGENT_COS shows the hit is simple, and b's
+ * tangent flag only says that b could not tell. */
 static int newton_outranks(const pc_hit *a, const pc_hit *b)
 {
-    return !(a->flags & PROJCURVE_HIT_TANGENT) && (b->flags & PC_HIT_STALLED);
+    return !(a->flags & (PROJCURVE_HIT_TANGENT | PC_HIT_STALLED | PC_HIT_POLE)) &&
+           (b->flags & (PC_HIT_STALLED | PC_HIT_POLE));
 }
 
 /* Which of two copies of one hit is kept: h (1) or k (0). Transversal

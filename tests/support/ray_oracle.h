@@ -19,8 +19,10 @@ typedef void (*pc_oracle_eval_fn)(void *user, double u, double v, double out[9])
 
 typedef struct pc_oracle_hit {
     double u, v, lambda;
+    double lambda_lo, lambda_hi; /* the run of copies merged into it */
     double cos_dir;   /* |dir . n| / (|dir| |n|) at the hit; the smallest over
-                       * the copies merged into it */
+                       * the copies merged into it; NaN where no copy has a
+                       * normal */
     double edge;      /* distance to the domain's edge, fraction of the
                        * domain; the smallest over the copies */
 } pc_oracle_hit;
@@ -37,7 +39,10 @@ typedef struct pc_oracle_mesh {
     double *group_boxes;         /* 6 per group of blocks */
     int groups_u, groups_v;
     double scale;                /* diagonal of the points' box */
-    double centre[3];            /* of the points' box */
+    double model_size;           /* the size pc_oracle_same_point uses: scale
+                                  * unless the caller sets another */
+    double centre[3];            /* of the points' box, or as the caller sets
+                                  * it (pc_oracle_same_point's magnitude) */
 } pc_oracle_mesh;
 
 /* Samples the surface on a uniform cells_u x cells_v grid. Returns 0 on
@@ -53,17 +58,18 @@ int pc_oracle_mesh_build_samples(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, v
 void pc_oracle_mesh_free(pc_oracle_mesh *mesh);
 
 /* Every hit of origin + lambda dir (lambda > 0 only if ray_only), polished,
- * with copies of one point of space merged (the same (u, v), or lambda
- * within pc_oracle_same_point of each other: the two sides of a seam, sheets
- * of a surface folded onto itself); up to capacity are stored, the number
- * found is returned. */
+ * with copies of one point of space merged (the same (u, v); then runs of
+ * hits each within pc_oracle_same_point of the next along the line: the two
+ * sides of a seam, sheets of a surface folded onto itself), sorted by
+ * lambda; up to capacity are stored, the number found is returned. */
 size_t pc_oracle_line_hits(const pc_oracle_mesh *mesh, const double origin[3],
                            const double dir[3], int ray_only, pc_oracle_hit *hits,
                            size_t capacity);
 
 /* Two hits whose lambda differ by at most this are one point of space: 1e-8
- * of the model's size plus its coordinates' magnitude (where the model is
- * and how far the origin is from it), over |dir|. */
+ * of the model's size (mesh->model_size: the library's is the diagonal of
+ * the control net's box) plus its coordinates' magnitude (where the model
+ * is and how far the origin is from it), over |dir|. */
 double pc_oracle_same_point(const pc_oracle_mesh *mesh, const double origin[3],
                             const double dir[3]);
 
@@ -86,6 +92,15 @@ typedef struct pc_oracle_stats {
     long in_run;             /* oracle hits that a claimed hit within 100 times
                               * pc_oracle_same_point stands for (a run of
                               * sheets cut differently) */
+    long extra_sheets;       /* claimed hits on the line among two or more
+                              * oracle hits within 100 same-point distances
+                              * (sheets of a fold the mesh did not all see) */
+    long cluster_sheets;     /* hits seen by one side only where one ulp of the
+                              * parameters moves S by more than 1e-12 of the
+                              * model (knot clusters folding many sheets) */
+    long run_split;          /* runs of the oracle that the library reports
+                              * as several hits, each farther than
+                              * pc_oracle_same_point from the next */
     long flags_checked;   /* flags the oracle could decide, all checked */
     double max_residual;  /* largest distance of a claimed hit's S to the line */
     double max_excess;    /* largest (that distance) / (1e-12 scale + resolution) */
