@@ -37,9 +37,9 @@ static projcurve_surface *make_surface(pc_shape_surface shape)
 }
 
 /* The oracle's evaluator: the public evaluation, independent of clipping. */
-static void eval_surface(void *user, double u, double v, double out[9])
+static void eval_surface(void *user, double u, double v, int n_deriv, double out[9])
 {
-    if (projcurve_surface_eval(NULL, user, u, v, 1, out) != PROJCURVE_OK)
+    if (projcurve_surface_eval(NULL, user, u, v, n_deriv, out) != PROJCURVE_OK)
         for (int k = 0; k < 9; ++k)
             out[k] = NAN;
 }

@@ -6,7 +6,8 @@
  * knot span, Newton polish with the public evaluator): every oracle hit
  * found exactly once, every claimed hit on the line, boundary and tangent
  * flags where the oracle can decide them. At least PC_REAL_RAYS lines in
- * all (100,000; fewer only in the sanitizer build, where CMake sets it).
+ * all: 100,000; the sanitizer build, ~20 times slower, sets 20,000
+ * (tests/CMakeLists.txt).
  *
  * And the knot cluster of linkrods.step surface 16: spans 2e-8 wide at
  * v ~ -3.6, where the surface retraces one sheet back and forth; a line
@@ -33,14 +34,12 @@
 
 /* Oracle mesh: at least this many cells per knot span, more for high
  * degrees, for spans whose control polygon turns a lot (so that a cell
- * turns by at most PC_CELL_TURN) and for long ones (a cell at most
- * PC_CELL_LENGTH of the model long: long thin cells across a fold, e.g. a
- * blade's leading edge, hide pairs of crossings from a nearly parallel
- * line), and at least PC_CELLS_MIN along a side of few spans. A side has
- * at most PC_CELLS_MAX cells. */
+ * turns by at most PC_CELL_TURN), and at least PC_CELLS_MIN along a side
+ * of few spans. A side has at most PC_CELLS_MAX cells. (Lines nearly
+ * parallel to the surface, which pass between chords and surface, are
+ * seeded by the cells they pass close to: ray_oracle.c.) */
 #define PC_CELLS_PER_SPAN 6
 #define PC_CELL_TURN (PI / 24.0)
-#define PC_CELL_LENGTH (1.0 / 192.0)
 #define PC_CELLS_MIN 128
 #define PC_CELLS_MAX 8192
 
@@ -50,6 +49,15 @@
  * derivatives are then those of the surface, not of the span's
  * parametrisation, whose normal means nothing. */
 #define PC_SPAN_ZERO 1e-12
+
+/* Whether a side has a span of (near) zero width. */
+static int has_zero_span(const double *breaks, size_t spans)
+{
+    for (size_t k = 0; k < spans; ++k)
+        if (breaks[k + 1] - breaks[k] <= PC_SPAN_ZERO * (breaks[spans] - breaks[0]))
+            return 1;
+    return 0;
+}
 
 static double off_zero_span(const double *breaks, size_t spans, double x)
 {
@@ -62,22 +70,28 @@ static double off_zero_span(const double *breaks, size_t spans, double x)
     return x;
 }
 
-static void eval_surface(void *user, double u, double v, double out[9])
+typedef struct oracle_surface {
+    const projcurve_surface *s;
+    int zero_u, zero_v; /* has_zero_span of either side */
+} oracle_surface;
+
+static void eval_surface(void *user, double u, double v, int n_deriv, double out[9])
 {
-    const projcurve_surface *s = user;
-    u = off_zero_span(s->grid.breaks_u, s->grid.spans_u, u);
-    v = off_zero_span(s->grid.breaks_v, s->grid.spans_v, v);
-    if (projcurve_surface_eval(NULL, s, u, v, 1, out) != PROJCURVE_OK)
+    const oracle_surface *os = user;
+    const projcurve_surface *s = os->s;
+    if (os->zero_u)
+        u = off_zero_span(s->grid.breaks_u, s->grid.spans_u, u);
+    if (os->zero_v)
+        v = off_zero_span(s->grid.breaks_v, s->grid.spans_v, v);
+    if (projcurve_surface_eval(NULL, s, u, v, n_deriv, out) != PROJCURVE_OK)
         for (int k = 0; k < 9; ++k)
             out[k] = NAN;
 }
 
 /* The largest turning (sum of angles between consecutive legs) of the
- * control polygons of the patches in span `span` along u (along_u) or v,
- * and (*length) the largest length of those polygons. */
-static double span_turning(const projcurve_surface *s, size_t span, int along_u, double *length)
+ * control polygons of the patches in span `span` along u (along_u) or v. */
+static double span_turning(const projcurve_surface *s, size_t span, int along_u)
 {
-    *length = 0.0;
     const pc_patch_grid *g = &s->grid;
     const size_t across = along_u ? g->spans_v : g->spans_u;
     double worst = 0.0;
@@ -87,7 +101,7 @@ static double span_turning(const projcurve_surface *s, size_t span, int along_u,
         const int m = p->deg_u, n = p->deg_v;
         const int len = along_u ? m : n, rows = along_u ? n : m;
         for (int r = 0; r <= rows; ++r) {
-            double turn = 0.0, len_sum = 0.0, prev[3] = {0, 0, 0};
+            double turn = 0.0, prev[3] = {0, 0, 0};
             int have_prev = 0;
             for (int i = 0; i < len; ++i) {
                 const size_t a = along_u ? (size_t)r * (size_t)(m + 1) + (size_t)i
@@ -98,7 +112,6 @@ static double span_turning(const projcurve_surface *s, size_t span, int along_u,
                 for (int c = 0; c < 3; ++c)
                     leg[c] = pb[c] / pb[3] - pa[c] / pa[3];
                 const double ll = sqrt(leg[0] * leg[0] + leg[1] * leg[1] + leg[2] * leg[2]);
-                len_sum += ll;
                 if (!(ll > 0.0))
                     continue;
                 if (have_prev) {
@@ -110,7 +123,6 @@ static double span_turning(const projcurve_surface *s, size_t span, int along_u,
                 have_prev = 1;
             }
             worst = fmax(worst, turn);
-            *length = fmax(*length, len_sum);
         }
     }
     return worst;
@@ -138,13 +150,9 @@ static int side_samples(const projcurve_surface *s, int along_u, double **out)
         }
         if (c < 2 * degree)
             c = 2 * degree;
-        double length;
-        const int by_turn = (int)ceil(span_turning(s, k, along_u, &length) / PC_CELL_TURN);
-        const int by_length = (int)ceil(length / (PC_CELL_LENGTH * s->size));
+        const int by_turn = (int)ceil(span_turning(s, k, along_u) / PC_CELL_TURN);
         if (c < by_turn)
             c = by_turn;
-        if (c < by_length)
-            c = by_length;
         const int few = (int)((PC_CELLS_MIN + spans - 1) / spans);
         if (c < few)
             c = few;
@@ -228,8 +236,10 @@ static void compare_surface(const projcurve_surface *s, const char *name, int n_
         printf("-- %s\n", name);
     double *us = NULL, *vs = NULL;
     const int cu = side_samples(s, 1, &us), cv = side_samples(s, 0, &vs);
+    oracle_surface os = {s, has_zero_span(s->grid.breaks_u, s->grid.spans_u),
+                         has_zero_span(s->grid.breaks_v, s->grid.spans_v)};
     pc_oracle_mesh mesh;
-    CHECK(pc_oracle_mesh_build_samples(&mesh, eval_surface, (void *)s, us, cu, vs, cv));
+    CHECK(pc_oracle_mesh_build_samples(&mesh, eval_surface, &os, us, cu, vs, cv));
     free(us);
     free(vs);
     /* The library's merging tolerance is relative to the control net's
@@ -317,8 +327,9 @@ static int list_models(const char *dir, char **names, int capacity)
         const size_t len = strlen(name);
         if (name[0] == '.' || (len > 3 && strcmp(name + len - 3, ".md") == 0))
             continue;
-        char path[4096];
-        snprintf(path, sizeof path, "%s/%s", dir, name);
+        char path[4608];
+        if (snprintf(path, sizeof path, "%s/%s", dir, name) >= (int)sizeof path)
+            continue; /* no model has such a name */
         struct stat info;
         if (stat(path, &info) != 0 || S_ISDIR(info.st_mode))
             continue;
@@ -345,9 +356,13 @@ static void test_all_real(void)
     projcurve_model *models[PC_MAX_FILES];
     size_t n_surfaces = 0;
     for (int f = 0; f < n_files; ++f) {
-        char path[4096];
-        snprintf(path, sizeof path, "%s/%s", dir, names[f]);
+        char path[4608];
         models[f] = NULL;
+        ++pc_test_checks;
+        if (snprintf(path, sizeof path, "%s/%s", dir, names[f]) >= (int)sizeof path) {
+            pc_test_fail_at(__FILE__, __LINE__, "path of %s too long", names[f]);
+            continue;
+        }
         const projcurve_status st = projcurve_model_read_file(NULL, path, &models[f]);
         ++pc_test_checks;
         if (st != PROJCURVE_OK) {

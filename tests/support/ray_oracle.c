@@ -15,6 +15,8 @@
  * edge's cells whenever the surface curves away there (the polish clamps
  * seeds into the domain). */
 #define ORACLE_EDGE_MARGIN 0.5
+/* See seed_cell. */
+#define ORACLE_NEAR_CELL 0.5
 #define ORACLE_NEWTON_ITER 40
 /* |S_u x S_v| below this fraction of |S_u| |S_v|: no normal. */
 #define ORACLE_NORMAL_REL 1e-10
@@ -107,7 +109,7 @@ int pc_oracle_mesh_build_samples(pc_oracle_mesh *mesh, pc_oracle_eval_fn eval, v
     for (int j = 0; j <= cells_v; ++j) {
         for (int i = 0; i <= cells_u; ++i) {
             double out[9];
-            eval(user, us[i], vs[j], out);
+            eval(user, us[i], vs[j], 0, out);
             double *p = mesh->points + 3 * ((size_t)j * (size_t)(cells_u + 1) + (size_t)i);
             memcpy(p, out, 3 * sizeof *p);
             for (int k = 0; k < 3; ++k) {
@@ -230,7 +232,7 @@ static int polish(const pc_oracle_mesh *m, const double *o, const double *d, dou
     u = clampd(u, m->domain[0], m->domain[1]);
     v = clampd(v, m->domain[2], m->domain[3]);
     for (int it = 0; it < ORACLE_NEWTON_ITER; ++it) {
-        m->eval(m->user, u, v, f);
+        m->eval(m->user, u, v, 1, f);
         double r[3];
         for (int k = 0; k < 3; ++k)
             r[k] = f[k] - o[k] - lambda * d[k];
@@ -255,7 +257,7 @@ static int polish(const pc_oracle_mesh *m, const double *o, const double *d, dou
         if (fabs(du) + fabs(dv) < 1e-15 * (m->domain[1] - m->domain[0] + m->domain[3] - m->domain[2]))
             break;
     }
-    m->eval(m->user, u, v, f);
+    m->eval(m->user, u, v, 1, f);
     double w[3], c[3];
     sub3(f, o, w);
     const double dn = sqrt(dot3(d, d));
@@ -306,6 +308,28 @@ static int same_root(const pc_oracle_mesh *m, const pc_oracle_hit *a, const pc_o
            fabs(a->v - b->v) <= ORACLE_MERGE_REL * (m->domain[3] - m->domain[2]);
 }
 
+/* Polishes a seed and records the root unless it is a copy of one found. */
+static int add_seed(const pc_oracle_mesh *m, const double *o, const double *d, int ray_only,
+                    double u, double v, double lambda, pc_oracle_hit *hits, size_t capacity,
+                    size_t *count)
+{
+    pc_oracle_hit h;
+    if (!polish(m, o, d, u, v, lambda, &h))
+        return 0;
+    if (ray_only && !(h.lambda > 0.0))
+        return 0;
+    for (size_t q = 0; q < *count && q < capacity; ++q)
+        if (same_root(m, &hits[q], &h)) { /* a copy: its flags count too */
+            hits[q].cos_dir = fmin(hits[q].cos_dir, h.cos_dir);
+            hits[q].edge = fmin(hits[q].edge, h.edge);
+            return 1;
+        }
+    if (*count < capacity)
+        hits[*count] = h;
+    ++*count;
+    return 1;
+}
+
 static void seed_cell(const pc_oracle_mesh *m, const double *o, const double *d, int ray_only,
                       int i, int j, pc_oracle_hit *hits, size_t capacity, size_t *count)
 {
@@ -318,6 +342,7 @@ static void seed_cell(const pc_oracle_mesh *m, const double *o, const double *d,
     const double uv[2][3][2] = {{{0, 0}, {1, 0}, {1, 1}}, {{0, 0}, {1, 1}, {0, 1}}};
     const int edge = i == 0 || j == 0 || i == m->cells_u - 1 || j == m->cells_v - 1;
     const double margin = edge ? ORACLE_EDGE_MARGIN : ORACLE_BARY_MARGIN;
+    int seeded = 0;
     for (int k = 0; k < 2; ++k) {
         double t, b1, b2;
         if (!ray_triangle(o, d, tri[k][0], tri[k][1], tri[k][2], margin, &t, &b1, &b2))
@@ -325,25 +350,25 @@ static void seed_cell(const pc_oracle_mesh *m, const double *o, const double *d,
         const double b0 = 1.0 - b1 - b2;
         const double lu = b0 * uv[k][0][0] + b1 * uv[k][1][0] + b2 * uv[k][2][0];
         const double lv = b0 * uv[k][0][1] + b1 * uv[k][1][1] + b2 * uv[k][2][1];
-        pc_oracle_hit h;
-        if (!polish(m, o, d, u0 + lu * du, v0 + lv * dv, t, &h))
-            continue;
-        if (ray_only && !(h.lambda > 0.0))
-            continue;
-        int dup = 0;
-        for (size_t q = 0; q < *count && q < capacity && !dup; ++q) {
-            dup = same_root(m, &hits[q], &h);
-            if (dup) { /* a copy: its flags count too */
-                hits[q].cos_dir = fmin(hits[q].cos_dir, h.cos_dir);
-                hits[q].edge = fmin(hits[q].edge, h.edge);
-            }
-        }
-        if (dup)
-            continue;
-        if (*count < capacity)
-            hits[*count] = h;
-        ++*count;
+        seeded |= add_seed(m, o, d, ray_only, u0 + lu * du, v0 + lv * dv, t, hits, capacity, count);
     }
+    if (seeded)
+        return;
+    /* A line nearly parallel to the surface can pass between the chords and
+     * the surface, missing every triangle: a cell whose centre is within
+     * ORACLE_NEAR_CELL of its diagonal from the line seeds Newton too. */
+    double c[3], diag[3], w[3], x[3];
+    for (int k = 0; k < 3; ++k)
+        c[k] = 0.25 * (p00[k] + p10[k] + p01[k] + p11[k]);
+    sub3(p11, p00, diag);
+    sub3(p01, p10, w);
+    const double size2 = fmax(dot3(diag, diag), dot3(w, w));
+    sub3(c, o, w);
+    const double lambda = dot3(w, d) / dot3(d, d);
+    for (int k = 0; k < 3; ++k)
+        x[k] = w[k] - lambda * d[k];
+    if (dot3(x, x) <= ORACLE_NEAR_CELL * ORACLE_NEAR_CELL * size2)
+        add_seed(m, o, d, ray_only, u0 + 0.5 * du, v0 + 0.5 * dv, lambda, hits, capacity, count);
 }
 
 static size_t block_hits(const pc_oracle_mesh *m, const double origin[3], const double dir[3],
@@ -420,7 +445,7 @@ int pc_oracle_check_hit(const pc_oracle_mesh *mesh, const double origin[3], cons
                         double u, double v, double param_tol, pc_oracle_hit *polished)
 {
     double f[9];
-    mesh->eval(mesh->user, u, v, f);
+    mesh->eval(mesh->user, u, v, 1, f);
     double w[3];
     sub3(f, origin, w);
     const double lambda = dot3(w, dir) / dot3(dir, dir);
@@ -481,7 +506,7 @@ static int cell_of(const double *xs, int n, double x)
 static int stretched_at(const pc_oracle_mesh *m, double u, double v)
 {
     double f[9];
-    m->eval(m->user, u, v, f);
+    m->eval(m->user, u, v, 1, f);
     return pc_oracle_resolution(u, v, f) > 1e-12 * m->scale;
 }
 
@@ -602,7 +627,7 @@ void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const
             /* The claimed (u, v) and lambda themselves: how far S is from
              * the line's point, against the accuracy promised. */
             double f[9], w[3];
-            mesh->eval(mesh->user, u, v, f);
+            mesh->eval(mesh->user, u, v, 1, f);
             for (int c = 0; c < 3; ++c)
                 w[c] = f[c] - o[c] - lambda * d[c];
             const double r = sqrt(dot3(w, w));
@@ -613,7 +638,7 @@ void pc_oracle_compare(const pc_oracle_mesh *mesh, const double origin[3], const
         /* lambda to the accuracy of the point along the line: 1e-9 of the
          * model for a transversal hit, ~sqrt(eps) for a grazing one. */
         double fp[9];
-        mesh->eval(mesh->user, p.u, p.v, fp);
+        mesh->eval(mesh->user, p.u, p.v, 1, fp);
         /* (plus twice the parameters' resolution: the claimed and the
          * polished points are each that far off where it matters) */
         const double tol = (((flags[k] & PROJCURVE_HIT_TANGENT) ? 1e-6 : 1e-9) * mesh->scale +

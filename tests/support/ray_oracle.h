@@ -14,8 +14,9 @@
 
 #include <stddef.h>
 
-/* S, Su, Sv at (u, v) into out[0..8]. */
-typedef void (*pc_oracle_eval_fn)(void *user, double u, double v, double out[9]);
+/* S (n_deriv 0: out[0..2]), or S, Su, Sv (n_deriv 1: out[0..8]) at (u, v).
+ * The mesh needs points only, the polish derivatives too. */
+typedef void (*pc_oracle_eval_fn)(void *user, double u, double v, int n_deriv, double out[9]);
 
 typedef struct pc_oracle_hit {
     double u, v, lambda;
