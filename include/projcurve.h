@@ -397,12 +397,17 @@ PROJCURVE_API projcurve_status projcurve_surface_foot_points(projcurve_context *
  * are written: hits[3k..3k+2] = (u, v, lambda) and flags[k] (flags may be
  * NULL; hits may be NULL when capacity is 0); *count gets the number found
  * (may exceed capacity). dir need not be unit length: lambda is in units of
- * dir. Hits on shared patch edges or corners, and at poles (edges that
- * collapse to a point), are reported once; the two sides of a closed
- * surface's seam each report their own (u, v). A hit lies on the line to
- * ~1e-12 of the model's size (a line that misses by less touches it); a
- * grazing (tangent) hit is a double root, known only to ~1e-7 of the model
- * along the line. A line that misses gives *count = 0 and OK.
+ * dir. Each point of the line where it meets S is reported once: hits on
+ * shared patch edges or corners, at poles (edges that collapse to a point),
+ * on a closed surface's seam (u = u0 and u = u1, or v) and on sheets folded
+ * onto each other are one hit when their lambda agree to 1e-8 of the model's
+ * scale. On a seam the (u, v) reported is the domain's start (u0, or v0),
+ * flagged PROJCURVE_HIT_BOUNDARY. A hit lies on the line to ~1e-12 of the
+ * model's size (a line that misses by less touches it), plus |Su| ulp(u) +
+ * |Sv| ulp(v) where knot spans are far narrower than their parameters (no
+ * double (u, v) does better there); a grazing (tangent) hit is a double root,
+ * known only to ~1e-7 of the model along the line. A line that misses gives
+ * *count = 0 and OK.
  * Thread-safe for distinct contexts.
  * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_surface_intersect_line(projcurve_context *ctx,

@@ -10,11 +10,13 @@
 #include "common/error.h"
 #include "intersect/ray_patch.h"
 
-/* Two hits are one when their parameters differ by at most this fraction
- * of the domain and their points by at most this fraction of the model:
- * Newton gives both to ~1e-15, so copies of a hit found from two patches
- * (shared edges and corners) or from two clipping boxes agree far closer,
- * while distinct transversal hits are much farther apart. */
+/* Two hits are one when their lambda differ by at most this fraction of
+ * the model's scale: the same point of the line, hence of space. Newton
+ * gives lambda to ~1e-15 of it, so copies of a hit agree far closer, while
+ * two distinct crossings this close along a line are sheets of the surface
+ * within 1e-8 of each other, one crossing to the eye. Parameters closer
+ * than this fraction of the domain count as equal when choosing the copy
+ * kept. */
 #define PC_DEDUP_REL 1e-8
 /* The same for grazing hits: a double root is only determined to about
  * sqrt(rounding) ~ 1e-8 along the tangent, and two roots this close along a
@@ -103,27 +105,64 @@ static int compare_hits(const void *a, const void *b)
 typedef struct dedup_tolerances {
     double du, dv, dlambda;                 /* transversal hits */
     double du_tangent, dv_tangent, dlambda_tangent; /* when either is grazing */
+    double residual;                        /* the hit tolerance */
 } dedup_tolerances;
 
+/* Two hits are one point of the line, hence one point in space, when their
+ * lambda agree: whatever their (u, v). That merges the copies from shared
+ * patch edges and corners and from neighbouring boxes, the two sides of a
+ * closed surface's seam, the patches around a pole, and the sheets of a
+ * surface folded onto itself (a knot cluster whose spans retrace one
+ * sheet), which a user sees as one crossing. Grazing hits are known only to
+ * ~sqrt(tolerance) along the line: they merge within the wider tolerance
+ * when their parameters are close too or the surface between them hugs the
+ * line. */
 static int same_hit(const pc_hit *a, const pc_hit *b, const dedup_tolerances *tol,
                     const pc_graze_test *graze)
 {
-    /* Poles: one point whatever the parameter along the collapsed edge. */
-    if ((a->flags & b->flags & PC_HIT_POLE) && fabs(a->lambda - b->lambda) <= tol->dlambda)
+    if (fabs(a->lambda - b->lambda) <= tol->dlambda)
         return 1;
     const int tangent = ((a->flags | b->flags) & PROJCURVE_HIT_TANGENT) != 0;
-    const double du = tangent ? tol->du_tangent : tol->du;
-    const double dv = tangent ? tol->dv_tangent : tol->dv;
-    const double dl = tangent ? tol->dlambda_tangent : tol->dlambda;
-    if (!(fabs(a->lambda - b->lambda) <= dl))
+    if (!tangent || !(fabs(a->lambda - b->lambda) <= tol->dlambda_tangent))
         return 0;
-    if (fabs(a->u - b->u) <= du && fabs(a->v - b->v) <= dv)
+    if (fabs(a->u - b->u) <= tol->du_tangent && fabs(a->v - b->v) <= tol->dv_tangent)
         return 1;
-    return tangent && graze != NULL && graze->same(graze->user, a, b);
+    return graze != NULL && graze->same(graze->user, a, b);
+}
+
+/* Whether copy a, a transversal Newton root, outranks copy b, the
+ * least-squares point of an unresolved box or a pole record at the same
+ * place (boxes and poles of a degenerate patch: a span of near zero width
+ * makes a patch a curve or a point, whose normal means nothing): Newton's
+ * root with |d . n| >= PC_HIT_TANGENT_COS shows the hit is simple, and b's
+ * tangent flag only says that b could not tell. */
+static int newton_outranks(const pc_hit *a, const pc_hit *b)
+{
+    return !(a->flags & (PROJCURVE_HIT_TANGENT | PC_HIT_STALLED | PC_HIT_POLE)) &&
+           (b->flags & (PC_HIT_STALLED | PC_HIT_POLE));
+}
+
+/* Which of two copies of one hit is kept: h (1) or k (0). Transversal
+ * copies on the line to the hit tolerance are equally exact, and the one
+ * with the smaller u (then v, beyond the merging tolerance) is kept, so that
+ * a seam crossing is reported at the domain's start (u0, or v0) whichever
+ * patch was visited first. Otherwise (grazing copies, which lie up to
+ * ~sqrt(tolerance) apart along the line, or copies whose parameters cannot
+ * put S on the line to the tolerance) the one nearest the line. */
+static int keep_new(const pc_hit *h, const pc_hit *k, const dedup_tolerances *tol)
+{
+    if (newton_outranks(h, k) || newton_outranks(k, h))
+        return newton_outranks(h, k);
+    const int tangent = ((h->flags | k->flags) & PROJCURVE_HIT_TANGENT) != 0;
+    if (tangent || !(h->residual <= tol->residual && k->residual <= tol->residual))
+        return h->residual < k->residual;
+    if (fabs(h->u - k->u) > tol->du)
+        return h->u < k->u;
+    return h->v < k->v - tol->dv;
 }
 
 void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_norm,
-                        double scale, const pc_graze_test *graze)
+                        double scale, double tol_residual, const pc_graze_test *graze)
 {
     const double span_u = domain[1] - domain[0], span_v = domain[3] - domain[2];
     if (list->count > 1)
@@ -135,28 +174,40 @@ void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_no
     tol.du_tangent = PC_DEDUP_TANGENT_REL * span_u;
     tol.dv_tangent = PC_DEDUP_TANGENT_REL * span_v;
     tol.dlambda_tangent = PC_DEDUP_TANGENT_REL * scale / dir_norm;
+    tol.residual = tol_residual;
     size_t kept = 0;
+    /* The kept hit the previous one went into, and that one's lambda: hits
+     * are chained, so that a run of copies each within dlambda of the next
+     * (the sheets of a folded knot cluster, spread over a little more than
+     * dlambda) is one hit whatever copy represents it. */
+    size_t prev_into = SIZE_MAX;
+    double prev_lambda = 0.0;
     for (size_t i = 0; i < list->count; ++i) {
         const pc_hit h = list->items[i];
-        int merged = 0;
+        size_t into = SIZE_MAX;
+        if (prev_into != SIZE_MAX && h.lambda - prev_lambda <= tol.dlambda)
+            into = prev_into;
         /* Sorted by lambda: only the last few kept hits can match. */
-        for (size_t j = kept; j-- > 0;) {
-            pc_hit *k = &list->items[j];
-            if (h.lambda - k->lambda > tol.dlambda_tangent)
+        for (size_t j = kept; into == SIZE_MAX && j-- > 0;) {
+            if (h.lambda - list->items[j].lambda > tol.dlambda_tangent)
                 break;
-            if (same_hit(k, &h, &tol, graze)) {
-                /* Keep the copy nearest the line: for a grazing hit the
-                 * copies differ by up to ~sqrt(tolerance) along it. */
-                const unsigned flags = k->flags | h.flags;
-                if (h.residual < k->residual)
-                    *k = h;
-                k->flags = flags;
-                merged = 1;
-                break;
-            }
+            if (same_hit(&list->items[j], &h, &tol, graze))
+                into = j;
         }
-        if (!merged)
+        if (into == SIZE_MAX) {
+            into = kept;
             list->items[kept++] = h;
+        } else {
+            pc_hit *k = &list->items[into];
+            unsigned flags = k->flags | h.flags;
+            if (newton_outranks(&h, k) || newton_outranks(k, &h))
+                flags = newton_outranks(&h, k) ? h.flags : k->flags;
+            if (keep_new(&h, k, &tol))
+                *k = h;
+            k->flags = flags;
+        }
+        prev_into = into;
+        prev_lambda = h.lambda;
     }
     list->count = kept;
     for (size_t i = 0; i < kept; ++i) {

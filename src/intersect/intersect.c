@@ -48,25 +48,60 @@ static projcurve_status prepare(projcurve_context *ctx, const projcurve_surface 
     return PROJCURVE_OK;
 }
 
-/* Two grazing hits are one touching point when the surface halfway
- * between them (in parameters) is as close to the line as a hit: a double
- * root is only known to ~sqrt(tolerance) along the line, so copies found
- * from neighbouring boxes or patches can lie well apart, but the surface
- * between them hugs the line. Two separate touching points do not. */
+/* Two grazing hits are one touching point when the surface comes as close
+ * to the line between them as a hit: a double root is only known to
+ * ~sqrt(tolerance) along the line, so copies found from neighbouring boxes
+ * or patches, or from the two sides of a closed surface's seam, can lie well
+ * apart, but the surface between them hugs the line. Two separate touching
+ * points do not. "Between" is tried in parameters (the midpoint of the two
+ * (u, v)) and in space (the foot on S, near either hit, of the line's point
+ * halfway between them: across a seam the parameters' midpoint is on the
+ * other side of the surface). */
+#define PC_GRAZE_FOOT_ITER 8
+
 typedef struct graze_context {
     const projcurve_surface *surface;
     const pc_ray_frame *frame;
 } graze_context;
 
+static double distance_to_line(const graze_context *g, pc_vec3 p)
+{
+    const pc_vec3 w = vec3_sub(p, g->frame->origin);
+    return vec3_norm(vec3_axpy(w, -vec3_dot(w, g->frame->d), g->frame->d));
+}
+
+/* Distance from m to S near (u, v): Gauss-Newton on |S - m|^2, in the
+ * domain. The start is a grazing hit ~sqrt(tolerance) from the foot. */
+static double distance_near(const pc_nurbs_surface *s, pc_vec3 m, double u, double v)
+{
+    pc_vec3 f[3];
+    for (int it = 0; it < PC_GRAZE_FOOT_ITER; ++it) {
+        pc_nurbs_surface_eval(s, u, v, 1, NULL, NULL, f);
+        const pc_vec3 r = vec3_sub(m, f[0]);
+        const double a = vec3_dot(f[1], f[1]), b = vec3_dot(f[1], f[2]), c = vec3_dot(f[2], f[2]);
+        const double rhs[2] = {vec3_dot(f[1], r), vec3_dot(f[2], r)};
+        double step[2];
+        if (!mat2_solve(a, b, b, c, rhs, step))
+            break;
+        u = fmin(fmax(u + step[0], s->domain[0]), s->domain[1]);
+        v = fmin(fmax(v + step[1], s->domain[2]), s->domain[3]);
+    }
+    pc_nurbs_surface_eval(s, u, v, 0, NULL, NULL, f);
+    return vec3_dist(m, f[0]);
+}
+
 static int same_graze(const void *user, const pc_hit *a, const pc_hit *b)
 {
     const graze_context *g = user;
+    const pc_nurbs_surface *s = &g->surface->nurbs;
+    const double near = 2.0 * g->frame->tol_residual;
     pc_vec3 p;
-    pc_nurbs_surface_eval(&g->surface->nurbs, 0.5 * (a->u + b->u), 0.5 * (a->v + b->v), 0, NULL,
-                          NULL, &p);
-    const pc_vec3 w = vec3_sub(p, g->frame->origin);
-    const double off = vec3_norm(vec3_axpy(w, -vec3_dot(w, g->frame->d), g->frame->d));
-    return off <= 2.0 * g->frame->tol_residual;
+    pc_nurbs_surface_eval(s, 0.5 * (a->u + b->u), 0.5 * (a->v + b->v), 0, NULL, NULL, &p);
+    if (distance_to_line(g, p) <= near)
+        return 1;
+    const double lambda = 0.5 * (a->lambda + b->lambda) / g->frame->inv_dir_norm;
+    const pc_vec3 m = vec3_axpy(g->frame->origin, lambda, g->frame->d);
+    return distance_near(s, m, a->u, a->v) <= near || distance_near(s, m, b->u, b->v) <= near;
 }
 
 static void finish(const projcurve_surface *s, const pc_ray_frame *frame, pc_vec3 dir,
@@ -75,7 +110,7 @@ static void finish(const projcurve_surface *s, const pc_ray_frame *frame, pc_vec
     const graze_context g = {s, frame};
     const pc_graze_test graze = {same_graze, &g};
     pc_hit_list_finish(hits, s->nurbs.domain, pc_vec3_length_robust(dir),
-                       s->size + query_magnitude(s, frame->origin), &graze);
+                       s->size + query_magnitude(s, frame->origin), frame->tol_residual, &graze);
 }
 
 static int visit_patch(void *user, size_t patch_index)

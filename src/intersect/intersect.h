@@ -16,11 +16,16 @@
  * where a whole patch edge collapses, so the parameter along that edge is
  * arbitrary (the middle of the patch's edge is reported). */
 #define PC_HIT_POLE 0x100u
+/* Internal flag: the hit is the least-squares point of a clipping box that
+ * could not be resolved (a grazing sliver, the depth bound, a failed
+ * Newton), flagged PROJCURVE_HIT_TANGENT for that reason alone. */
+#define PC_HIT_STALLED 0x200u
 
 typedef struct pc_hit {
     double u, v, lambda;
     double residual; /* distance of S(u, v) to the line */
-    unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY | PC_HIT_POLE */
+    unsigned flags;  /* PROJCURVE_HIT_TANGENT | PROJCURVE_HIT_BOUNDARY | PC_HIT_POLE |
+                      * PC_HIT_STALLED */
 } pc_hit;
 
 /* A growable list of hits owned by the caller (pc_hit_list_free). Start it
@@ -49,10 +54,17 @@ void pc_hit_list_free(pc_hit_list *list);
 /* Clears `hits` and fills it with every intersection sorted by lambda; with
  * ray_only, only lambda > 0. dir need not be unit length but must be finite
  * and non-zero (the caller validates). Each hit satisfies the line equation
- * to ~1e-12 of the model size. Hits that coincide (shared patch edges and
- * corners, poles shared by several patches) are reported once; grazing
- * hits are flagged PROJCURVE_HIT_TANGENT (known to ~1e-7 of the model
- * along the line), hits on the domain's edge PROJCURVE_HIT_BOUNDARY.
+ * to ~1e-12 of the model size, plus the parameters' resolution |Su| ulp(u) +
+ * |Sv| ulp(v) where spans are far narrower than their parameters (knot
+ * clusters). One hit per point of the line: copies whose lambda agree to
+ * 1e-8 of the model's scale (chained) are one, whatever their (u, v) --
+ * shared patch edges and corners, poles, the two sides of a closed
+ * surface's seam, sheets of a knot cluster folded onto each other. The copy
+ * kept is, among exact transversal ones, the one with the smaller u, then
+ * v (a seam crossing is reported at u0, or v0), otherwise the nearest the
+ * line (docs/intersection.md). Grazing hits are flagged
+ * PROJCURVE_HIT_TANGENT (known to ~1e-7 of the model along the line), hits
+ * on the domain's edge PROJCURVE_HIT_BOUNDARY.
  * Statuses: OK, NO_MEMORY (OVERFLOW for degrees out of range, which a valid
  * surface never has). The list's scratch is reused: calling again with the
  * same list allocates nothing new. Thread-safe for distinct lists. */

@@ -34,6 +34,16 @@
 /* The normal at a pole is taken this far inside the patch. */
 #define PC_POLE_NORMAL_OFFSET 1e-6
 
+/* A hit's (u, v) are rounded to doubles. In an ordinary span that moves the
+ * local (s, t) by ~1e-16 / (span width), nothing; in a span much narrower
+ * than its parameters' magnitude (knot clusters: spans of 1e-8 at v ~ 4)
+ * one ulp of v is a sizeable step of t, and S at the reported parameters
+ * may lie off the line by |S_t| times that step, beyond the hit tolerance:
+ * no double (u, v) does better. Where the rounding moves (s, t) by more
+ * than this, the residual recorded is re-evaluated at the reported
+ * parameters (the local root itself stays the accepted one). */
+#define PC_LOCAL_ROUNDING 1e-13
+
 /* After a failed Newton try on a box, the next waits until the box has
  * shrunk by this factor: a try costs about as much as a clipping round. */
 #define PC_NEWTON_RETRY_FACTOR 0.01
@@ -83,6 +93,12 @@ static projcurve_status record_root_flagged(const patch_search *ps, const pc_fra
     hit.u = s >= 1.0 ? p->u1 : p->u0 + s * (p->u1 - p->u0);
     hit.v = t >= 1.0 ? p->v1 : p->v0 + t * (p->v1 - p->v0);
     hit.residual = r->residual;
+    const double s_rep = (hit.u - p->u0) / (p->u1 - p->u0), t_rep = (hit.v - p->v0) / (p->v1 - p->v0);
+    if (fabs(s_rep - s) > PC_LOCAL_ROUNDING || fabs(t_rep - t) > PC_LOCAL_ROUNDING) {
+        pc_frame_root at;
+        pc_frame_net_point(&ps->net, s_rep, t_rep, &at);
+        hit.residual = fmax(hit.residual, at.residual);
+    }
     hit.flags = (forced_tangent || r->cos_dir < PC_HIT_TANGENT_COS) ? PROJCURVE_HIT_TANGENT : 0u;
     hit.flags |= extra_flags;
     return pc_hit_list_push(ps->ctx, ps->hits, hit);
@@ -90,7 +106,22 @@ static projcurve_status record_root_flagged(const patch_search *ps, const pc_fra
 
 static projcurve_status record_root(const patch_search *ps, const pc_frame_root *r, int forced_tangent)
 {
-    return record_root_flagged(ps, r, forced_tangent, 0u);
+    return record_root_flagged(ps, r, forced_tangent, forced_tangent ? PC_HIT_STALLED : 0u);
+}
+
+/* The least-squares point of a box that could not be resolved is a tangent
+ * hit, unless the line is clearly transversal there: a minimum of the
+ * distance that is not a root has J^T (X, Y) = 0 with (X, Y) != 0, so J is
+ * singular along (X, Y) and |d . n| ~ 0; and near a double root |d . n| is
+ * ~sqrt(tolerance) (1e-6 .. 1e-5). With |d . n| above this bound, far from
+ * both, a point on the line to the hit tolerance is a simple root that the
+ * box could not certify (Newton's steps in a patch of a span 1e-8 wide stall
+ * on rounding noise), and it is reported as one. */
+#define PC_LSQ_TRANSVERSAL_COS 1e-3
+
+static projcurve_status record_least_squares(const patch_search *ps, const pc_frame_root *r)
+{
+    return record_root(ps, r, !(r->cos_dir >= PC_LSQ_TRANSVERSAL_COS));
 }
 
 /* A box that clipping shrank below PC_CLIP_WIDTH_TOL: Newton from its
@@ -105,7 +136,7 @@ static projcurve_status finish_converged(const patch_search *ps, const double bo
         return record_root(ps, &r, 0);
     if (!pc_frame_net_minimize(&ps->net, box, &r))
         return PROJCURVE_OK;
-    return record_root(ps, &r, 1);
+    return record_least_squares(ps, &r);
 }
 
 /* Newton from the centre of a box, accepted when its root lies in the box
@@ -149,7 +180,7 @@ static projcurve_status finish_stalled(const patch_search *ps, const double box[
     pc_frame_root r;
     if (!pc_frame_net_minimize(&ps->net, box, &r))
         return PROJCURVE_OK;
-    return record_root(ps, &r, 1);
+    return record_least_squares(ps, &r);
 }
 
 /* The side to halve: the wider one among those not converged. */

@@ -39,12 +39,15 @@ typedef struct pc_graze_test {
     const void *user;
 } pc_graze_test;
 
-/* Sorts the hits by lambda, merges the ones that are the same point of the
- * surface found twice (shared edges and corners, neighbouring clipping
- * boxes, poles; grazing copies also when graze says so) and flags hits on
- * the boundary of the domain {u0, u1, v0, v1}. dir_norm = |dir|; scale is
- * the model's size plus its coordinates' magnitude. graze may be NULL. */
+/* Sorts the hits by lambda, merges the ones that are one point of the line
+ * (shared edges and corners, neighbouring clipping boxes, poles, the two
+ * sides of a seam, sheets folded onto each other; grazing copies also when
+ * close in parameters or when graze says so), keeping one copy (hit_list.c:
+ * the smallest (u, v) among exact ones, else the nearest the line), and
+ * flags hits on the boundary of the domain {u0, u1, v0, v1}. dir_norm =
+ * |dir|; scale is the model's size plus its coordinates' magnitude;
+ * tol_residual the hit tolerance (pc_ray_frame). graze may be NULL. */
 void pc_hit_list_finish(pc_hit_list *list, const double domain[4], double dir_norm,
-                        double scale, const pc_graze_test *graze);
+                        double scale, double tol_residual, const pc_graze_test *graze);
 
 #endif /* PC_INTERSECT_RAY_PATCH_H */
