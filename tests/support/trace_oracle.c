@@ -23,9 +23,9 @@
 #define ORACLE_MAX_CELLS 384
 
 /* The independent oracle's evaluator: S, Su, Sv by the public evaluation. */
-static void eval_surface(void *user, double u, double v, double out[9])
+static void eval_surface(void *user, double u, double v, int n_deriv, double out[9])
 {
-    projcurve_surface_eval(NULL, (const projcurve_surface *)user, u, v, 1, out);
+    projcurve_surface_eval(NULL, (const projcurve_surface *)user, u, v, n_deriv, out);
 }
 
 static int mesh_cells(size_t spans)
