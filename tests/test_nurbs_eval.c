@@ -6,6 +6,7 @@
  */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "api/handles.h"
 #include "check.h"
@@ -714,6 +715,147 @@ static void test_periodic(void)
     pc_shape_surface_free(&sh);
 }
 
+/* Creation copies the user's arrays: a handle evaluates bit for bit the
+ * same after the arrays were overwritten with NaN and freed (under ASan a
+ * kept pointer would also be a use after free). Clamped and unclamped
+ * input (the latter goes through the clamping copy), curves and surfaces,
+ * rational. The stores go through a volatile pointer: stores into memory
+ * that is freed next are otherwise dead and the compiler drops them. */
+static void scribble_and_free(double *a, size_t n)
+{
+    volatile double *v = a;
+    for (size_t i = 0; i < n; ++i)
+        v[i] = NAN;
+    free(a);
+}
+
+static void test_arrays_copied(void)
+{
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 31);
+    for (int unclamped = 0; unclamped <= 1; ++unclamped) {
+        const int p = 3;
+        const size_t n = 8;
+        pc_shape_curve shape = pc_shape_random_curve(900, p, n);
+        shape.weights = malloc(n * sizeof(double));
+        for (size_t i = 0; i < n; ++i)
+            shape.weights[i] = pc_test_rng_uniform(&rng, 0.5, 2.0);
+        if (unclamped)
+            for (size_t k = 0; k < n + (size_t)p + 1; ++k)
+                shape.knots[k] = 0.1 * (double)k;
+        projcurve_curve *c = pc_shape_curve_create(&shape);
+        CHECK(c != NULL);
+        const double t0 = shape.knots[p], t1 = shape.knots[n];
+        double before[21][12], after[21][12];
+        for (int k = 0; k <= 20; ++k)
+            CHECK_OK(projcurve_curve_eval(NULL, c, t0 + (t1 - t0) * k / 20.0, 3, before[k]));
+        scribble_and_free(shape.ctrl, 3 * n);
+        scribble_and_free(shape.weights, n);
+        scribble_and_free(shape.knots, n + (size_t)p + 1);
+        for (int k = 0; k <= 20; ++k)
+            CHECK_OK(projcurve_curve_eval(NULL, c, t0 + (t1 - t0) * k / 20.0, 3, after[k]));
+        CHECK(memcmp(before, after, sizeof before) == 0);
+        double d0 = 0, d1 = 0;
+        CHECK_OK(projcurve_curve_domain(NULL, c, &d0, &d1));
+        CHECK(d0 == t0 && d1 == t1);
+        projcurve_curve_destroy(c);
+
+        pc_shape_surface sh = random_surface(&rng, 3, 2, 6, 5, 1);
+        if (unclamped) {
+            for (size_t k = 0; k < 10; ++k)
+                sh.knots_u[k] = (double)k;
+            for (size_t k = 0; k < 8; ++k)
+                sh.knots_v[k] = 0.5 * (double)k;
+        }
+        projcurve_surface *s = pc_shape_surface_create(&sh);
+        CHECK(s != NULL);
+        double dom[4];
+        CHECK_OK(projcurve_surface_domain(NULL, s, dom));
+        double sb[11][11][18], sa[11][11][18], q_before[3], q_after[3], uv_before[2], uv_after[2];
+        for (int i = 0; i <= 10; ++i)
+            for (int j = 0; j <= 10; ++j)
+                CHECK_OK(projcurve_surface_eval(NULL, s, dom[0] + (dom[1] - dom[0]) * i / 10.0,
+                                                dom[2] + (dom[3] - dom[2]) * j / 10.0, 2, sb[i][j]));
+        const double probe[3] = {0.1, -0.2, 1.5};
+        double dist_before, dist_after;
+        CHECK_OK(projcurve_surface_closest_point(NULL, s, probe, uv_before, q_before, &dist_before));
+        scribble_and_free(sh.ctrl, 3 * 30);
+        scribble_and_free(sh.weights, 30);
+        scribble_and_free(sh.knots_u, 10);
+        scribble_and_free(sh.knots_v, 8);
+        for (int i = 0; i <= 10; ++i)
+            for (int j = 0; j <= 10; ++j)
+                CHECK_OK(projcurve_surface_eval(NULL, s, dom[0] + (dom[1] - dom[0]) * i / 10.0,
+                                                dom[2] + (dom[3] - dom[2]) * j / 10.0, 2, sa[i][j]));
+        CHECK(memcmp(sb, sa, sizeof sb) == 0);
+        CHECK_OK(projcurve_surface_closest_point(NULL, s, probe, uv_after, q_after, &dist_after));
+        CHECK(dist_before == dist_after && uv_before[0] == uv_after[0] && uv_before[1] == uv_after[1]);
+        projcurve_surface_destroy(s);
+    }
+}
+
+/* A callback curve: projcurve_curve_eval returns the callback's own values
+ * at the same t, bit for bit, for orders 0..2 (the library has nothing to
+ * compute), at the ends and inside, and writes nothing past the order. */
+typedef struct recorded_curve {
+    double last_t;
+    int calls;
+} recorded_curve;
+
+static int wobbly_curve(void *user, double t, double out[9])
+{
+    recorded_curve *r = user;
+    r->last_t = t;
+    ++r->calls;
+    const double e = exp(0.3 * t);
+    out[0] = e * cos(3.0 * t);
+    out[1] = t * t * t - t;
+    out[2] = sin(t) / (1.0 + t * t);
+    out[3] = e * (0.3 * cos(3.0 * t) - 3.0 * sin(3.0 * t));
+    out[4] = 3.0 * t * t - 1.0;
+    out[5] = cos(t) / (1.0 + t * t) - 2.0 * t * sin(t) / ((1.0 + t * t) * (1.0 + t * t));
+    out[6] = e * (-8.91 * cos(3.0 * t) - 1.8 * sin(3.0 * t));
+    out[7] = 6.0 * t;
+    out[8] = 0.25 * t - 7.0; /* any value: the library passes it through */
+    return 0;
+}
+
+static void test_callback_curve(void)
+{
+    recorded_curve rec = {0.0, 0};
+    projcurve_curve *c = NULL;
+    const double t0 = -1.25, t1 = 2.5;
+    CHECK_OK(projcurve_curve_create_callback(NULL, wobbly_curve, &rec, t0, t1, &c));
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 41);
+    for (int k = 0; k < 40; ++k) {
+        const double t = k == 0 ? t0 : k == 1 ? t1 : pc_test_rng_uniform(&rng, t0, t1);
+        double own[9];
+        recorded_curve scratch = {0.0, 0};
+        wobbly_curve(&scratch, t, own);
+        for (int order = 0; order <= 2; ++order) {
+            double out[12];
+            for (int m = 0; m < 12; ++m)
+                out[m] = -999.0;
+            const int calls = rec.calls;
+            CHECK_OK(projcurve_curve_eval(NULL, c, t, order, out));
+            CHECK(rec.calls == calls + 1 && rec.last_t == t);
+            if (memcmp(out, own, (size_t)(3 * (order + 1)) * sizeof(double)) != 0)
+                pc_test_fail_at(__FILE__, __LINE__,
+                                "callback at t = %.17g, order %d: got (%.17g, %.17g, %.17g), "
+                                "callback (%.17g, %.17g, %.17g)",
+                                t, order, out[3 * order], out[3 * order + 1], out[3 * order + 2],
+                                own[3 * order], own[3 * order + 1], own[3 * order + 2]);
+            ++pc_test_checks;
+            CHECK(out[3 * (order + 1)] == -999.0);
+        }
+    }
+    double d0, d1;
+    CHECK_OK(projcurve_curve_domain(NULL, c, &d0, &d1));
+    CHECK(d0 == t0 && d1 == t1);
+    projcurve_curve_destroy(c);
+}
+
 static void test_span_hint(void)
 {
     const double knots[] = {0, 0, 0, 1, 2, 2, 3, 4, 4, 4};
@@ -738,5 +880,7 @@ int main(void)
     test_curve_routes();
     test_unclamped();
     test_periodic();
+    test_arrays_copied();
+    test_callback_curve();
     return pc_test_finish("test_nurbs_eval");
 }
