@@ -13,6 +13,7 @@
 
 #include "api/handles.h"
 #include "check.h"
+#include "closest_oracle.h"
 #include "shapes.h"
 
 /* Closest points are polished by Newton to ~1e-15 relative; distances
@@ -29,80 +30,19 @@ static double dist3(const double *a, const double *b)
                 (a[2] - b[2]) * (a[2] - b[2]));
 }
 
+/* The brute-force oracle of tests/support/closest_oracle.h on an 80 x 80
+ * grid: fine enough for the bumps of these shapes (a few per unit). */
+static double brute_surface(const projcurve_surface *s, const double *p, double uv[2])
+{
+    return pc_oracle_surface_closest(s, p, 80, uv);
+}
+
 static double surface_d2(const projcurve_surface *s, double u, double v, const double *p)
 {
     double q[3];
     projcurve_surface_eval(NULL, s, u, v, 0, q);
     return (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) +
            (q[2] - p[2]) * (q[2] - p[2]);
-}
-
-/* Pattern search (shrinking 3x3 stencils, clamped to the domain) from uv,
- * with initial steps hu, hv; returns the squared distance reached. */
-static double pattern_polish(const projcurve_surface *s, const double *p, const double dom[4],
-                             double hu, double hv, double uv[2])
-{
-    double best = surface_d2(s, uv[0], uv[1], p);
-    for (int it = 0; it < 400 && (hu > 1e-15 || hv > 1e-15); ++it) {
-        int moved = 0;
-        for (int a = -1; a <= 1; ++a)
-            for (int b = -1; b <= 1; ++b) {
-                const double u = fmin(fmax(uv[0] + a * hu, dom[0]), dom[1]);
-                const double v = fmin(fmax(uv[1] + b * hv, dom[2]), dom[3]);
-                const double d2 = surface_d2(s, u, v, p);
-                if (d2 < best) {
-                    best = d2;
-                    uv[0] = u;
-                    uv[1] = v;
-                    moved = 1;
-                }
-            }
-        if (!moved) {
-            hu *= 0.5;
-            hv *= 0.5;
-        }
-    }
-    return best;
-}
-
-/* Oracle: a dense grid, then the pattern search above from every local
- * minimum of the grid (not only the best sample: two basins of nearly equal
- * depth are told apart only after polishing). Independent of the library's
- * Newton and subdivision. */
-#define BRUTE_GRID 80
-static double brute_surface(const projcurve_surface *s, const double *p, double uv[2])
-{
-    double dom[4];
-    projcurve_surface_domain(NULL, s, dom);
-    const int n = BRUTE_GRID;
-    static double d2[BRUTE_GRID + 1][BRUTE_GRID + 1];
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j)
-            d2[i][j] = surface_d2(s, dom[0] + (dom[1] - dom[0]) * i / n,
-                                  dom[2] + (dom[3] - dom[2]) * j / n, p);
-    const double hu = (dom[1] - dom[0]) / n, hv = (dom[3] - dom[2]) / n;
-    double best = INFINITY;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j) {
-            int is_min = 1;
-            for (int a = -1; a <= 1 && is_min; ++a)
-                for (int b = -1; b <= 1; ++b)
-                    if (i + a >= 0 && i + a <= n && j + b >= 0 && j + b <= n &&
-                        d2[i + a][j + b] < d2[i][j]) {
-                        is_min = 0;
-                        break;
-                    }
-            if (!is_min)
-                continue;
-            double at[2] = {dom[0] + hu * i, dom[2] + hv * j};
-            const double e = pattern_polish(s, p, dom, hu, hv, at);
-            if (e < best) {
-                best = e;
-                uv[0] = at[0];
-                uv[1] = at[1];
-            }
-        }
-    return sqrt(best);
 }
 
 static void check_against_brute(const projcurve_surface *s, const double *p, const char *what)
