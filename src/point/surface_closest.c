@@ -137,9 +137,12 @@ static pc_subdiv_action decide_closest(void *user, const pc_subpatch *sp)
     const int flat = pc_subpatch_flatness(sp, n->deg_u, n->deg_v) <= CLOSEST_FLATNESS;
     /* Start the minimiser on flat sub-patches, and on the very first patch
      * (nearest to p) at once to get a bound that discards most others;
-     * not where the best point found so far already lies. */
-    const int holds_best = cs->best.u >= sp->u0 && cs->best.u <= sp->u1 &&
-                           cs->best.v >= sp->v0 && cs->best.v <= sp->v1;
+     * not where the best point found so far already lies inside (its basin
+     * is this sub-patch's). A best point on the sub-patch's edge does not
+     * count: it may be a minimum on a crease or in the neighbour, with the
+     * sub-patch's own minimum elsewhere. */
+    const int holds_best = cs->best.u > sp->u0 && cs->best.u < sp->u1 &&
+                           cs->best.v > sp->v0 && cs->best.v < sp->v1;
     if ((cs->best_d2 == INFINITY || flat || sp->depth >= PC_SUBDIV_MAX_DEPTH) && !holds_best) {
         double uv[2];
         nearest_control_param(sp, n->deg_u, n->deg_v, cs->p, uv);
