@@ -869,9 +869,47 @@ static void test_span_hint(void)
     }
 }
 
+/* The O(1) span of near-uniform knot vectors is the searched span, for
+ * every knot, its floating-point neighbours and random values; knot
+ * vectors whose spans differ by more than a quarter get no scale. */
+static void test_span_scaled(void)
+{
+    enum { N = 19, P = 3 };
+    double knots[4][N + P + 1];
+    for (int k = 0; k < N + P + 1; ++k) {
+        const int i = k < P ? 0 : k > N ? N - P : k - P;
+        knots[0][k] = i / 16.0;         /* uniform, exact */
+        knots[1][k] = 0.1 * i - 0.35;   /* uniform up to rounding */
+        knots[2][k] = i + (i == 5 ? 0.2 : i == 9 ? -0.2 : 0.0); /* knots moved by a fifth */
+        knots[3][k] = i + (i == 5 ? 0.3 : 0.0); /* ... by more than a quarter */
+    }
+    const int uniform[4] = {1, 1, 1, 0};
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 3);
+    for (int kv = 0; kv < 4; ++kv) {
+        const double *U = knots[kv];
+        const double scale = pc_knot_uniform_scale(U, N, P);
+        CHECK(uniform[kv] ? scale > 0.0 : scale == 0.0);
+        for (int k = 0; k < 3 * (N + P + 1) + 200; ++k) {
+            double t;
+            if (k < 3 * (N + P + 1))
+                t = k % 3 == 0 ? U[k / 3] : nextafter(U[k / 3], k % 3 == 1 ? -INFINITY : INFINITY);
+            else
+                t = pc_test_rng_uniform(&rng, U[P] - 0.1, U[N] + 0.1);
+            const size_t expect = pc_knot_span(U, N, P, t, 0);
+            const size_t got = pc_knot_span_scaled(U, N, P, t, 0, scale);
+            if (got != expect)
+                pc_test_fail_at(__FILE__, __LINE__, "knot vector %d, t = %.17g: span %zu, searched %zu",
+                                kv, t, got, expect);
+            ++pc_test_checks;
+        }
+    }
+}
+
 int main(void)
 {
     test_span_hint();
+    test_span_scaled();
     test_circle();
     test_analytic_surfaces();
     test_surface_routes();
