@@ -7,12 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bezier/net.h"
 #include "common/error.h"
 
 /* Depth-first: a split pops one net and pushes four, so the stack never
- * holds more than 3 * depth + 1 nets; 6 more are scratch for the split. */
+ * holds more than 3 * depth + 1 nets; 2 more are scratch for the split. */
 #define PC_SUBDIV_STACK (3 * PC_SUBDIV_MAX_DEPTH + 1)
-#define PC_SUBDIV_SCRATCH 6
+#define PC_SUBDIV_SCRATCH 2
 
 projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, int p, int q)
 {
@@ -69,60 +70,43 @@ typedef struct stack_item {
     int depth;
 } stack_item;
 
-/* Cartesian points of a homogeneous net and their box, with min/max in
- * registers (no branch per coordinate: the comparisons are unpredictable). */
-static void cartesian(const double *cw, size_t n, double *xyz, double box[6])
-{
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (size_t i = 0; i < n; ++i) {
-        const double w = cw[4 * i + 3];
-        /* Polynomial nets (w = 1, also after subdivision) skip the division. */
-        const double inv_w = w == 1.0 ? 1.0 : 1.0 / w;
-        for (size_t k = 0; k < 3; ++k) {
-            const double x = cw[4 * i + k] * inv_w;
-            xyz[3 * i + k] = x;
-            lo[k] = x < lo[k] ? x : lo[k];
-            hi[k] = x > hi[k] ? x : hi[k];
-        }
-    }
-    for (int k = 0; k < 3; ++k) {
-        box[k] = lo[k];
-        box[k + 3] = hi[k];
-    }
-}
-
 void pc_subdiv_walk(pc_subdiv_work *w, const pc_bezier_patch *patch, pc_subdiv_fn decide,
                     void *user)
 {
     const size_t len = w->net_len, n_pts = len / 4;
     double *slot0 = w->mem;                              /* stack nets */
-    double *scratch = w->mem + PC_SUBDIV_STACK * len;    /* 6 split nets */
+    double *scratch = w->mem + PC_SUBDIV_STACK * len;    /* 2 half nets of a split */
     double *xyz = w->mem + w->n_slots * len;             /* current Cartesian points */
     stack_item items[PC_SUBDIV_STACK];
     size_t top = 0;
-    memcpy(slot0, patch->cw, len * sizeof(double));
     items[top++] = (stack_item){patch->u0, patch->u1, patch->v0, patch->v1, 0};
     while (top > 0) {
         const stack_item it = items[--top];
-        double *net = slot0 + top * len;
-        pc_subpatch sp = {it.u0, it.u1, it.v0, it.v1, it.depth, net, xyz, {0}};
-        cartesian(net, n_pts, xyz, sp.box);
+        /* The patch itself is read where the grid keeps it, with its
+         * Cartesian net, box and flatness; sub-patches from their slots. */
+        const int root = it.depth == 0;
+        double *slot = slot0 + top * len;
+        const double *net = root ? patch->cw : slot;
+        pc_subpatch sp = {it.u0, it.u1, it.v0, it.v1, it.depth, net, root ? patch->xyz : xyz,
+                          {0}, root ? patch->flatness : -1.0};
+        if (root)
+            memcpy(sp.box, patch->box, sizeof sp.box);
+        else
+            pc_bezier_net_cartesian(net, n_pts, xyz, sp.box);
         const pc_subdiv_action action = decide(user, &sp);
         if (action != PC_SUBDIV_SPLIT || it.depth >= PC_SUBDIV_MAX_DEPTH)
             continue;
+        /* The quarters go straight to the slots top .. top + 3 (the first
+         * overwrites the parent, which split_u has consumed by then). */
         double *left = scratch, *right = scratch + len;
         split_u(net, w->p, w->q, left, right);
-        split_v(left, w->p, w->q, scratch + 2 * len, scratch + 3 * len);
-        split_v(right, w->p, w->q, scratch + 4 * len, scratch + 5 * len);
+        split_v(left, w->p, w->q, slot, slot + len);
+        split_v(right, w->p, w->q, slot + 2 * len, slot + 3 * len);
         const double um = 0.5 * (it.u0 + it.u1), vm = 0.5 * (it.v0 + it.v1);
-        const stack_item kids[4] = {{it.u0, um, it.v0, vm, it.depth + 1},
-                                    {it.u0, um, vm, it.v1, it.depth + 1},
-                                    {um, it.u1, it.v0, vm, it.depth + 1},
-                                    {um, it.u1, vm, it.v1, it.depth + 1}};
-        for (size_t k = 0; k < 4; ++k) {
-            memcpy(slot0 + top * len, scratch + (2 + k) * len, len * sizeof(double));
-            items[top++] = kids[k];
-        }
+        items[top++] = (stack_item){it.u0, um, it.v0, vm, it.depth + 1};
+        items[top++] = (stack_item){it.u0, um, vm, it.v1, it.depth + 1};
+        items[top++] = (stack_item){um, it.u1, it.v0, vm, it.depth + 1};
+        items[top++] = (stack_item){um, it.u1, vm, it.v1, it.depth + 1};
     }
 }
 
@@ -256,28 +240,5 @@ int pc_subpatch_may_hold_foot(const pc_subpatch *sp, int p, int q, int rational,
 
 double pc_subpatch_flatness(const pc_subpatch *sp, int p, int q)
 {
-    const size_t n_u = (size_t)p + 1;
-    const double *c00 = sp->xyz, *c10 = sp->xyz + 3 * (size_t)p;
-    const double *c01 = sp->xyz + 3 * (size_t)q * n_u, *c11 = c01 + 3 * (size_t)p;
-    const double step_s = 1.0 / p, step_t = 1.0 / q;
-    double worst = 0.0;
-    for (size_t j = 0; j <= (size_t)q; ++j) {
-        /* Along row j the bilinear interpolant is the segment a + s d. */
-        const double t = (double)j * step_t;
-        double a[3], d[3];
-        for (int k = 0; k < 3; ++k) {
-            a[k] = c00[k] + t * (c01[k] - c00[k]);
-            d[k] = c10[k] + t * (c11[k] - c10[k]) - a[k];
-        }
-        const double *x = sp->xyz + 3 * j * n_u;
-        for (size_t i = 0; i <= (size_t)p; ++i, x += 3) {
-            const double s = (double)i * step_s;
-            const double e[3] = {x[0] - (a[0] + s * d[0]), x[1] - (a[1] + s * d[1]),
-                                 x[2] - (a[2] + s * d[2])};
-            const double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-            worst = e2 > worst ? e2 : worst; /* fmax would be a libm call */
-        }
-    }
-    const double diag = box_diagonal(sp->box);
-    return diag > 0.0 ? sqrt(worst) / diag : 0.0;
+    return sp->flatness >= 0.0 ? sp->flatness : pc_bezier_net_flatness(sp->xyz, p, q, sp->box);
 }

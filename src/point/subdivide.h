@@ -22,6 +22,7 @@ typedef struct pc_subpatch {
     const double *cw;       /* homogeneous net, (p+1) x (q+1), u fastest */
     const double *xyz;      /* its Cartesian points, 3 each */
     double box[6];          /* box of xyz */
+    double flatness;        /* pc_subpatch_flatness, or < 0 until computed */
 } pc_subpatch;
 
 typedef enum pc_subdiv_action { PC_SUBDIV_DROP = 0, PC_SUBDIV_STOP = 1, PC_SUBDIV_SPLIT = 2 } pc_subdiv_action;
@@ -53,7 +54,8 @@ double pc_box_distance_sq(const double box[6], pc_vec3 p);
 int pc_subpatch_may_hold_foot(const pc_subpatch *sp, int p, int q, int rational, pc_vec3 pt);
 
 /* Largest distance of a control point from the bilinear interpolant of the
- * four corners, relative to the net's box diagonal. */
+ * four corners, relative to the net's box diagonal (pc_bezier_net_flatness;
+ * for a whole patch kept by the patch grid). */
 double pc_subpatch_flatness(const pc_subpatch *sp, int p, int q);
 
 #endif /* PC_POINT_SUBDIVIDE_H */
