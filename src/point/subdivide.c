@@ -34,9 +34,16 @@ void pc_subdiv_work_free(pc_subdiv_work *w)
     w->mem = NULL;
 }
 
+#if defined(__GNUC__)
+#define SPLIT_INLINE inline __attribute__((always_inline))
+#else
+#define SPLIT_INLINE inline
+#endif
+
 /* de Casteljau at 1/2 of `count` homogeneous points spaced `stride`
  * doubles apart, into lo and hi (same spacing). */
-static void split_line(const double *src, size_t count, size_t stride, double *lo, double *hi)
+static SPLIT_INLINE void split_line_n(const double *src, size_t count, size_t stride,
+                                      double *lo, double *hi)
 {
     double tmp[PC_MAX_ORDER][4];
     for (size_t i = 0; i < count; ++i)
@@ -48,6 +55,38 @@ static void split_line(const double *src, size_t count, size_t stride, double *l
         for (size_t i = 0; i + r < last; ++i)
             for (int m = 0; m < 4; ++m)
                 tmp[i][m] = 0.5 * (tmp[i][m] + tmp[i + 1][m]);
+    }
+}
+
+/* The usual degrees get a constant count, for which the compiler unrolls
+ * the triangle and keeps it in registers. */
+static void split_line(const double *src, size_t count, size_t stride, double *lo, double *hi)
+{
+    switch (count) {
+    case 2: split_line_n(src, 2, stride, lo, hi); break;
+    case 3: split_line_n(src, 3, stride, lo, hi); break;
+    case 4: split_line_n(src, 4, stride, lo, hi); break;
+    case 6: split_line_n(src, 6, stride, lo, hi); break;
+    default: split_line_n(src, count, stride, lo, hi); break;
+    }
+}
+
+/* Cartesian points and box of a net whose weights are all 1 (the
+ * sub-patches of a polynomial patch: halving keeps the weights 1 exactly):
+ * the same values as pc_bezier_net_cartesian, without its per-point test. */
+static void cartesian_polynomial(const double *cw, size_t n, double *xyz, double box[6])
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < n; ++i)
+        for (size_t k = 0; k < 3; ++k) {
+            const double x = cw[4 * i + k];
+            xyz[3 * i + k] = x;
+            lo[k] = x < lo[k] ? x : lo[k];
+            hi[k] = x > hi[k] ? x : hi[k];
+        }
+    for (int k = 0; k < 3; ++k) {
+        box[k] = lo[k];
+        box[k + 3] = hi[k];
     }
 }
 
@@ -79,6 +118,9 @@ void pc_subdiv_walk(pc_subdiv_work *w, const pc_bezier_patch *patch, pc_subdiv_f
     double *xyz = w->mem + w->n_slots * len;             /* current Cartesian points */
     stack_item items[PC_SUBDIV_STACK];
     size_t top = 0;
+    int polynomial = 1;
+    for (size_t i = 0; i < n_pts; ++i)
+        polynomial &= patch->cw[4 * i + 3] == 1.0;
     items[top++] = (stack_item){patch->u0, patch->u1, patch->v0, patch->v1, 0};
     while (top > 0) {
         const stack_item it = items[--top];
@@ -91,6 +133,8 @@ void pc_subdiv_walk(pc_subdiv_work *w, const pc_bezier_patch *patch, pc_subdiv_f
                           {0}, root ? patch->flatness : -1.0};
         if (root)
             memcpy(sp.box, patch->box, sizeof sp.box);
+        else if (polynomial)
+            cartesian_polynomial(net, n_pts, xyz, sp.box);
         else
             pc_bezier_net_cartesian(net, n_pts, xyz, sp.box);
         const pc_subdiv_action action = decide(user, &sp);
