@@ -33,7 +33,7 @@
 typedef struct feet_search {
     const projcurve_surface *s;
     pc_vec3 p;
-    pc_subdiv_work work;
+    pc_subdiv_work *work; /* not inside: an initialiser of this struct would zero its scratch */
     pc_foot_list *list;
     size_t starts;
     projcurve_status status;
@@ -170,14 +170,15 @@ projcurve_status pc_surface_foot_points(projcurve_context *ctx, const projcurve_
                                         pc_vec3 p, pc_foot_list *list)
 {
     list->count = 0;
-    feet_search fs = {s, p, {0}, list, 0, PROJCURVE_OK, ctx};
-    projcurve_status st = pc_subdiv_work_init(ctx, &fs.work, s->nurbs.deg_u, s->nurbs.deg_v);
+    pc_subdiv_work work;
+    feet_search fs = {s, p, &work, list, 0, PROJCURVE_OK, ctx};
+    projcurve_status st = pc_subdiv_work_init(ctx, fs.work, s->nurbs.deg_u, s->nurbs.deg_v);
     if (st != PROJCURVE_OK)
         return st;
     const size_t n_patches = s->grid.spans_u * s->grid.spans_v;
     for (size_t k = 0; k < n_patches && fs.status == PROJCURVE_OK; ++k)
-        pc_subdiv_walk(&fs.work, &s->grid.patches[k], decide_feet, &fs);
-    pc_subdiv_work_free(&fs.work);
+        pc_subdiv_walk(fs.work, &s->grid.patches[k], decide_feet, &fs);
+    pc_subdiv_work_free(fs.work);
     if (fs.status != PROJCURVE_OK)
         return fs.status;
     merge_duplicates(list, s->nurbs.domain);

@@ -22,7 +22,8 @@ projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, 
     w->net_len = 4 * ((size_t)p + 1) * ((size_t)q + 1);
     w->n_slots = PC_SUBDIV_STACK + PC_SUBDIV_SCRATCH;
     /* + 3/4 net for the Cartesian points of the current sub-patch. */
-    w->mem = malloc((w->n_slots + 1) * w->net_len * sizeof(double));
+    const size_t n_doubles = (w->n_slots + 1) * w->net_len;
+    w->mem = n_doubles <= PC_SUBDIV_LOCAL ? w->local : malloc(n_doubles * sizeof(double));
     if (w->mem == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for patch subdivision");
     return PROJCURVE_OK;
@@ -30,7 +31,8 @@ projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, 
 
 void pc_subdiv_work_free(pc_subdiv_work *w)
 {
-    free(w->mem);
+    if (w->mem != w->local)
+        free(w->mem);
     w->mem = NULL;
 }
 

@@ -29,12 +29,19 @@ typedef enum pc_subdiv_action { PC_SUBDIV_DROP = 0, PC_SUBDIV_STOP = 1, PC_SUBDI
 
 typedef pc_subdiv_action (*pc_subdiv_fn)(void *user, const pc_subpatch *sp);
 
-/* Scratch memory for walks over patches of degree (p, q). */
+/* Doubles of scratch kept inside pc_subdiv_work: enough for degrees up
+ * to (4, 4) (32 KiB), so that a query on the usual surfaces allocates
+ * nothing; higher degrees allocate. */
+#define PC_SUBDIV_LOCAL 4096
+
+/* Scratch memory for walks over patches of degree (p, q). Holds a pointer
+ * into itself: not to be copied once initialised. */
 typedef struct pc_subdiv_work {
     int p, q;
     size_t net_len;  /* doubles per homogeneous net */
-    double *mem;
+    double *mem;     /* local or malloc'd */
     size_t n_slots;
+    double local[PC_SUBDIV_LOCAL];
 } pc_subdiv_work;
 
 projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, int p, int q);
