@@ -1,8 +1,9 @@
 /*
  * NURBS evaluation: exact analytic shapes, agreement of three independent
- * routes (de Boor on the user data, basis functions, Bezier patches),
- * derivatives against finite differences, exact clamping of unclamped and
- * periodic knot vectors, degrees 1..25.
+ * routes (de Boor on the user data, basis functions, Bezier patches) for
+ * points and derivatives, derivatives against finite differences, exact
+ * clamping of unclamped and truly periodic knot vectors, degrees 1..30,
+ * copies of the user's arrays, callback curves, span lookup.
  */
 #include <math.h>
 #include <stdlib.h>
