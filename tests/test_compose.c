@@ -177,7 +177,7 @@ static void test_degree_elevation(void)
 static void test_bilinear_diagonal(void)
 {
     double cw[16] = {0, 0, 0, 1, 4, 0, 1, 1, 0, 3, -2, 1, 5, 6, 7, 1};
-    pc_bezier_patch pt = {1, 1, 0.0, 1.0, 0.0, 1.0, cw, {0}, 0, 0};
+    pc_bezier_patch pt = {1, 1, 0.0, 1.0, 0.0, 1.0, cw, {0}, 0, 0, NULL, 0.0};
     const double uv0[2] = {0, 0}, uv1[2] = {1, 1};
     double out[12];
     pc_compose_segment(&pt, uv0, uv1, out);
@@ -202,7 +202,7 @@ static void test_rational_cylinder(void)
             c[2] = wts[i] * H * j;
             c[3] = wts[i];
         }
-    pc_bezier_patch pt = {2, 1, 0.0, 1.0, 0.0, 1.0, cw, {0}, 0, 0};
+    pc_bezier_patch pt = {2, 1, 0.0, 1.0, 0.0, 1.0, cw, {0}, 0, 0, NULL, 0.0};
     pc_test_rng rng;
     pc_test_rng_seed(&rng, 6003);
     for (int trial = 0; trial < 20; ++trial) {

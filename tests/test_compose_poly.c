@@ -214,7 +214,7 @@ static void test_rational_cylinder(void)
             c[2] = wts[i] * H * j;
             c[3] = wts[i];
         }
-    pc_bezier_patch pt = {2, 1, 0.0, 1.0, 0.0, 1.0, cw, {0}, 0, 0};
+    pc_bezier_patch pt = {2, 1, 0.0, 1.0, 0.0, 1.0, cw, {0}, 0, 0, NULL, 0.0};
     pc_test_rng rng;
     pc_test_rng_seed(&rng, 6104);
     for (int trial = 0; trial < 20; ++trial) {

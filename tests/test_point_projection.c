@@ -3,13 +3,17 @@
  * answers (spheres, tori, cylinders, circles) and against brute force
  * (dense sampling plus an independent pattern-search polish) on random
  * bumpy surfaces and random curves; points near edges and corners; points
- * with several equidistant feet; every foot point of a point.
+ * with several equidistant feet; every foot point of a point; minima on
+ * the boundary (analytic corner and edge minima of a paraboloid, points out
+ * beyond the corners and edges of bumpy surfaces, curves whose closest
+ * point is an end).
  */
 #include <math.h>
 #include <stdlib.h>
 
 #include "api/handles.h"
 #include "check.h"
+#include "closest_oracle.h"
 #include "shapes.h"
 
 /* Closest points are polished by Newton to ~1e-15 relative; distances
@@ -26,55 +30,19 @@ static double dist3(const double *a, const double *b)
                 (a[2] - b[2]) * (a[2] - b[2]));
 }
 
+/* The brute-force oracle of tests/support/closest_oracle.h on an 80 x 80
+ * grid: fine enough for the bumps of these shapes (a few per unit). */
+static double brute_surface(const projcurve_surface *s, const double *p, double uv[2])
+{
+    return pc_oracle_surface_closest(s, p, 80, uv);
+}
+
 static double surface_d2(const projcurve_surface *s, double u, double v, const double *p)
 {
     double q[3];
     projcurve_surface_eval(NULL, s, u, v, 0, q);
     return (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) +
            (q[2] - p[2]) * (q[2] - p[2]);
-}
-
-/* Oracle: dense grid, then pattern search (shrinking 3x3 stencils, clamped
- * to the domain) from the best sample. Independent of the library's Newton
- * and subdivision. */
-static double brute_surface(const projcurve_surface *s, const double *p, double uv[2])
-{
-    double dom[4];
-    projcurve_surface_domain(NULL, s, dom);
-    const int n = 80;
-    double best = INFINITY;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; j <= n; ++j) {
-            const double u = dom[0] + (dom[1] - dom[0]) * i / n;
-            const double v = dom[2] + (dom[3] - dom[2]) * j / n;
-            const double d2 = surface_d2(s, u, v, p);
-            if (d2 < best) {
-                best = d2;
-                uv[0] = u;
-                uv[1] = v;
-            }
-        }
-    double hu = (dom[1] - dom[0]) / n, hv = (dom[3] - dom[2]) / n;
-    for (int it = 0; it < 400 && (hu > 1e-15 || hv > 1e-15); ++it) {
-        int moved = 0;
-        for (int a = -1; a <= 1; ++a)
-            for (int b = -1; b <= 1; ++b) {
-                const double u = fmin(fmax(uv[0] + a * hu, dom[0]), dom[1]);
-                const double v = fmin(fmax(uv[1] + b * hv, dom[2]), dom[3]);
-                const double d2 = surface_d2(s, u, v, p);
-                if (d2 < best) {
-                    best = d2;
-                    uv[0] = u;
-                    uv[1] = v;
-                    moved = 1;
-                }
-            }
-        if (!moved) {
-            hu *= 0.5;
-            hv *= 0.5;
-        }
-    }
-    return sqrt(best);
 }
 
 static void check_against_brute(const projcurve_surface *s, const double *p, const char *what)
@@ -455,6 +423,150 @@ static void test_curves(void)
     projcurve_curve_destroy(hc);
 }
 
+/* ---- Minima on the boundary ------------------------------------------- */
+
+/* The paraboloid S(u, v) = (u, v, u^2 + v^2) over [0, 1]^2, exact as a
+ * biquadratic Bezier patch: x and y at the Greville abscissae 0, 1/2, 1, z
+ * from the Bernstein coefficients (0, 0, 1) of u^2. */
+static projcurve_surface *paraboloid(void)
+{
+    double ctrl[27], knots[6] = {0, 0, 0, 1, 1, 1};
+    static const double g[3] = {0.0, 0.5, 1.0}, sq[3] = {0.0, 0.0, 1.0};
+    for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) {
+            double *pt = ctrl + 3 * (3 * j + i);
+            pt[0] = g[i];
+            pt[1] = g[j];
+            pt[2] = sq[i] + sq[j];
+        }
+    projcurve_surface *s = NULL;
+    CHECK_OK(projcurve_surface_create_nurbs(NULL, 2, 2, 3, 3, ctrl, NULL, knots, knots, &s));
+    return s;
+}
+
+/* Library against brute force, and where the brute-force minimum lies on
+ * the boundary (the oracle clamps to it exactly) the library's parameter
+ * must lie on the same edge: its active set puts it there exactly. */
+static void check_boundary_against_brute(const projcurve_surface *s, const double *p, const char *what)
+{
+    check_against_brute(s, p, what);
+    double uv[2], buv[2], dist, dom[4];
+    CHECK_OK(projcurve_surface_closest_point(NULL, s, p, uv, NULL, &dist));
+    brute_surface(s, p, buv);
+    projcurve_surface_domain(NULL, s, dom);
+    for (int c = 0; c < 2; ++c)
+        for (int side = 0; side < 2; ++side) {
+            const double bound = dom[2 * c + side];
+            if (buv[c] == bound && uv[c] != bound)
+                pc_test_fail_at(__FILE__, __LINE__,
+                                "%s: p = (%.17g, %.17g, %.17g): brute force on the edge %s = %g, "
+                                "library at %.17g",
+                                what, p[0], p[1], p[2], c == 0 ? "u" : "v", bound, uv[c]);
+            ++pc_test_checks;
+        }
+}
+
+static void test_surface_boundary_minima(void)
+{
+    projcurve_surface *s = paraboloid();
+    /* p = (1.5, 1.5, 3): d|S - p|^2/du = 2 (u - 1.5) + 4 u (u^2 + v^2 - 3) < 0
+     * on the whole square, and likewise in v, so the minimum is the corner
+     * (1, 1) at distance sqrt(0.25 + 0.25 + 1). */
+    const double corner_p[3] = {1.5, 1.5, 3.0};
+    double uv[2], q[3], dist;
+    CHECK_OK(projcurve_surface_closest_point(NULL, s, corner_p, uv, q, &dist));
+    CHECK(uv[0] == 1.0 && uv[1] == 1.0);
+    CHECK_NEAR(dist, sqrt(1.5), 1e-15);
+    check_boundary_against_brute(s, corner_p, "paraboloid corner");
+    /* p = (0.5, 1.6, 1): on the edge v = 1 the distance is stationary where
+     * 4 u^3 + 2 u - 1 = 0 (u* = 0.3855...), and there d/dv < 0 (it pushes out
+     * of the square): the minimum lies inside the edge v = 1. u* by Newton on
+     * the cubic (increasing, convex for u > 0: converges from 1). */
+    const double edge_p[3] = {0.5, 1.6, 1.0};
+    double root = 1.0;
+    for (int it = 0; it < 60; ++it)
+        root -= (4 * root * root * root + 2 * root - 1) / (12 * root * root + 2);
+    CHECK_OK(projcurve_surface_closest_point(NULL, s, edge_p, uv, q, &dist));
+    CHECK(uv[1] == 1.0);
+    /* u is fixed by a 1D minimum with f'' = 12 u*^2 + 2 ~ 3.8: the distance
+     * pins it to ~sqrt(eps), Newton on the gradient to ~1e-15. */
+    CHECK_NEAR(uv[0], root, 1e-12);
+    const double expect = sqrt((root - 0.5) * (root - 0.5) + 0.36 + root * root * root * root);
+    CHECK_NEAR(dist, expect, 1e-15);
+    check_boundary_against_brute(s, edge_p, "paraboloid edge");
+    projcurve_surface_destroy(s);
+
+    /* Bumpy surfaces, polynomial and rational: points out beyond each corner
+     * (diagonally, above and below) and beyond the middle of each edge. */
+    for (int rational = 0; rational <= 1; ++rational) {
+        pc_shape_surface sh = pc_shape_bumpy(60 + (unsigned long long)rational, 4, 5, 0.3, rational);
+        projcurve_surface *b = pc_shape_surface_create(&sh);
+        for (int corner = 0; corner < 4; ++corner) {
+            const double cx = corner & 1, cy = corner >> 1;
+            for (int k = 0; k < 3; ++k) {
+                const double out = 0.1 + 0.3 * k, z = 0.5 * (k - 1);
+                const double p[3] = {cx + (cx > 0 ? out : -out), cy + (cy > 0 ? out : -out), z};
+                check_boundary_against_brute(b, p, rational ? "rational bumpy corner" : "bumpy corner");
+            }
+        }
+        for (int edge = 0; edge < 4; ++edge)
+            for (int k = 0; k < 3; ++k) {
+                const double out = 0.05 + 0.4 * k, along = 0.3 + 0.2 * k, z = 0.4 - 0.4 * k;
+                double p[3] = {along, along, z};
+                p[edge / 2] = edge % 2 ? 1.0 + out : -out;
+                check_boundary_against_brute(b, p, rational ? "rational bumpy edge" : "bumpy edge");
+            }
+        projcurve_surface_destroy(b);
+        pc_shape_surface_free(&sh);
+    }
+}
+
+/* Curves whose closest point is an end, on the parabola C(t) = (t, t^2, 0):
+ * - over [0, 1] (one quadratic Bezier segment, knot 0.5 inserted: points
+ *   (0,0), (1/4,0), (3/4,1/2), (1,1)) from p = (1.5, 1.5, 0), where
+ *   d|C - p|^2/dt / 2 = 2t^3 - 2t - 1.5 < 0 on [0, 1]: the end t = 1 at
+ *   distance sqrt(0.5); from p = (-1, -0.5, 0.3), where it is
+ *   2t^3 + 2t + 1 > 0: the start t = 0 at distance sqrt(1.34);
+ * - over [-1, 1] (points (-1,1), (-1/2,0), (1/2,0), (1,1), knot 0) from
+ *   p = (+-0.1, 2, 0): the derivative 4t^3 - 6t -+ 0.2 has one zero inside
+ *   (a maximum) and both ends are local minima, at squared distances 1.81
+ *   and 2.21: the nearer end wins. */
+static void test_curve_end_minima(void)
+{
+    static const double unit_ctrl[12] = {0, 0, 0, 0.25, 0, 0, 0.75, 0.5, 0, 1, 1, 0};
+    static const double unit_knots[7] = {0, 0, 0, 0.5, 1, 1, 1};
+    static const double wide_ctrl[12] = {-1, 1, 0, -0.5, 0, 0, 0.5, 0, 0, 1, 1, 0};
+    static const double wide_knots[7] = {-1, -1, -1, 0, 1, 1, 1};
+    static const struct {
+        const double *ctrl, *knots;
+        double p[3], t, dist;
+    } cases[] = {
+        {unit_ctrl, unit_knots, {1.5, 1.5, 0.0}, 1.0, 0.70710678118654752},
+        {unit_ctrl, unit_knots, {-1.0, -0.5, 0.3}, 0.0, 1.1575836902790226},
+        {wide_ctrl, wide_knots, {0.1, 2.0, 0.0}, 1.0, 1.3453624047073711},
+        {wide_ctrl, wide_knots, {-0.1, 2.0, 0.0}, -1.0, 1.3453624047073711},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; ++k) {
+        projcurve_curve *c = NULL;
+        CHECK_OK(projcurve_curve_create_nurbs(NULL, 2, 4, cases[k].ctrl, NULL, cases[k].knots, &c));
+        double t, q[3], dist;
+        CHECK_OK(projcurve_curve_closest_point(NULL, c, cases[k].p, &t, q, &dist));
+        /* An end minimum with a nonzero slope: the end itself, exactly. */
+        if (!(t == cases[k].t && fabs(dist - cases[k].dist) <= 1e-15))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "case %zu, p = (%g, %g, %g): t = %.17g at distance %.17g, expected "
+                            "the end %g at %.17g",
+                            k, cases[k].p[0], cases[k].p[1], cases[k].p[2], t, dist, cases[k].t,
+                            cases[k].dist);
+        ++pc_test_checks;
+        const double at_end[3] = {cases[k].t, cases[k].t * cases[k].t, 0.0};
+        CHECK_NEAR(dist3(q, at_end), 0.0, 1e-15);
+        double bt;
+        CHECK_NEAR(brute_curve(c, cases[k].p, &bt), cases[k].dist, 1e-15);
+        projcurve_curve_destroy(c);
+    }
+}
+
 int main(void)
 {
     test_sphere_and_torus();
@@ -462,5 +574,7 @@ int main(void)
     test_random_surfaces();
     test_feet_contain_local_minima();
     test_curves();
+    test_surface_boundary_minima();
+    test_curve_end_minima();
     return pc_test_finish("test_point_projection");
 }

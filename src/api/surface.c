@@ -3,6 +3,7 @@
  * the patch BVH, built once), shape queries and evaluation.
  */
 #include <stdlib.h>
+#include <string.h>
 
 #include "api/handles.h"
 #include "common/error.h"
@@ -109,9 +110,13 @@ projcurve_status projcurve_surface_eval(projcurve_context *ctx, const projcurve_
                        u, v, d[0], d[1], d[2], d[3]);
     pc_vec3 r[6];
     pc_nurbs_surface_eval(&surface->nurbs, u, v, n_deriv, NULL, NULL, r);
-    static const int count[3] = {1, 3, 6};
-    for (int k = 0; k < count[n_deriv]; ++k)
-        vec3_store(r[k], out + 3 * k);
+    /* pc_vec3 is three doubles without padding: one block copy of a
+     * constant size (which the compiler inlines). */
+    switch (n_deriv) {
+    case 0: memcpy(out, r, sizeof(pc_vec3)); break;
+    case 1: memcpy(out, r, 3 * sizeof(pc_vec3)); break;
+    default: memcpy(out, r, 6 * sizeof(pc_vec3)); break;
+    }
     return PROJCURVE_OK;
 }
 

@@ -18,6 +18,11 @@ typedef struct pc_bezier_patch {
     const double *cw;       /* 4 * (deg_u + 1) * (deg_v + 1), u fastest */
     double box[6];          /* bounding box of the Cartesian control points */
     size_t iu, iv;          /* position in the patch grid */
+    /* Kept by the patch grid for point queries (NULL / 0 in patches made
+     * elsewhere): the Cartesian control points, 3 each, and the net's
+     * pc_bezier_net_flatness. */
+    const double *xyz;
+    double flatness;
 } pc_bezier_patch;
 
 typedef struct pc_patch_grid {
@@ -30,6 +35,7 @@ typedef struct pc_patch_grid {
     unsigned char *crease_u;  /* spans_u + 1 */
     unsigned char *crease_v;  /* spans_v + 1 */
     double *cw;               /* storage of all patch nets */
+    double *xyz;              /* storage of all their Cartesian points */
 } pc_patch_grid;
 
 /* Decomposes s by knot insertion. Statuses: OK, NO_MEMORY, OVERFLOW. */

@@ -11,19 +11,8 @@
 
 #include "bezier/bezier.h"
 #include "bezier/extract.h"
+#include "bezier/net.h"
 #include "common/error.h"
-
-/* Box of the Cartesian points of a homogeneous net (convex hull property:
- * with positive weights the patch lies inside it). */
-static void net_box(const double *cw, size_t n_points, double box[6])
-{
-    box_empty(box);
-    for (size_t i = 0; i < n_points; ++i) {
-        const double inv_w = 1.0 / cw[4 * i + 3];
-        const double pt[3] = {cw[4 * i] * inv_w, cw[4 * i + 1] * inv_w, cw[4 * i + 2] * inv_w};
-        box_add_point(box, pt);
-    }
-}
 
 static void fill_patches(pc_patch_grid *grid, const pc_nurbs_surface *s, const double *big)
 {
@@ -47,7 +36,12 @@ static void fill_patches(pc_patch_grid *grid, const pc_nurbs_surface *s, const d
             patch->cw = dst;
             patch->iu = iu;
             patch->iv = iv;
-            net_box(dst, p1 * q1, patch->box);
+            /* What a point query needs of the whole patch, once: the
+             * subdivision walk starts from these (point/subdivide.c). */
+            double *xyz = grid->xyz + index * 3 * p1 * q1;
+            pc_bezier_net_cartesian(dst, p1 * q1, xyz, patch->box);
+            patch->xyz = xyz;
+            patch->flatness = pc_bezier_net_flatness(xyz, s->deg_u, s->deg_v, patch->box);
         }
 }
 
@@ -94,9 +88,10 @@ projcurve_status pc_patch_grid_build(projcurve_context *ctx, pc_patch_grid *grid
     grid->crease_u = malloc(grid->spans_u + 1);
     grid->crease_v = malloc(grid->spans_v + 1);
     grid->cw = malloc(n_doubles * sizeof(double));
+    grid->xyz = malloc(n_doubles / 4 * 3 * sizeof(double));
     if (rows_u == NULL || big == NULL || grid->patches == NULL || grid->breaks_u == NULL ||
         grid->breaks_v == NULL || grid->crease_u == NULL || grid->crease_v == NULL ||
-        grid->cw == NULL) {
+        grid->cw == NULL || grid->xyz == NULL) {
         free(rows_u);
         free(big);
         pc_patch_grid_free(grid);
@@ -127,6 +122,7 @@ void pc_patch_grid_free(pc_patch_grid *grid)
     free(grid->crease_u);
     free(grid->crease_v);
     free(grid->cw);
+    free(grid->xyz);
     memset(grid, 0, sizeof *grid);
 }
 

@@ -10,6 +10,8 @@
 typedef struct pc_vec3 {
     double x, y, z;
 } pc_vec3;
+/* Arrays of pc_vec3 are copied to and from arrays of 3 doubles as bytes. */
+_Static_assert(sizeof(pc_vec3) == 3 * sizeof(double), "pc_vec3 is three packed doubles");
 
 static inline pc_vec3 vec3(double x, double y, double z)
 {

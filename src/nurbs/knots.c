@@ -1,6 +1,7 @@
 /*
  * Knot vectors: span lookup, validation of user input, size arithmetic.
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
@@ -106,4 +107,18 @@ double *pc_knot_inverses(const double *knots, size_t n_ctrl, int degree)
                 row[j * (j - 1) / 2 + r] = 1.0 / (knots[k + r + 1] - knots[k + r + 1 - j]);
     }
     return inv;
+}
+
+double pc_knot_uniform_scale(const double *knots, size_t n_ctrl, int degree)
+{
+    const size_t lo = (size_t)degree, spans = n_ctrl - lo;
+    const double length = knots[n_ctrl] - knots[lo], h = length / (double)spans;
+    if (!(h > 0.0))
+        return 0.0;
+    for (size_t k = 0; k < spans; ++k) {
+        const double span = knots[lo + k + 1] - knots[lo + k];
+        if (!(fabs(span - h) <= 0.25 * h))
+            return 0.0;
+    }
+    return (double)spans / length;
 }

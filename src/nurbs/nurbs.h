@@ -25,6 +25,13 @@ typedef struct pc_nurbs_curve {
     double *poly;   /* monomial form per span (span_poly.h), or NULL */
 } pc_nurbs_curve;
 
+struct pc_nurbs_surface;
+
+/* An evaluator of one degree pair, rationality and derivative order, on
+ * spans already found: out as pc_nurbs_surface_eval. */
+typedef void (*pc_surface_span_fn)(const struct pc_nurbs_surface *s, double u, double v,
+                                   size_t span_u, size_t span_v, pc_vec3 *out);
+
 typedef struct pc_nurbs_surface {
     int deg_u, deg_v;
     size_t n_u, n_v;    /* control net size */
@@ -40,12 +47,52 @@ typedef struct pc_nurbs_surface {
     /* Monomial coefficients of every span pair (span_poly.h), which the
      * fast evaluators use; NULL = evaluate in B-spline form. */
     double *poly;
+    /* Set by pc_nurbs_surface_bind once the fields above are final: the
+     * constant-degree evaluator of each derivative order (0, 1, 2) for
+     * these degrees and this rationality, or NULL (then the general paths
+     * run), so that no call searches for it; and the number of interior
+     * spans per parameter unit of a knot vector whose spans are all equal
+     * to a quarter of their length (0 otherwise), with which a span is
+     * found in O(1) without a hint (pc_knot_uniform_scale). */
+    pc_surface_span_fn span_eval[3];
+    double span_scale_u, span_scale_v;
 } pc_nurbs_surface;
 
 /* Span index k with knots[k] <= t < knots[k+1] inside [degree, n_ctrl - 1]
  * (t = end of domain gives the last non-empty span). `hint` is a previous
  * answer (or any value): sequential calls then cost O(1). */
 size_t pc_knot_span(const double *knots, size_t n_ctrl, int degree, double t, size_t hint);
+
+/* spans / (knots[n_ctrl] - knots[degree]) when every span of the domain
+ * is within a quarter of that mean length of it (uniform knots, also after
+ * rounding), else 0. With it, (t - knots[degree]) * scale is the span
+ * index up to one, which pc_knot_span_scaled corrects. */
+double pc_knot_uniform_scale(const double *knots, size_t n_ctrl, int degree);
+
+/* pc_knot_span, but with a nonzero scale from pc_knot_uniform_scale it
+ * computes the span from t (any t, same answer) instead of trying the hint
+ * and searching. */
+static inline size_t pc_knot_span_scaled(const double *knots, size_t n_ctrl, int degree,
+                                         double t, size_t hint, double scale)
+{
+    const size_t lo = (size_t)degree, hi = n_ctrl - 1;
+    if (scale > 0.0 && t >= knots[lo] && t < knots[n_ctrl]) {
+        const double guess = (t - knots[lo]) * scale;
+        size_t k = lo + (guess < (double)(hi - lo) ? (size_t)guess : hi - lo);
+        /* Now |k - span| <= 1 (the spans are uniform to a quarter); the
+         * walks make the answer exact: knots[k] <= t < knots[k + 1]. */
+        while (k > lo && t < knots[k])
+            --k;
+        while (k < hi && !(t < knots[k + 1]))
+            ++k;
+        return k;
+    }
+    return pc_knot_span(knots, n_ctrl, degree, t, hint);
+}
+
+/* Fills span_eval and span_scale_u/v of a surface whose other fields are
+ * set (pc_nurbs_surface_init calls it last). */
+void pc_nurbs_surface_bind(pc_nurbs_surface *s);
 
 /* Validates and builds a curve from user arrays (the public creation rules:
  * copies, validates, clamps). */

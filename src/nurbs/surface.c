@@ -88,6 +88,7 @@ projcurve_status pc_nurbs_surface_init(projcurve_context *ctx, pc_nurbs_surface 
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for knot tables");
     }
     s->poly = pc_span_polys_build(s); /* optional: NULL only costs speed */
+    pc_nurbs_surface_bind(s);
     return PROJCURVE_OK;
 
 cleanup:

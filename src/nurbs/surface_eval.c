@@ -43,9 +43,6 @@ static PC_ALWAYS_INLINE void eval_poly(const pc_nurbs_surface *s, double u, doub
     pc_block_finish(a, n_deriv, rational, out);
 }
 
-typedef void (*span_eval_fn)(const pc_nurbs_surface *s, double u, double v, size_t span_u,
-                             size_t span_v, pc_vec3 *out);
-
 /* Constant-degree instances: polynomial and rational, orders 0, 1, 2. */
 #define PC_EVAL_INSTANCE(P, Q, RATIONAL, N)                                                  \
     PC_HOT_CLONES static void eval_##P##Q##_##RATIONAL##_##N(                                \
@@ -78,7 +75,7 @@ PC_EVAL_DEGREES(5, 1)
 
 typedef struct eval_instances {
     int p, q;
-    span_eval_fn fn[2][3]; /* [rational][n_deriv] */
+    pc_surface_span_fn fn[2][3]; /* [rational][n_deriv] */
 } eval_instances;
 
 static const eval_instances k_instances[] = {
@@ -123,6 +120,21 @@ PC_HOT_CLONES static void eval_small_any(const pc_nurbs_surface *s, double u, do
     pc_block_finish(a, n_deriv, s->rational, out);
 }
 
+void pc_nurbs_surface_bind(pc_nurbs_surface *s)
+{
+    for (int d = 0; d < 3; ++d)
+        s->span_eval[d] = NULL;
+    if (s->poly != NULL) {
+        const size_t n_instances = sizeof k_instances / sizeof k_instances[0];
+        for (size_t k = 0; k < n_instances; ++k)
+            if (k_instances[k].p == s->deg_u && k_instances[k].q == s->deg_v)
+                for (int d = 0; d < 3; ++d)
+                    s->span_eval[d] = k_instances[k].fn[s->rational != 0][d];
+    }
+    s->span_scale_u = pc_knot_uniform_scale(s->knots_u, s->n_u, s->deg_u);
+    s->span_scale_v = pc_knot_uniform_scale(s->knots_v, s->n_v, s->deg_v);
+}
+
 void pc_nurbs_surface_eval(const pc_nurbs_surface *s, double u, double v, int n_deriv,
                            size_t *hint_u, size_t *hint_v, pc_vec3 *out)
 {
@@ -130,21 +142,18 @@ void pc_nurbs_surface_eval(const pc_nurbs_surface *s, double u, double v, int n_
     v = clamp_to(v, s->domain[2], s->domain[3]);
     n_deriv = n_deriv < 0 ? 0 : (n_deriv > 2 ? 2 : n_deriv);
     const int p = s->deg_u, q = s->deg_v;
-    const size_t span_u = pc_knot_span(s->knots_u, s->n_u, p, u, hint_u ? *hint_u : 0);
-    const size_t span_v = pc_knot_span(s->knots_v, s->n_v, q, v, hint_v ? *hint_v : 0);
+    const size_t span_u = pc_knot_span_scaled(s->knots_u, s->n_u, p, u, hint_u ? *hint_u : 0,
+                                              s->span_scale_u);
+    const size_t span_v = pc_knot_span_scaled(s->knots_v, s->n_v, q, v, hint_v ? *hint_v : 0,
+                                              s->span_scale_v);
     if (hint_u != NULL)
         *hint_u = span_u;
     if (hint_v != NULL)
         *hint_v = span_v;
-    if (s->poly != NULL) {
-        const size_t n_instances = sizeof k_instances / sizeof k_instances[0];
-        for (size_t k = 0; k < n_instances; ++k)
-            if (k_instances[k].p == p && k_instances[k].q == q) {
-                k_instances[k].fn[s->rational != 0][n_deriv](s, u, v, span_u, span_v, out);
-                return;
-            }
-    }
-    if (p <= PC_SMALL_DEGREE && q <= PC_SMALL_DEGREE)
+    const pc_surface_span_fn fn = s->span_eval[n_deriv];
+    if (fn != NULL)
+        fn(s, u, v, span_u, span_v, out);
+    else if (p <= PC_SMALL_DEGREE && q <= PC_SMALL_DEGREE)
         eval_small_any(s, u, v, span_u, span_v, n_deriv, out);
     else
         pc_surface_eval_large(s, u, v, span_u, span_v, n_deriv, out);

@@ -35,7 +35,7 @@
 typedef struct feet_search {
     const projcurve_surface *s;
     pc_vec3 p;
-    pc_subdiv_work work;
+    pc_subdiv_work *work; /* not inside: an initialiser of this struct would zero its scratch */
     pc_foot_list *list;
     size_t starts;
     projcurve_status status;
@@ -179,7 +179,7 @@ static int enter_node(void *user, size_t node_index)
 static int search_patch(void *user, size_t patch_index)
 {
     feet_search *fs = user;
-    pc_subdiv_walk(&fs->work, &fs->s->grid.patches[patch_index], decide_feet, fs);
+    pc_subdiv_walk(fs->work, &fs->s->grid.patches[patch_index], decide_feet, fs);
     return fs->status != PROJCURVE_OK;
 }
 
@@ -188,8 +188,9 @@ static projcurve_status foot_points(projcurve_context *ctx, const projcurve_surf
                                     int use_tree, pc_foot_list *list)
 {
     list->count = 0;
-    feet_search fs = {s, p, {0}, list, 0, PROJCURVE_OK, ctx};
-    projcurve_status st = pc_subdiv_work_init(ctx, &fs.work, s->nurbs.deg_u, s->nurbs.deg_v);
+    pc_subdiv_work work;
+    feet_search fs = {s, p, &work, list, 0, PROJCURVE_OK, ctx};
+    projcurve_status st = pc_subdiv_work_init(ctx, fs.work, s->nurbs.deg_u, s->nurbs.deg_v);
     if (st != PROJCURVE_OK)
         return st;
     if (use_tree && s->tangents.node != NULL) {
@@ -197,9 +198,9 @@ static projcurve_status foot_points(projcurve_context *ctx, const projcurve_surf
     } else {
         const size_t n_patches = s->grid.spans_u * s->grid.spans_v;
         for (size_t k = 0; k < n_patches && fs.status == PROJCURVE_OK; ++k)
-            pc_subdiv_walk(&fs.work, &s->grid.patches[k], decide_feet, &fs);
+            pc_subdiv_walk(fs.work, &s->grid.patches[k], decide_feet, &fs);
     }
-    pc_subdiv_work_free(&fs.work);
+    pc_subdiv_work_free(fs.work);
     if (fs.status != PROJCURVE_OK)
         return fs.status;
     merge_duplicates(list, s->nurbs.domain);

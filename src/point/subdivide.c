@@ -7,12 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bezier/net.h"
 #include "common/error.h"
 
 /* Depth-first: a split pops one net and pushes four, so the stack never
- * holds more than 3 * depth + 1 nets; 6 more are scratch for the split. */
+ * holds more than 3 * depth + 1 nets; 2 more are scratch for the split. */
 #define PC_SUBDIV_STACK (3 * PC_SUBDIV_MAX_DEPTH + 1)
-#define PC_SUBDIV_SCRATCH 6
+#define PC_SUBDIV_SCRATCH 2
 
 projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, int p, int q)
 {
@@ -21,7 +22,8 @@ projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, 
     w->net_len = 4 * ((size_t)p + 1) * ((size_t)q + 1);
     w->n_slots = PC_SUBDIV_STACK + PC_SUBDIV_SCRATCH;
     /* + 3/4 net for the Cartesian points of the current sub-patch. */
-    w->mem = malloc((w->n_slots + 1) * w->net_len * sizeof(double));
+    const size_t n_doubles = (w->n_slots + 1) * w->net_len;
+    w->mem = n_doubles <= PC_SUBDIV_LOCAL ? w->local : malloc(n_doubles * sizeof(double));
     if (w->mem == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for patch subdivision");
     return PROJCURVE_OK;
@@ -29,13 +31,21 @@ projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, 
 
 void pc_subdiv_work_free(pc_subdiv_work *w)
 {
-    free(w->mem);
+    if (w->mem != w->local)
+        free(w->mem);
     w->mem = NULL;
 }
 
+#if defined(__GNUC__)
+#define SPLIT_INLINE inline __attribute__((always_inline))
+#else
+#define SPLIT_INLINE inline
+#endif
+
 /* de Casteljau at 1/2 of `count` homogeneous points spaced `stride`
  * doubles apart, into lo and hi (same spacing). */
-static void split_line(const double *src, size_t count, size_t stride, double *lo, double *hi)
+static SPLIT_INLINE void split_line_n(const double *src, size_t count, size_t stride,
+                                      double *lo, double *hi)
 {
     double tmp[PC_MAX_ORDER][4];
     for (size_t i = 0; i < count; ++i)
@@ -47,6 +57,38 @@ static void split_line(const double *src, size_t count, size_t stride, double *l
         for (size_t i = 0; i + r < last; ++i)
             for (int m = 0; m < 4; ++m)
                 tmp[i][m] = 0.5 * (tmp[i][m] + tmp[i + 1][m]);
+    }
+}
+
+/* The usual degrees get a constant count, for which the compiler unrolls
+ * the triangle and keeps it in registers. */
+static void split_line(const double *src, size_t count, size_t stride, double *lo, double *hi)
+{
+    switch (count) {
+    case 2: split_line_n(src, 2, stride, lo, hi); break;
+    case 3: split_line_n(src, 3, stride, lo, hi); break;
+    case 4: split_line_n(src, 4, stride, lo, hi); break;
+    case 6: split_line_n(src, 6, stride, lo, hi); break;
+    default: split_line_n(src, count, stride, lo, hi); break;
+    }
+}
+
+/* Cartesian points and box of a net whose weights are all 1 (the
+ * sub-patches of a polynomial patch: halving keeps the weights 1 exactly):
+ * the same values as pc_bezier_net_cartesian, without its per-point test. */
+static void cartesian_polynomial(const double *cw, size_t n, double *xyz, double box[6])
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < n; ++i)
+        for (size_t k = 0; k < 3; ++k) {
+            const double x = cw[4 * i + k];
+            xyz[3 * i + k] = x;
+            lo[k] = x < lo[k] ? x : lo[k];
+            hi[k] = x > hi[k] ? x : hi[k];
+        }
+    for (int k = 0; k < 3; ++k) {
+        box[k] = lo[k];
+        box[k + 3] = hi[k];
     }
 }
 
@@ -69,60 +111,48 @@ typedef struct stack_item {
     int depth;
 } stack_item;
 
-/* Cartesian points of a homogeneous net and their box, with min/max in
- * registers (no branch per coordinate: the comparisons are unpredictable). */
-static void cartesian(const double *cw, size_t n, double *xyz, double box[6])
-{
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (size_t i = 0; i < n; ++i) {
-        const double w = cw[4 * i + 3];
-        /* Polynomial nets (w = 1, also after subdivision) skip the division. */
-        const double inv_w = w == 1.0 ? 1.0 : 1.0 / w;
-        for (size_t k = 0; k < 3; ++k) {
-            const double x = cw[4 * i + k] * inv_w;
-            xyz[3 * i + k] = x;
-            lo[k] = x < lo[k] ? x : lo[k];
-            hi[k] = x > hi[k] ? x : hi[k];
-        }
-    }
-    for (int k = 0; k < 3; ++k) {
-        box[k] = lo[k];
-        box[k + 3] = hi[k];
-    }
-}
-
 void pc_subdiv_walk(pc_subdiv_work *w, const pc_bezier_patch *patch, pc_subdiv_fn decide,
                     void *user)
 {
     const size_t len = w->net_len, n_pts = len / 4;
     double *slot0 = w->mem;                              /* stack nets */
-    double *scratch = w->mem + PC_SUBDIV_STACK * len;    /* 6 split nets */
+    double *scratch = w->mem + PC_SUBDIV_STACK * len;    /* 2 half nets of a split */
     double *xyz = w->mem + w->n_slots * len;             /* current Cartesian points */
     stack_item items[PC_SUBDIV_STACK];
     size_t top = 0;
-    memcpy(slot0, patch->cw, len * sizeof(double));
+    int polynomial = 1;
+    for (size_t i = 0; i < n_pts; ++i)
+        polynomial &= patch->cw[4 * i + 3] == 1.0;
     items[top++] = (stack_item){patch->u0, patch->u1, patch->v0, patch->v1, 0};
     while (top > 0) {
         const stack_item it = items[--top];
-        double *net = slot0 + top * len;
-        pc_subpatch sp = {it.u0, it.u1, it.v0, it.v1, it.depth, net, xyz, {0}};
-        cartesian(net, n_pts, xyz, sp.box);
+        /* The patch itself is read where the grid keeps it, with its
+         * Cartesian net, box and flatness; sub-patches from their slots. */
+        const int root = it.depth == 0;
+        double *slot = slot0 + top * len;
+        const double *net = root ? patch->cw : slot;
+        pc_subpatch sp = {it.u0, it.u1, it.v0, it.v1, it.depth, net, root ? patch->xyz : xyz,
+                          {0}, root ? patch->flatness : -1.0};
+        if (root)
+            memcpy(sp.box, patch->box, sizeof sp.box);
+        else if (polynomial)
+            cartesian_polynomial(net, n_pts, xyz, sp.box);
+        else
+            pc_bezier_net_cartesian(net, n_pts, xyz, sp.box);
         const pc_subdiv_action action = decide(user, &sp);
         if (action != PC_SUBDIV_SPLIT || it.depth >= PC_SUBDIV_MAX_DEPTH)
             continue;
+        /* The quarters go straight to the slots top .. top + 3 (the first
+         * overwrites the parent, which split_u has consumed by then). */
         double *left = scratch, *right = scratch + len;
         split_u(net, w->p, w->q, left, right);
-        split_v(left, w->p, w->q, scratch + 2 * len, scratch + 3 * len);
-        split_v(right, w->p, w->q, scratch + 4 * len, scratch + 5 * len);
+        split_v(left, w->p, w->q, slot, slot + len);
+        split_v(right, w->p, w->q, slot + 2 * len, slot + 3 * len);
         const double um = 0.5 * (it.u0 + it.u1), vm = 0.5 * (it.v0 + it.v1);
-        const stack_item kids[4] = {{it.u0, um, it.v0, vm, it.depth + 1},
-                                    {it.u0, um, vm, it.v1, it.depth + 1},
-                                    {um, it.u1, it.v0, vm, it.depth + 1},
-                                    {um, it.u1, vm, it.v1, it.depth + 1}};
-        for (size_t k = 0; k < 4; ++k) {
-            memcpy(slot0 + top * len, scratch + (2 + k) * len, len * sizeof(double));
-            items[top++] = kids[k];
-        }
+        items[top++] = (stack_item){it.u0, um, it.v0, vm, it.depth + 1};
+        items[top++] = (stack_item){it.u0, um, vm, it.v1, it.depth + 1};
+        items[top++] = (stack_item){um, it.u1, it.v0, vm, it.depth + 1};
+        items[top++] = (stack_item){um, it.u1, vm, it.v1, it.depth + 1};
     }
 }
 
@@ -256,28 +286,5 @@ int pc_subpatch_may_hold_foot(const pc_subpatch *sp, int p, int q, int rational,
 
 double pc_subpatch_flatness(const pc_subpatch *sp, int p, int q)
 {
-    const size_t n_u = (size_t)p + 1;
-    const double *c00 = sp->xyz, *c10 = sp->xyz + 3 * (size_t)p;
-    const double *c01 = sp->xyz + 3 * (size_t)q * n_u, *c11 = c01 + 3 * (size_t)p;
-    const double step_s = 1.0 / p, step_t = 1.0 / q;
-    double worst = 0.0;
-    for (size_t j = 0; j <= (size_t)q; ++j) {
-        /* Along row j the bilinear interpolant is the segment a + s d. */
-        const double t = (double)j * step_t;
-        double a[3], d[3];
-        for (int k = 0; k < 3; ++k) {
-            a[k] = c00[k] + t * (c01[k] - c00[k]);
-            d[k] = c10[k] + t * (c11[k] - c10[k]) - a[k];
-        }
-        const double *x = sp->xyz + 3 * j * n_u;
-        for (size_t i = 0; i <= (size_t)p; ++i, x += 3) {
-            const double s = (double)i * step_s;
-            const double e[3] = {x[0] - (a[0] + s * d[0]), x[1] - (a[1] + s * d[1]),
-                                 x[2] - (a[2] + s * d[2])};
-            const double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-            worst = e2 > worst ? e2 : worst; /* fmax would be a libm call */
-        }
-    }
-    const double diag = box_diagonal(sp->box);
-    return diag > 0.0 ? sqrt(worst) / diag : 0.0;
+    return sp->flatness >= 0.0 ? sp->flatness : pc_bezier_net_flatness(sp->xyz, p, q, sp->box);
 }

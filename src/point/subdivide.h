@@ -22,18 +22,26 @@ typedef struct pc_subpatch {
     const double *cw;       /* homogeneous net, (p+1) x (q+1), u fastest */
     const double *xyz;      /* its Cartesian points, 3 each */
     double box[6];          /* box of xyz */
+    double flatness;        /* pc_subpatch_flatness, or < 0 until computed */
 } pc_subpatch;
 
 typedef enum pc_subdiv_action { PC_SUBDIV_DROP = 0, PC_SUBDIV_STOP = 1, PC_SUBDIV_SPLIT = 2 } pc_subdiv_action;
 
 typedef pc_subdiv_action (*pc_subdiv_fn)(void *user, const pc_subpatch *sp);
 
-/* Scratch memory for walks over patches of degree (p, q). */
+/* Doubles of scratch kept inside pc_subdiv_work: enough for degrees up
+ * to (4, 4) (32 KiB), so that a query on the usual surfaces allocates
+ * nothing; higher degrees allocate. */
+#define PC_SUBDIV_LOCAL 4096
+
+/* Scratch memory for walks over patches of degree (p, q). Holds a pointer
+ * into itself: not to be copied once initialised. */
 typedef struct pc_subdiv_work {
     int p, q;
     size_t net_len;  /* doubles per homogeneous net */
-    double *mem;
+    double *mem;     /* local or malloc'd */
     size_t n_slots;
+    double local[PC_SUBDIV_LOCAL];
 } pc_subdiv_work;
 
 projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, int p, int q);
@@ -53,7 +61,8 @@ double pc_box_distance_sq(const double box[6], pc_vec3 p);
 int pc_subpatch_may_hold_foot(const pc_subpatch *sp, int p, int q, int rational, pc_vec3 pt);
 
 /* Largest distance of a control point from the bilinear interpolant of the
- * four corners, relative to the net's box diagonal. */
+ * four corners, relative to the net's box diagonal (pc_bezier_net_flatness;
+ * for a whole patch kept by the patch grid). */
 double pc_subpatch_flatness(const pc_subpatch *sp, int p, int q);
 
 #endif /* PC_POINT_SUBDIVIDE_H */

@@ -32,7 +32,7 @@
 typedef struct closest_search {
     const projcurve_surface *s;
     pc_vec3 p;
-    pc_subdiv_work work;
+    pc_subdiv_work *work; /* not inside: an initialiser of this struct would zero its scratch */
     double best_d2;
     pc_surface_point best;
     const pc_bezier_patch *patch; /* the patch being walked */
@@ -137,9 +137,12 @@ static pc_subdiv_action decide_closest(void *user, const pc_subpatch *sp)
     const int flat = pc_subpatch_flatness(sp, n->deg_u, n->deg_v) <= CLOSEST_FLATNESS;
     /* Start the minimiser on flat sub-patches, and on the very first patch
      * (nearest to p) at once to get a bound that discards most others;
-     * not where the best point found so far already lies. */
-    const int holds_best = cs->best.u >= sp->u0 && cs->best.u <= sp->u1 &&
-                           cs->best.v >= sp->v0 && cs->best.v <= sp->v1;
+     * not where the best point found so far already lies inside (its basin
+     * is this sub-patch's). A best point on the sub-patch's edge does not
+     * count: it may be a minimum on a crease or in the neighbour, with the
+     * sub-patch's own minimum elsewhere. */
+    const int holds_best = cs->best.u > sp->u0 && cs->best.u < sp->u1 &&
+                           cs->best.v > sp->v0 && cs->best.v < sp->v1;
     if ((cs->best_d2 == INFINITY || flat || sp->depth >= PC_SUBDIV_MAX_DEPTH) && !holds_best) {
         double uv[2];
         nearest_control_param(sp, n->deg_u, n->deg_v, cs->p, uv);
@@ -153,25 +156,27 @@ static double visit_patch(void *user, size_t patch_index, double box_distance_sq
     closest_search *cs = user;
     (void)box_distance_sq;
     cs->patch = &cs->s->grid.patches[patch_index];
-    pc_subdiv_walk(&cs->work, &cs->s->grid.patches[patch_index], decide_closest, cs);
+    pc_subdiv_walk(cs->work, &cs->s->grid.patches[patch_index], decide_closest, cs);
     return cs->best_d2;
 }
 
 projcurve_status pc_surface_closest(projcurve_context *ctx, const projcurve_surface *s,
                                     pc_vec3 p, pc_surface_point *out)
 {
+    pc_subdiv_work work;
     closest_search cs = {.s = s,
                          .p = p,
+                         .work = &work,
                          .best_d2 = INFINITY,
                          .crease_u = s->grid.crease_u,
                          .crease_v = s->grid.crease_v};
     const pc_nurbs_surface *n = &s->nurbs;
-    const projcurve_status st = pc_subdiv_work_init(ctx, &cs.work, n->deg_u, n->deg_v);
+    const projcurve_status st = pc_subdiv_work_init(ctx, cs.work, n->deg_u, n->deg_v);
     if (st != PROJCURVE_OK)
         return st;
     cs.best.u = cs.best.v = NAN; /* nothing found yet */
     pc_bvh_query_nearest(&s->bvh, p, visit_patch, &cs);
-    pc_subdiv_work_free(&cs.work);
+    pc_subdiv_work_free(cs.work);
     if (isnan(cs.best.u)) { /* cannot happen: some patch holds the minimum */
         cs.best.u = s->nurbs.domain[0];
         cs.best.v = s->nurbs.domain[2];

@@ -152,40 +152,42 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
 {
     const double *dom = s->domain;
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
-    local_frame f;
-    f.hint_u = f.hint_v = 0;
-    frame_at(s, p, x, &f);
-    double d2 = vec3_dot(f.r, f.r);
+    /* The current frame and the trial one; an accepted step swaps them
+     * (copying a frame costs more than the step's bookkeeping). */
+    local_frame frames[2];
+    local_frame *f = &frames[0], *nf = &frames[1];
+    f->hint_u = f->hint_v = 0;
+    frame_at(s, p, x, f);
+    double d2 = vec3_dot(f->r, f->r);
     const double step_tol2 = (MIN_STEP_TOL * model_size) * (MIN_STEP_TOL * model_size);
     const double noise_step2 = (MIN_NOISE_STEP * model_size) * (MIN_NOISE_STEP * model_size);
     for (int it = 0; it < MIN_MAX_ITER; ++it) {
         /* Active set: a coordinate on its bound whose gradient pushes out. */
         const int free_dir[2] = {
-            movable[0] && !((x[0] <= dom[0] && f.g[0] > 0.0) || (x[0] >= dom[1] && f.g[0] < 0.0)),
-            movable[1] && !((x[1] <= dom[2] && f.g[1] > 0.0) || (x[1] >= dom[3] && f.g[1] < 0.0))};
+            movable[0] && !((x[0] <= dom[0] && f->g[0] > 0.0) || (x[0] >= dom[1] && f->g[0] < 0.0)),
+            movable[1] && !((x[1] <= dom[2] && f->g[1] > 0.0) || (x[1] >= dom[3] && f->g[1] < 0.0))};
         if (!free_dir[0] && !free_dir[1])
             break;
         double delta[2];
-        descent_direction(&f, free_dir, delta);
-        if (delta[0] * f.g[0] + delta[1] * f.g[1] > 0.0)
+        descent_direction(f, free_dir, delta);
+        if (delta[0] * f->g[0] + delta[1] * f->g[1] > 0.0)
             break; /* no descent left at rounding level */
         /* Predicted displacement of S for the full step: converged when it
          * is at rounding level of the model. */
-        const pc_vec3 moved = vec3_add(vec3_scale(f.d[1], delta[0]), vec3_scale(f.d[2], delta[1]));
+        const pc_vec3 moved = vec3_add(vec3_scale(f->d[1], delta[0]), vec3_scale(f->d[2], delta[1]));
         const double predicted2 = vec3_dot(moved, moved); /* squared: no sqrt latency */
         if (predicted2 <= step_tol2)
             break; /* the step would move S by rounding noise: not worth an evaluation */
         double alpha = 1.0;
         int accepted = 0;
-        local_frame nf; /* no initialiser: zeroing it costs more than a step */
-        nf.hint_u = f.hint_u;
-        nf.hint_v = f.hint_v;
+        nf->hint_u = f->hint_u;
+        nf->hint_v = f->hint_v;
         double nx[2];
         for (int k = 0; k < MIN_MAX_HALVINGS; ++k, alpha *= 0.5) {
             nx[0] = clampd(x[0] + alpha * delta[0], dom[0], dom[1]);
             nx[1] = clampd(x[1] + alpha * delta[1], dom[2], dom[3]);
-            frame_at(s, p, nx, &nf);
-            if (vec3_dot(nf.r, nf.r) <= d2) {
+            frame_at(s, p, nx, nf);
+            if (vec3_dot(nf->r, nf->r) <= d2) {
                 accepted = 1;
                 break;
             }
@@ -195,8 +197,10 @@ static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model
         const double previous = d2;
         x[0] = nx[0];
         x[1] = nx[1];
+        local_frame *const previous_frame = f;
         f = nf;
-        d2 = vec3_dot(f.r, f.r);
+        nf = previous_frame;
+        d2 = vec3_dot(f->r, f->r);
         /* At rounding level the gradient is noise and Newton's step with
          * it: stop once small steps no longer lower the distance. */
         if (predicted2 <= noise_step2 && previous - d2 <= MIN_NOISE_DECREASE * previous)
