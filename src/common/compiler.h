@@ -1,7 +1,8 @@
 /*
  * Compiler hints for the hot paths: forced inlining (so that a body written
  * once for a runtime degree is specialised for constant degrees), no
- * inlining (to keep large stack frames out of the callers), and clones of
+ * inlining (to keep large stack frames out of the callers), loop
+ * unrolling, and clones of
  * the hot kernels per instruction set. Each falls back to nothing on
  * compilers without it.
  */
@@ -9,11 +10,19 @@
 #define PC_COMMON_COMPILER_H
 
 #if defined(__GNUC__)
-#define PC_INLINE_ALWAYS inline __attribute__((always_inline))
-#define PC_NEVER_INLINE __attribute__((noinline))
+#define PC_ALWAYS_INLINE inline __attribute__((always_inline))
+#define PC_NOINLINE __attribute__((noinline))
 #else
-#define PC_INLINE_ALWAYS inline
-#define PC_NEVER_INLINE
+#define PC_ALWAYS_INLINE inline
+#define PC_NOINLINE
+#endif
+
+/* Full unrolling of the short loops of constant trip count (GCC; clang
+ * unrolls them unasked). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define PC_UNROLL _Pragma("GCC unroll 8")
+#else
+#define PC_UNROLL
 #endif
 
 /* The hot numeric kernels are compiled twice, for baseline x86-64 and with

@@ -37,7 +37,7 @@
  * linear factors with non-negative coefficients for x0, x1 in [0, 1], so
  * every entry is a sum of non-negative terms and each column sums to 1.
  */
-static PC_INLINE_ALWAYS void restriction_matrix(int p, double x0, double x1, double *A)
+static PC_ALWAYS_INLINE void restriction_matrix(int p, double x0, double x1, double *A)
 {
     const size_t order = (size_t)(p + 1);
     for (int a = 0; a <= p; ++a) {
@@ -58,7 +58,7 @@ static PC_INLINE_ALWAYS void restriction_matrix(int p, double x0, double x1, dou
 
 /* Binomial coefficients C(n, 0..n) by Pascal's rule: additions only, exact
  * for n <= 56, and constants once n is. */
-static PC_INLINE_ALWAYS void binomial_row(int n, double *row)
+static PC_ALWAYS_INLINE void binomial_row(int n, double *row)
 {
     row[0] = 1.0;
     for (int m = 1; m <= n; ++m) {
@@ -71,7 +71,7 @@ static PC_INLINE_ALWAYS void binomial_row(int n, double *row)
 /* The composition for the patch's degrees p, q (constants in the
  * specialised callers) with caller-provided scratch: au (p+1)^2, av (q+1)^2
  * and net 4 (p+1)(q+1) doubles. */
-static PC_INLINE_ALWAYS void compose_with(const pc_bezier_patch *patch, const int p, const int q,
+static PC_ALWAYS_INLINE void compose_with(const pc_bezier_patch *patch, const int p, const int q,
                                           const double uv0[2], const double uv1[2],
                                           double *cw_out, double *au, double *av, double *net)
 {
@@ -138,7 +138,7 @@ static PC_INLINE_ALWAYS void compose_with(const pc_bezier_patch *patch, const in
 /* The composition at constant degrees (P, Q): the loops unroll and the
  * binomial weights fold into constants. */
 #define PC_COMPOSE_FIXED(P, Q)                                                               \
-    static PC_NEVER_INLINE PC_HOT_CLONES void compose_##P##Q(const pc_bezier_patch *patch,               \
+    static PC_NOINLINE PC_HOT_CLONES void compose_##P##Q(const pc_bezier_patch *patch,               \
                                                const double uv0[2], const double uv1[2],   \
                                                double *cw_out)                              \
     {                                                                                        \
@@ -149,7 +149,7 @@ PC_COMPOSE_FIXED(3, 3)
 PC_COMPOSE_FIXED(5, 5)
 
 /* Patches of high degree: buffers for the largest order. */
-static PC_NEVER_INLINE void compose_large(const pc_bezier_patch *patch, const double uv0[2],
+static PC_NOINLINE void compose_large(const pc_bezier_patch *patch, const double uv0[2],
                                           const double uv1[2], double *cw_out)
 {
     double au[PC_COMPOSE_MAX_ORDER * PC_COMPOSE_MAX_ORDER];
@@ -159,7 +159,7 @@ static PC_NEVER_INLINE void compose_large(const pc_bezier_patch *patch, const do
 }
 
 /* Other small degrees: buffers of PC_COMPOSE_SMALL_ORDER. */
-static PC_NEVER_INLINE void compose_small(const pc_bezier_patch *patch, const double uv0[2],
+static PC_NOINLINE void compose_small(const pc_bezier_patch *patch, const double uv0[2],
                                           const double uv1[2], double *cw_out)
 {
     double au[PC_COMPOSE_SMALL_ORDER * PC_COMPOSE_SMALL_ORDER];

@@ -37,11 +37,6 @@
 #define PC_POLY_SMALL_ORDER 8
 #define PC_POLY_SMALL_COEFS (PC_COMPOSE_POLY_MAX_DEGREE * (PC_POLY_SMALL_ORDER - 1) + 1)
 
-#if defined(__GNUC__)
-#define PC_POLY_NOINLINE __attribute__((noinline))
-#else
-#define PC_POLY_NOINLINE
-#endif
 
 /* Scratch tables, `stride` doubles per row: pow_x and pow_1x hold x^a and
  * (1 - x)^a for a = 0..max(p, q) (degree d a), basis_u the B_i^p(x(s)) and
@@ -77,7 +72,7 @@ static const double *binomials(const poly_scratch *w, int n)
 
 /* Bernstein product of scalar polynomials a (degree m) and b (degree n)
  * into out (degree m + n; must not alias a or b). */
-static PC_INLINE_ALWAYS void bernstein_product(const poly_scratch *w, int m, const double *a, int n,
+static PC_ALWAYS_INLINE void bernstein_product(const poly_scratch *w, int m, const double *a, int n,
                               const double *b, double *out)
 {
     const double *cm = binomials(w, m), *cn = binomials(w, n), *cmn = binomials(w, m + n);
@@ -97,7 +92,7 @@ static PC_INLINE_ALWAYS void bernstein_product(const poly_scratch *w, int m, con
 
 /* Bernstein coefficients of B_i^deg(x(s)), i = 0..deg, each of degree
  * d deg, into basis (row i), where x(s) has the d + 1 coefficients x. */
-static PC_INLINE_ALWAYS void basis_of(int d, const double *x, int deg, poly_scratch *w, double *basis)
+static PC_ALWAYS_INLINE void basis_of(int d, const double *x, int deg, poly_scratch *w, double *basis)
 {
     const size_t st = w->stride;
     double one_minus[PC_COMPOSE_POLY_MAX_DEGREE + 1];
@@ -122,7 +117,7 @@ static PC_INLINE_ALWAYS void basis_of(int d, const double *x, int deg, poly_scra
 
 /* Cloned per instruction set: with AVX each homogeneous point is one
  * register, and the products below are one multiply-add per term. */
-static PC_NEVER_INLINE PC_HOT_CLONES void compose_poly_with(const pc_bezier_patch *patch, int d,
+static PC_NOINLINE PC_HOT_CLONES void compose_poly_with(const pc_bezier_patch *patch, int d,
                                                             const double *uv_ctrl, double *cw_out,
                                                             poly_scratch *w)
 {
@@ -177,7 +172,7 @@ static PC_NEVER_INLINE PC_HOT_CLONES void compose_poly_with(const pc_bezier_patc
 }
 
 /* Patches of high degree: tables for the largest sizes. */
-static PC_POLY_NOINLINE void compose_poly_large(const pc_bezier_patch *patch, int d,
+static PC_NOINLINE void compose_poly_large(const pc_bezier_patch *patch, int d,
                                                 const double *uv_ctrl, double *cw_out)
 {
     double pow_x[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];

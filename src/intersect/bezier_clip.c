@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "common/compiler.h"
 #include "projcurve.h"
 
 /* A clip that keeps more than this fraction of a side is no progress
@@ -20,11 +21,6 @@
 /* The clipping round is compiled once per common degree pair (constant
  * trip counts let the compiler unroll the short loops, which otherwise
  * cost more than the arithmetic) and once generically. */
-#if defined(__GNUC__)
-#define PC_ALWAYS_INLINE __attribute__((always_inline)) inline
-#else
-#define PC_ALWAYS_INLINE inline
-#endif
 
 static inline double min2(double a, double b) { return a < b ? a : b; }
 static inline double max2(double a, double b) { return a > b ? a : b; }

@@ -2,6 +2,7 @@
 
 #include <math.h>
 
+#include "common/compiler.h"
 #include "common/vec.h"
 #include "projcurve.h"
 
@@ -26,11 +27,6 @@
 
 /* The evaluation is compiled once per common degree pair (constant trip
  * counts unroll the short loops) and once generically. */
-#if defined(__GNUC__)
-#define PC_ALWAYS_INLINE __attribute__((always_inline)) inline
-#else
-#define PC_ALWAYS_INLINE inline
-#endif
 
 /* Bernstein basis of degree n at x and its derivative (Piegl & Tiller's
  * triangle for degree n - 1, then one more step; B'_i = n (B_{i-1} - B_i)

@@ -7,21 +7,8 @@
 #ifndef PC_NURBS_BASIS_IMPL_H
 #define PC_NURBS_BASIS_IMPL_H
 
+#include "common/compiler.h"
 #include "nurbs/nurbs.h"
-
-#if defined(__GNUC__)
-#define PC_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define PC_ALWAYS_INLINE inline
-#endif
-
-/* GCC leaves the triangular loops of a constant small degree rolled at -O3
- * unless asked; other compilers get no hint (and no unknown-pragma warning). */
-#if defined(__GNUC__) && !defined(__clang__)
-#define PC_UNROLL _Pragma("GCC unroll 8")
-#else
-#define PC_UNROLL
-#endif
 
 /* B-spline basis functions and their derivatives.
  *

@@ -18,18 +18,7 @@
 #define PC_SMALL_INVERSES (PC_SMALL_DEGREE * PC_SMALL_ORDER / 2)
 
 /* The hot evaluators are compiled twice, for baseline x86-64 and with FMA
- * (which implies AVX: one 4-wide multiply-add per homogeneous point and
- * basis function instead of four SSE2 operations), the loader picking the
- * clone the CPU runs (GNU ifunc, dispatched on the CPU's feature bits). Other
- * targets and compilers get one version. */
-#if defined(__x86_64__) && defined(__ELF__) && defined(__has_attribute)
-#if __has_attribute(target_clones)
-#define PC_HOT_CLONES __attribute__((target_clones("fma", "default")))
-#endif
-#endif
-#ifndef PC_HOT_CLONES
-#define PC_HOT_CLONES
-#endif
+ * (PC_HOT_CLONES, common/compiler.h). */
 
 /* d[k][j] = k-th derivative of the j-th nonzero function (as pc_basis). */
 typedef struct pc_small_basis {

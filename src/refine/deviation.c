@@ -61,7 +61,7 @@ static pc_vec3 piece_point(int n, const double *cw, double s)
 
 /* C, C', C'' at s for the degree n (a constant in the specialised callers):
  * de Casteljau down to the last three points, then their quadratic. */
-static PC_INLINE_ALWAYS void piece_eval(const int n, const double *cw, double s, pc_vec3 out[3])
+static PC_ALWAYS_INLINE void piece_eval(const int n, const double *cw, double s, pc_vec3 out[3])
 {
     double work[PC_PIECE_MAX_DEGREE + 1][4];
     for (int i = 0; i <= n; ++i)
@@ -97,7 +97,7 @@ static PC_INLINE_ALWAYS void piece_eval(const int n, const double *cw, double s,
 /* The usual degrees, for constant-degree loops: straight pieces (p + q) on
  * bicubic and biquintic patches, and cubic pcurves on them, 3 (p + q). */
 #define PC_PIECE_EVAL_FIXED(N)                                                               \
-    static PC_NEVER_INLINE PC_HOT_CLONES void piece_eval_##N(const double *cw, double s,    \
+    static PC_NOINLINE PC_HOT_CLONES void piece_eval_##N(const double *cw, double s,    \
                                                              pc_vec3 out[3])                 \
     {                                                                                        \
         piece_eval(N, cw, s, out);                                                           \
