@@ -138,9 +138,9 @@ static PC_ALWAYS_INLINE void compose_with(const pc_bezier_patch *patch, const in
 /* The composition at constant degrees (P, Q): the loops unroll and the
  * binomial weights fold into constants. */
 #define PC_COMPOSE_FIXED(P, Q)                                                               \
-    static PC_NOINLINE PC_HOT_CLONES void compose_##P##Q(const pc_bezier_patch *patch,               \
-                                               const double uv0[2], const double uv1[2],   \
-                                               double *cw_out)                              \
+    static PC_HOT_CLONES void compose_##P##Q(const pc_bezier_patch *patch,                   \
+                                             const double uv0[2], const double uv1[2],       \
+                                             double *cw_out)                                 \
     {                                                                                        \
         double au[(P + 1) * (P + 1)], av[(Q + 1) * (Q + 1)], net[4 * (P + 1) * (Q + 1)];     \
         compose_with(patch, P, Q, uv0, uv1, cw_out, au, av, net);                            \

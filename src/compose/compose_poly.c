@@ -117,9 +117,9 @@ static PC_ALWAYS_INLINE void basis_of(int d, const double *x, int deg, poly_scra
 
 /* Cloned per instruction set: with AVX each homogeneous point is one
  * register, and the products below are one multiply-add per term. */
-static PC_NOINLINE PC_HOT_CLONES void compose_poly_with(const pc_bezier_patch *patch, int d,
-                                                            const double *uv_ctrl, double *cw_out,
-                                                            poly_scratch *w)
+static PC_HOT_CLONES void compose_poly_with(const pc_bezier_patch *patch, int d,
+                                            const double *uv_ctrl, double *cw_out,
+                                            poly_scratch *w)
 {
     const int p = patch->deg_u, q = patch->deg_v, nu = d * p, nv = d * q, n = nu + nv;
     const size_t st = w->stride, pu = (size_t)(p + 1);

@@ -97,8 +97,7 @@ static PC_ALWAYS_INLINE void piece_eval(const int n, const double *cw, double s,
 /* The usual degrees, for constant-degree loops: straight pieces (p + q) on
  * bicubic and biquintic patches, and cubic pcurves on them, 3 (p + q). */
 #define PC_PIECE_EVAL_FIXED(N)                                                               \
-    static PC_NOINLINE PC_HOT_CLONES void piece_eval_##N(const double *cw, double s,    \
-                                                             pc_vec3 out[3])                 \
+    static PC_HOT_CLONES void piece_eval_##N(const double *cw, double s, pc_vec3 out[3])     \
     {                                                                                        \
         piece_eval(N, cw, s, out);                                                           \
     }
