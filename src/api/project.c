@@ -52,6 +52,19 @@ projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_opti
     return PROJCURVE_OK;
 }
 
+projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_options *opts,
+                                       double model_size, struct projcurve_options *out)
+{
+    projcurve_status st = pc_options_resolve(ctx, opts, out);
+    double eps_d = 0.0;
+    if (st == PROJCURVE_OK)
+        st = pc_options_distance_tolerance(ctx, out, model_size > 0.0 ? model_size : 1.0,
+                                           &eps_d);
+    if (st == PROJCURVE_OK)
+        out->tol_distance = eps_d;
+    return st;
+}
+
 /* Unit direction from dir; statuses NOT_FINITE, ZERO_DIRECTION. Scaling by
  * the largest component first keeps tiny and huge vectors normalisable. */
 static projcurve_status unit_direction(projcurve_context *ctx, const double dir[3],
@@ -83,14 +96,9 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     struct projcurve_options o;
     projcurve_status st = unit_direction(ctx, dir, &unit);
     if (st == PROJCURVE_OK)
-        st = pc_options_resolve(ctx, opts, &o);
-    double eps_d = 0.0;
-    if (st == PROJCURVE_OK)
-        st = pc_options_distance_tolerance(ctx, &o, surface->size > 0.0 ? surface->size : 1.0,
-                                           &eps_d);
+        st = pc_projection_options(ctx, opts, surface->size, &o);
     if (st != PROJCURVE_OK)
         return st;
-    o.tol_distance = eps_d; /* resolved once, for the refinement too */
 
     pc_projector proj;
     pc_directional_data data;
@@ -112,7 +120,7 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
         const int need_length = o.param_step == 0.0 || o.jump_detection;
         const pc_trace_config config = {
             need_length ? pc_directional_length_estimate(&finder) : 0.0, proj.model_size};
-        r->stats.tol_distance = eps_d;
+        r->stats.tol_distance = o.tol_distance;
         st = pc_trace_branches(ctx, &proj, &o, &finder.base, &config, r);
     }
     /* tolerance control and composition also on a partial result */

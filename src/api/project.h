@@ -13,4 +13,10 @@
 projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_options *opts,
                                     struct projcurve_options *out);
 
+/* pc_options_resolve, then eps_D for a model of size model_size (0 counts
+ * as 1) by pc_options_distance_tolerance, written into out->tol_distance:
+ * every later stage reads the one resolved value. Statuses: those two's. */
+projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_options *opts,
+                                       double model_size, struct projcurve_options *out);
+
 #endif /* PC_API_PROJECT_H */

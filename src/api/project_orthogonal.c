@@ -35,14 +35,9 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     PC_REQUIRE(ctx, curve, "curve");
     PC_REQUIRE(ctx, out, "out");
     struct projcurve_options o;
-    double eps_d = 0.0;
-    projcurve_status st = pc_options_resolve(ctx, opts, &o);
-    if (st == PROJCURVE_OK)
-        st = pc_options_distance_tolerance(ctx, &o, surface->size > 0.0 ? surface->size : 1.0,
-                                           &eps_d);
+    const projcurve_status st = pc_projection_options(ctx, opts, surface->size, &o);
     if (st != PROJCURVE_OK)
         return st;
-    o.tol_distance = eps_d; /* resolved once, for the refinement too */
 
     pc_ortho_cache cache;
     pc_projector proj;
@@ -65,7 +60,7 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     if (status == PROJCURVE_OK) {
         pc_ortho_drop_duplicates(&proj, r);
         name_singular_ends(r);
-        r->stats.tol_distance = eps_d;
+        r->stats.tol_distance = o.tol_distance;
         if (o.compose)
             status = pc_refine_and_compose(ctx, &proj, &o, r);
     }
@@ -97,12 +92,10 @@ projcurve_status projcurve_project_orthogonal_implicit(
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "model size must be positive (got %.17g)", model_size);
     struct projcurve_options o;
-    double eps_d = 0.0;
-    projcurve_status st = pc_options_resolve(ctx, opts, &o);
-    if (st == PROJCURVE_OK)
-        st = pc_options_distance_tolerance(ctx, &o, model_size, &eps_d);
+    const projcurve_status st = pc_projection_options(ctx, opts, model_size, &o);
     if (st != PROJCURVE_OK)
         return st;
+    const double eps_d = o.tol_distance;
 
     pc_implicit imp;
     imp.fn = fn;
