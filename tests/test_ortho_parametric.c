@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "on_surface.h"
 #include "shapes.h"
 
 #ifndef M_PI
@@ -140,22 +141,9 @@ static size_t sample_pieces(const projcurve_result *r, size_t branch, double *ou
         double ctrl[3 * PROJCURVE_MAX_PIECE_POINTS], w[PROJCURVE_MAX_PIECE_POINTS];
         CHECK_OK(projcurve_result_piece(NULL, r, branch, k, &deg, ctrl, w, ranges + 2 * k,
                                         NULL));
-        for (int j = 0; j < PIECE_SAMPLES; ++j) {
-            const double s = j / (double)(PIECE_SAMPLES - 1);
-            double h[PROJCURVE_MAX_PIECE_POINTS][4];
-            for (int i = 0; i <= deg; ++i) {
-                for (int c = 0; c < 3; ++c)
-                    h[i][c] = ctrl[3 * i + c] * w[i];
-                h[i][3] = w[i];
-            }
-            for (int lvl = 1; lvl <= deg; ++lvl)
-                for (int i = 0; i <= deg - lvl; ++i)
-                    for (int c = 0; c < 4; ++c)
-                        h[i][c] = (1 - s) * h[i][c] + s * h[i + 1][c];
-            double *o = out + 3 * (k * PIECE_SAMPLES + (size_t)j);
-            for (int c = 0; c < 3; ++c)
-                o[c] = h[0][c] / h[0][3];
-        }
+        for (int j = 0; j < PIECE_SAMPLES; ++j)
+            pc_test_piece_point(deg, ctrl, w, j / (double)(PIECE_SAMPLES - 1),
+                                out + 3 * (k * PIECE_SAMPLES + (size_t)j));
     }
     return n_pieces;
 }

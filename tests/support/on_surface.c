@@ -24,6 +24,21 @@ static void de_casteljau(const double *pts, int n, int dim, double s, double *ou
     memcpy(out, work, (size_t)dim * sizeof *out);
 }
 
+void pc_test_piece_point(int degree, const double *ctrl, const double *weights, double s,
+                         double out[3])
+{
+    double hw[4 * (2 * PROJCURVE_MAX_DEGREE + 1)], h[4];
+    for (int i = 0; i <= degree; ++i) {
+        const double w = weights != NULL ? weights[i] : 1.0;
+        for (int c = 0; c < 3; ++c)
+            hw[4 * i + c] = ctrl[3 * i + c] * w;
+        hw[4 * i + 3] = w;
+    }
+    de_casteljau(hw, degree, 4, s, h);
+    for (int c = 0; c < 3; ++c)
+        out[c] = h[c] / h[3];
+}
+
 void pc_on_surface_measure(const projcurve_result *r, const projcurve_surface *s, int samples,
                            pc_on_surface_report *out)
 {

@@ -44,4 +44,10 @@ void pc_on_surface_measure(const projcurve_result *r, const projcurve_surface *s
 double pc_on_surface_check(const char *name, const projcurve_result *r,
                            const projcurve_surface *s, int pcurve_degree);
 
+/* A piece as projcurve_result_piece gives it (degree, Cartesian control
+ * points, weights or NULL for a polynomial piece) at s in [0, 1]: de
+ * Casteljau in homogeneous coordinates. */
+void pc_test_piece_point(int degree, const double *ctrl, const double *weights, double s,
+                         double out[3]);
+
 #endif /* PC_TEST_ON_SURFACE_H */
