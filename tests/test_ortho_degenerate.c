@@ -21,22 +21,6 @@
 #include "on_surface.h"
 #include "shapes.h"
 
-/* P(t) = p0 + t d. */
-typedef struct line {
-    double p0[3], d[3];
-} line;
-
-static int line_fn(void *user, double t, double out[9])
-{
-    const line *l = user;
-    for (int i = 0; i < 3; ++i) {
-        out[i] = l->p0[i] + t * l->d[i];
-        out[3 + i] = l->d[i];
-        out[6 + i] = 0.0;
-    }
-    return 0;
-}
-
 /* The exact foot point of family `which` of P on the shape; 0 where that
  * family has no foot point. */
 typedef enum shape_kind { SPHERE, CONE } shape_kind;
@@ -122,7 +106,7 @@ typedef struct degenerate_case {
     const char *name;
     shape_kind kind;
     double size;        /* sphere radius, cone height */
-    line l;
+    pc_shape_line l;
     double t0, t1;
     size_t n_branches;
     expected_branch branches[4];   /* in increasing (t0, t1) order */
@@ -165,7 +149,8 @@ static void run_case(const degenerate_case *c)
     projcurve_surface *surf = pc_shape_surface_create(&data);
     pc_shape_surface_free(&data);
     projcurve_curve *curve = NULL;
-    CHECK_OK(projcurve_curve_create_callback(NULL, line_fn, (void *)&c->l, c->t0, c->t1, &curve));
+    CHECK_OK(projcurve_curve_create_callback(NULL, pc_shape_line_fn, (void *)&c->l, c->t0, c->t1,
+                                             &curve));
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, eps_d));
@@ -204,12 +189,12 @@ static void run_case(const degenerate_case *c)
         for (size_t i = 0; i < got; ++i) {
             double x[3], pv[9], q[3];
             projcurve_surface_eval(NULL, surf, pts[3 * i + 1], pts[3 * i + 2], 0, x);
-            line_fn((void *)&c->l, pts[3 * i], pv);
+            pc_shape_line_fn((void *)&c->l, pts[3 * i], pv);
             if (fam < 0) {
                 const double *m = pts + 3 * (got / 2);
                 double xm[3], pm[9], q0[3], q1[3];
                 projcurve_surface_eval(NULL, surf, m[1], m[2], 0, xm);
-                line_fn((void *)&c->l, m[0], pm);
+                pc_shape_line_fn((void *)&c->l, m[0], pm);
                 const double d0 = exact_foot(c->kind, c->size, 0, pm, q0) ? dist3(xm, q0) : INFINITY;
                 const double d1 = exact_foot(c->kind, c->size, 1, pm, q1) ? dist3(xm, q1) : INFINITY;
                 fam = d0 <= d1 ? 0 : 1;
@@ -223,7 +208,8 @@ static void run_case(const degenerate_case *c)
         /* Hausdorff both ways against the exact curve over the branch's range */
         for (size_t i = 0; i <= DENSE; ++i) {
             double pv[9];
-            line_fn((void *)&c->l, range[0] + (range[1] - range[0]) * (double)i / DENSE, pv);
+            pc_shape_line_fn((void *)&c->l, range[0] + (range[1] - range[0]) * (double)i / DENSE,
+                             pv);
             if (!exact_foot(c->kind, c->size, fam, pv, exact + 3 * i))
                 memset(exact + 3 * i, 0, 3 * sizeof *exact);   /* the apex */
         }

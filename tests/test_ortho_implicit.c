@@ -302,20 +302,6 @@ static void test_derivatives(void)
 /* A branch ends at a centre of curvature: a circle through the centre of a
  * sphere (umbilic: det K touches 0 without changing sign) and a line
  * through the axis of a cylinder (det K changes sign). */
-typedef struct line {
-    double p0[3], d[3];
-} line;
-
-static int line_fn(void *user, double t, double out[9])
-{
-    const line *l = user;
-    for (int i = 0; i < 3; ++i) {
-        out[i] = l->p0[i] + t * l->d[i];
-        out[3 + i] = l->d[i];
-        out[6 + i] = 0.0;
-    }
-    return 0;
-}
 
 static void check_ends_at(const char *what, projcurve_curve *curve, shape *s, double t_centre)
 {
@@ -344,8 +330,8 @@ static void test_centres(void)
     projcurve_curve_destroy(curve);
 
     shape cyl = {CYLINDER, 5.0, 0.0};
-    line l = {{-2, -1, 0}, {1, 0.5, 0.3}};               /* meets the z axis at t = 2 */
-    CHECK_OK(projcurve_curve_create_callback(NULL, line_fn, &l, 0.0, 4.0, &curve));
+    pc_shape_line l = {{-2, -1, 0}, {1, 0.5, 0.3}}; /* meets the z axis at t = 2 */
+    CHECK_OK(projcurve_curve_create_callback(NULL, pc_shape_line_fn, &l, 0.0, 4.0, &curve));
     check_ends_at("cylinder, line via axis", curve, &cyl, 2.0);
     projcurve_curve_destroy(curve);
 }
@@ -381,9 +367,9 @@ static void test_bad_input(void)
 {
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    line l = {{0, 0, 1}, {1, 0, 0}};
+    pc_shape_line l = {{0, 0, 1}, {1, 0, 0}};
     projcurve_curve *curve = NULL;
-    CHECK_OK(projcurve_curve_create_callback(NULL, line_fn, &l, 0.0, 1.0, &curve));
+    CHECK_OK(projcurve_curve_create_callback(NULL, pc_shape_line_fn, &l, 0.0, 1.0, &curve));
     shape plane = {PLANE, 0, 0};
     projcurve_result *r = NULL;
     CHECK_STATUS(projcurve_project_orthogonal_implicit(ctx, NULL, &plane, 1.0, curve, NULL, &r),
@@ -519,10 +505,10 @@ static void test_gradient_vanishing(void)
 {
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    line into = {{1.2, 0, 1}, {-1, 0, -1}}, from = {{-1, 0, 0}, {1, 0, 0}};
+    pc_shape_line into = {{1.2, 0, 1}, {-1, 0, -1}}, from = {{-1, 0, 0}, {1, 0, 0}};
     projcurve_curve *c1 = NULL, *c2 = NULL;
-    CHECK_OK(projcurve_curve_create_callback(NULL, line_fn, &into, 0.0, 2.0, &c1));
-    CHECK_OK(projcurve_curve_create_callback(NULL, line_fn, &from, 0.0, 2.0, &c2));
+    CHECK_OK(projcurve_curve_create_callback(NULL, pc_shape_line_fn, &into, 0.0, 2.0, &c1));
+    CHECK_OK(projcurve_curve_create_callback(NULL, pc_shape_line_fn, &from, 0.0, 2.0, &c2));
     projcurve_result *r = NULL;
     CHECK_OK(projcurve_project_orthogonal_implicit(ctx, cone_fn, NULL, 2.0, c1, NULL, &r));
     if (r) {

@@ -220,3 +220,14 @@ pc_shape_curve pc_shape_random_curve(unsigned long long seed, int degree, size_t
     pc_shape_uniform_knots(degree, n_ctrl, c.knots);
     return c;
 }
+
+int pc_shape_line_fn(void *user, double t, double out[9])
+{
+    const pc_shape_line *l = user;
+    for (int i = 0; i < 3; ++i) {
+        out[i] = l->p0[i] + t * l->d[i];
+        out[3 + i] = l->d[i];
+        out[6 + i] = 0.0;
+    }
+    return 0;
+}

@@ -36,6 +36,13 @@ void pc_shape_curve_free(pc_shape_curve *c);
 projcurve_surface *pc_shape_surface_create(const pc_shape_surface *s);
 projcurve_curve *pc_shape_curve_create(const pc_shape_curve *c);
 
+/* The line P(t) = p0 + t d, for projcurve_curve_create_callback with
+ * pc_shape_line_fn (user: a pc_shape_line) and as its own closed form. */
+typedef struct pc_shape_line {
+    double p0[3], d[3];
+} pc_shape_line;
+int pc_shape_line_fn(void *user, double t, double out[9]);
+
 /* Full circle of the given radius around centre in the plane z = centre[2]:
  * 9-point rational quadratic, domain [0, 1]. */
 pc_shape_curve pc_shape_circle(const double centre[3], double radius);
