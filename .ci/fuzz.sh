@@ -3,7 +3,7 @@
 #   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 60; PROJCURVE_FUZZ_SECONDS also works)
 #   PROJCURVE_FUZZ_KEEP_CORPUS=1 keeps the corpus of earlier runs.
 # Builds the targets of tests/fuzz with clang (-DPROJCURVE_FUZZ=ON) in
-# build-fuzz/, seeds each from ../shared (and tests/fuzz/seeds), and stops at the first crash,
+# build-fuzz/, seeds each from tests/data (and tests/fuzz/seeds), and stops at the first crash,
 # leak or hang (the reproducer is left in build-fuzz/artifacts/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,12 +31,12 @@ cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebI
       -DPROJCURVE_FUZZ=ON -DPROJCURVE_BUILD_BENCH=OFF -DPROJCURVE_BUILD_CLI=OFF
 cmake --build build-fuzz -j2 --target fuzz_iges fuzz_step fuzz_gismo fuzz_teapot
 
-shared=../shared
+test_data=tests/data
 declare -A seeds=(
-    [iges]="$shared/cases"
-    [step]="$shared/data/real/test-joinsurf_01.stp tests/fuzz/seeds/step_complex_rational.stp"
-    [gismo]="$shared/data/real/horn.xml $shared/data/real/shroud_kaplan.xml"
-    [teapot]="$shared/data/real/teapot_newell_spd.txt"
+    [iges]="$test_data/cases"
+    [step]="$test_data/real/test-joinsurf_01.stp tests/fuzz/seeds/step_complex_rational.stp"
+    [gismo]="$test_data/real/horn.xml $test_data/real/shroud_kaplan.xml"
+    [teapot]="$test_data/real/teapot_newell_spd.txt"
 )
 mkdir -p build-fuzz/artifacts
 for reader in iges step gismo teapot; do

@@ -18,7 +18,7 @@
 typedef struct pcb_args {
     const char *json_path;   /* NULL: no JSON */
     const char *svg_path;    /* NULL: no plot */
-    const char *shared_dir;  /* the shared data directory (cases/, data/real/) */
+    const char *data_dir;  /* the shared data directory (cases/, real/) */
     int quick;               /* tiny sizes, few repetitions */
 } pcb_args;
 

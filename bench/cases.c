@@ -15,7 +15,7 @@
  * over it. */
 typedef struct real_case {
     const char *name;
-    const char *file;  /* under data/real/ */
+    const char *file;  /* under real/ */
     int orthogonal;
     int small;         /* part of the quick subset */
 } real_case;
@@ -147,7 +147,7 @@ static void define_real_curve(pcb_case *c, int orthogonal)
     c->tol_dist = REAL_TOL_DIST_REL * size;
 }
 
-static void load_real_case(const char *shared_dir, const real_case *rc, pcb_case *c)
+static void load_real_case(const char *data_dir, const real_case *rc, pcb_case *c)
 {
     memset(c, 0, sizeof *c);
     snprintf(c->name, sizeof c->name, "%s", rc->name);
@@ -155,16 +155,16 @@ static void load_real_case(const char *shared_dir, const real_case *rc, pcb_case
     c->tol_angle_deg = REAL_TOL_ANGLE_DEG;
     c->expected_branches = -1;
     char path[1024];
-    snprintf(path, sizeof path, "%s/data/real/%s", shared_dir, rc->file);
+    snprintf(path, sizeof path, "%s/real/%s", data_dir, rc->file);
     load_model(c, path, 0);
     if (!c->error[0])
         define_real_curve(c, rc->orthogonal);
 }
 
-int pcb_cases_load(const char *shared_dir, pcb_real_cases real, pcb_case_list *list)
+int pcb_cases_load(const char *data_dir, pcb_real_cases real, pcb_case_list *list)
 {
     char path[1024];
-    snprintf(path, sizeof path, "%s/cases/MANIFEST.tsv", shared_dir);
+    snprintf(path, sizeof path, "%s/cases/MANIFEST.tsv", data_dir);
     FILE *f = fopen(path, "r");
     if (!f) {
         fprintf(stderr, "cannot read %s\n", path);
@@ -185,13 +185,13 @@ int pcb_cases_load(const char *shared_dir, pcb_real_cases real, pcb_case_list *l
         if (parse_manifest_line(line, c) != 0)
             continue;
         ++list->n;
-        snprintf(path, sizeof path, "%s/cases/%s.igs", shared_dir, c->name);
+        snprintf(path, sizeof path, "%s/cases/%s.igs", data_dir, c->name);
         load_model(c, path, 1);
     }
     fclose(f);
     for (size_t i = 0; i < N_REAL_CASES; ++i)
         if (real == PCB_REAL_ALL || (real == PCB_REAL_SMALL && real_cases[i].small))
-            load_real_case(shared_dir, &real_cases[i], &list->items[list->n++]);
+            load_real_case(data_dir, &real_cases[i], &list->items[list->n++]);
     return 0;
 }
 

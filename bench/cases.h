@@ -1,7 +1,7 @@
 /*
- * The benchmark cases: every row of ../shared/cases/MANIFEST.tsv (IGES
+ * The benchmark cases: every row of tests/data/cases/MANIFEST.tsv (IGES
  * surface + curve + mode + tolerances + expected branch count), and, on
- * request, freeform surfaces from ../shared/data/real/ with curves defined
+ * request, freeform surfaces from tests/data/real/ with curves defined
  * here from the surface itself (so that the projection is known to exist).
  */
 #ifndef PCB_CASES_H
@@ -46,7 +46,7 @@ typedef enum pcb_real_cases {
 /* Loads every manifest case and the chosen real-surface cases.
  * A case that cannot be read is kept with its error set. Returns 0, or -1
  * when the manifest cannot be read (a message is printed). */
-int pcb_cases_load(const char *shared_dir, pcb_real_cases real, pcb_case_list *list);
+int pcb_cases_load(const char *data_dir, pcb_real_cases real, pcb_case_list *list);
 void pcb_cases_free(pcb_case_list *list);
 
 /* Options for a case: its tolerances, defaults otherwise. */

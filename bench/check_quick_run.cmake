@@ -2,17 +2,17 @@
 # exit code 0, JSON that parses and holds the documented members as numbers,
 # and an SVG document that passes `xmllint --noout` where xmllint is
 # installed. Times are never checked.
-#   cmake -DBENCH=... -DBENCH_COMMAND=... -DOUT_DIR=... -DSHARED_DIR=...
+#   cmake -DBENCH=... -DBENCH_COMMAND=... -DOUT_DIR=... -DTEST_DATA_DIR=...
 #         [-DHAVE_OCCT=ON] -P check_quick_run.cmake
 # HAVE_OCCT says the bench was built with Open CASCADE: then every occt_*
 # member must be a number (null would mean Open CASCADE's side failed).
-# cases and occt need the shared cases; without them there is nothing to run.
-if(DEFINED ENV{PROJCURVE_SHARED_DIR})
-  set(SHARED_DIR $ENV{PROJCURVE_SHARED_DIR})
+# cases and occt need the test cases of tests/data, which are part of the
+# repository: their absence is a failure.
+if(DEFINED ENV{PROJCURVE_TEST_DATA_DIR})
+  set(TEST_DATA_DIR $ENV{PROJCURVE_TEST_DATA_DIR})
 endif()
-if(BENCH_COMMAND MATCHES "^(cases|occt)$" AND NOT EXISTS ${SHARED_DIR}/cases/MANIFEST.tsv)
-  message(STATUS "BENCH-SKIPPED: no ${SHARED_DIR}/cases/MANIFEST.tsv")
-  return()
+if(BENCH_COMMAND MATCHES "^(cases|occt)$" AND NOT EXISTS ${TEST_DATA_DIR}/cases/MANIFEST.tsv)
+  message(FATAL_ERROR "test data ${TEST_DATA_DIR}/cases/MANIFEST.tsv is missing")
 endif()
 file(MAKE_DIRECTORY ${OUT_DIR})
 set(json ${OUT_DIR}/${BENCH_COMMAND}.json)

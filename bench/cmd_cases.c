@@ -1,5 +1,5 @@
 /*
- * projcurve-bench cases: every shared case (../shared/cases) and the
+ * projcurve-bench cases: every shared case (tests/data/cases) and the
  * real-surface cases: time of the whole projection, branches, composed
  * pieces, control points, worst joint angle and the deviation from the
  * exact projection measured independently on dense samples (deviation.h).
@@ -227,7 +227,7 @@ int pcb_cmd_cases(const pcb_args *args)
      * the accuracy check the slowest part, and the manifest cases cover
      * every code path. */
     const pcb_real_cases real = args->quick ? PCB_REAL_NONE : PCB_REAL_ALL;
-    if (pcb_cases_load(args->shared_dir, real, &list) != 0)
+    if (pcb_cases_load(args->data_dir, real, &list) != 0)
         return 2;
     case_row *rows = calloc(list.n ? list.n : 1, sizeof *rows);
     table2_row *t2 = calloc(MAX_TABLE2_ROWS, sizeof *t2);

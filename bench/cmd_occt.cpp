@@ -515,7 +515,7 @@ extern "C" int pcb_cmd_occt(const pcb_args *args)
 {
     pcb_case_list list;
     const pcb_real_cases real = args->quick ? PCB_REAL_NONE : PCB_REAL_ALL;
-    if (pcb_cases_load(args->shared_dir, real, &list) != 0)
+    if (pcb_cases_load(args->data_dir, real, &list) != 0)
         return 2;
     pcb_print_banner("occt: libprojcurve and Open CASCADE " OCC_VERSION_COMPLETE
                      " on the same geometry",

@@ -216,7 +216,7 @@ static int measure_table(const pcb_args *args, const pcb_example1 *ex, const dou
 int pcb_cmd_table1(const pcb_args *args)
 {
     pcb_example1 ex;
-    if (!pcb_example1_load(args->shared_dir, &ex))
+    if (!pcb_example1_load(args->data_dir, &ex))
         return 1;
     const double *dts = args->quick ? quick_dts : full_dts;
     const size_t n = args->quick ? sizeof quick_dts / sizeof *quick_dts

@@ -9,12 +9,12 @@
 #include "bench.h"
 #include "shapes.h"
 
-int pcb_example1_load(const char *shared_dir, pcb_example1 *ex)
+int pcb_example1_load(const char *data_dir, pcb_example1 *ex)
 {
     memset(ex, 0, sizeof *ex);
     memcpy(ex->dir, pcb_example1_dir, sizeof ex->dir);
     char path[1024];
-    snprintf(path, sizeof path, "%s/cases/song_yong_example1.igs", shared_dir);
+    snprintf(path, sizeof path, "%s/cases/song_yong_example1.igs", data_dir);
     projcurve_context *ctx = NULL;
     projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx);
     const projcurve_status st = projcurve_model_read_file(ctx, path, &ex->model);

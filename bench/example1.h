@@ -19,7 +19,7 @@ typedef struct pcb_example1 {
 } pcb_example1;
 
 /* Returns 1 on success, 0 on failure (printed). */
-int pcb_example1_load(const char *shared_dir, pcb_example1 *ex);
+int pcb_example1_load(const char *data_dir, pcb_example1 *ex);
 void pcb_example1_free(pcb_example1 *ex);
 
 #endif /* PCB_EXAMPLE1_H */

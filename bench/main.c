@@ -2,8 +2,8 @@
  * projcurve-bench: benchmarks of libprojcurve, one subcommand per question
  * (see bench/README.md).
  *
- *   projcurve-bench <command> [--json FILE] [--svg FILE] [--quick] [--shared DIR]
- *   projcurve-bench all --out DIR [--quick] [--shared DIR]
+ *   projcurve-bench <command> [--json FILE] [--svg FILE] [--quick] [--data DIR]
+ *   projcurve-bench all --out DIR [--quick] [--data DIR]
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,8 +11,8 @@
 
 #include "bench.h"
 
-#ifndef PCB_SHARED_DIR
-#define PCB_SHARED_DIR "../shared"
+#ifndef PCB_TEST_DATA_DIR
+#define PCB_TEST_DATA_DIR "tests/data"
 #endif
 
 /* Exit codes (see bench.h). */
@@ -30,7 +30,7 @@ static const pcb_command commands[] = {
     {"eval", pcb_cmd_eval, "ns per bicubic evaluation with 2nd derivatives, per closest point"},
     {"rays", pcb_cmd_rays, "us per ray on surfaces of 1, 100 and 10,000 patches"},
     {"table1", pcb_cmd_table1, "the paper's Table 1: RK4 vs second-order tracing on Example 1"},
-    {"cases", pcb_cmd_cases, "every shared case: time, branches, pieces, measured deviation"},
+    {"cases", pcb_cmd_cases, "every test case: time, branches, pieces, measured deviation"},
     {"scaling", pcb_cmd_scaling, "time against 1/eps_D, patches and curve length"},
 #ifdef PCB_HAVE_OCCT
     {"occt", pcb_cmd_occt, "the cases through Open CASCADE, side by side"},
@@ -41,8 +41,8 @@ static const pcb_command commands[] = {
 static void usage(FILE *f)
 {
     fputs("usage: projcurve-bench <command> [--json FILE] [--svg FILE] [--quick] "
-          "[--shared DIR]\n"
-          "       projcurve-bench all --out DIR [--quick] [--shared DIR]\n"
+          "[--data DIR]\n"
+          "       projcurve-bench all --out DIR [--quick] [--data DIR]\n"
           "commands:\n",
           f);
     for (size_t i = 0; i < N_COMMANDS; ++i)
@@ -65,8 +65,8 @@ static int parse_options(int argc, char **argv, pcb_args *args, const char **out
             args->json_path = argv[++i];
         } else if (!strcmp(opt, "--svg") && has_value) {
             args->svg_path = argv[++i];
-        } else if (!strcmp(opt, "--shared") && has_value) {
-            args->shared_dir = argv[++i];
+        } else if ((!strcmp(opt, "--data") || !strcmp(opt, "--shared")) && has_value) {
+            args->data_dir = argv[++i];
         } else if (!strcmp(opt, "--out") && has_value) {
             *out_dir = argv[++i];
         } else {
@@ -104,9 +104,10 @@ int main(int argc, char **argv)
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? PCB_EXIT_USAGE : 0;
     }
-    /* The same override as the tests: $PROJCURVE_SHARED_DIR, then --shared. */
-    const char *shared = getenv("PROJCURVE_SHARED_DIR");
-    pcb_args args = {NULL, NULL, shared && shared[0] ? shared : PCB_SHARED_DIR, 0};
+    /* The same override as the tests: $PROJCURVE_TEST_DATA_DIR, then --data
+     * (--shared is its former spelling). */
+    const char *data = getenv("PROJCURVE_TEST_DATA_DIR");
+    pcb_args args = {NULL, NULL, data && data[0] ? data : PCB_TEST_DATA_DIR, 0};
     const char *out_dir = NULL;
     if (parse_options(argc, argv, &args, &out_dir) != 0) {
         usage(stderr);

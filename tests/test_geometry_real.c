@@ -1,5 +1,5 @@
 /*
- * The geometry module on the real CAD surfaces of ../shared/data/real:
+ * The geometry module on the real CAD surfaces of tests/data/real:
  * evaluation routes agree (de Boor on the clamped data, basis functions,
  * Bezier patches), patch boxes contain the surface, a point lifted off the
  * surface along the normal has its base point among its foot points and is
@@ -161,9 +161,9 @@ static void check_lift_cases(void)
 {
     for (size_t k = 0; k < sizeof k_lift_cases / sizeof *k_lift_cases; ++k) {
         char rel[256];
-        snprintf(rel, sizeof rel, "data/real/%s", k_lift_cases[k].file);
+        snprintf(rel, sizeof rel, "real/%s", k_lift_cases[k].file);
         projcurve_model *m = NULL;
-        CHECK_OK(projcurve_model_read_file(NULL, pc_test_shared_path(rel), &m));
+        CHECK_OK(projcurve_model_read_file(NULL, pc_test_data_path(rel), &m));
         if (m == NULL)
             continue;
         const projcurve_surface *s = projcurve_model_surface(m, k_lift_cases[k].surface);
@@ -188,17 +188,17 @@ static void check_lift_cases(void)
 
 int main(void)
 {
-    FILE *probe = fopen(pc_test_shared_path("data/real/SOURCES.md"), "r");
+    FILE *probe = fopen(pc_test_data_path("real/SOURCES.md"), "r");
     if (probe == NULL)
-        pc_test_skip("../shared/data/real is not available");
+        pc_test_missing_data("real/SOURCES.md");
     fclose(probe);
     pc_test_rng rng;
     pc_test_rng_seed(&rng, 2026);
     for (size_t f = 0; f < sizeof k_files / sizeof *k_files; ++f) {
         char rel[256];
-        snprintf(rel, sizeof rel, "data/real/%s", k_files[f]);
+        snprintf(rel, sizeof rel, "real/%s", k_files[f]);
         projcurve_model *m = NULL;
-        if (projcurve_model_read_file(NULL, pc_test_shared_path(rel), &m) != PROJCURVE_OK) {
+        if (projcurve_model_read_file(NULL, pc_test_data_path(rel), &m) != PROJCURVE_OK) {
             pc_test_fail_at(__FILE__, __LINE__, "%s does not load", rel);
             continue;
         }

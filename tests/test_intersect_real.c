@@ -1,6 +1,6 @@
 /*
  * Line / surface intersection on every surface of every real CAD model in
- * ../shared/data/real (a file that does not load fails the test; the
+ * tests/data/real (a file that does not load fails the test; the
  * directory missing altogether skips it), against the brute-force oracle
  * (tests/support/ray_oracle.c: a dense triangulation with a few cells per
  * knot span, Newton polish with the public evaluator): every oracle hit
@@ -348,11 +348,11 @@ static int list_models(const char *dir, char **names, int capacity)
 static void test_all_real(void)
 {
     char dir[4096];
-    snprintf(dir, sizeof dir, "%s", pc_test_shared_path("data/real"));
+    snprintf(dir, sizeof dir, "%s", pc_test_data_path("real"));
     char *names[PC_MAX_FILES];
     const int n_files = list_models(dir, names, PC_MAX_FILES);
     if (n_files < 0)
-        pc_test_skip("../shared/data/real is missing");
+        pc_test_missing_data("real/");
     projcurve_model *models[PC_MAX_FILES];
     size_t n_surfaces = 0;
     for (int f = 0; f < n_files; ++f) {
@@ -423,7 +423,7 @@ static void test_all_real(void)
 static void test_knot_cluster(void)
 {
     projcurve_model *model = NULL;
-    const char *path = pc_test_shared_path("data/real/linkrods.step");
+    const char *path = pc_test_data_path("real/linkrods.step");
     if (projcurve_model_read_file(NULL, path, &model) != PROJCURVE_OK) {
         FILE *f = fopen(path, "rb");
         CHECK(f == NULL); /* present but unreadable: test_all_real fails too */

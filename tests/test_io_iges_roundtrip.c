@@ -270,7 +270,7 @@ static void result_round_trip(void)
 static void projected_round_trip(void)
 {
     projcurve_model *in = NULL;
-    if (projcurve_model_read_file(ctx, pc_test_shared_path("cases/song_yong_example1.igs"), &in) !=
+    if (projcurve_model_read_file(ctx, pc_test_data_path("cases/song_yong_example1.igs"), &in) !=
         PROJCURVE_OK)
         return; /* the case files are checked elsewhere */
     const double dir[3] = {-1.0, 0.0, 0.0};
@@ -370,7 +370,7 @@ static void check_curve_on_surface(const char *text, size_t cos, int *pcurve_deg
 static void curve_on_surface_pcurves(void)
 {
     projcurve_model *in = NULL;
-    if (projcurve_model_read_file(ctx, pc_test_shared_path("cases/bumpy_bicubic_8x8_down.igs"),
+    if (projcurve_model_read_file(ctx, pc_test_data_path("cases/bumpy_bicubic_8x8_down.igs"),
                                   &in) != PROJCURVE_OK)
         return; /* the case files are checked elsewhere */
     const double dir[3] = {0.0, 0.0, -1.0};

@@ -17,7 +17,7 @@ static projcurve_context *ctx;
 
 static char *slurp(const char *relative, size_t *len)
 {
-    FILE *fp = fopen(pc_test_shared_path(relative), "rb");
+    FILE *fp = fopen(pc_test_data_path(relative), "rb");
     if (fp == NULL)
         return NULL;
     fseek(fp, 0, SEEK_END);
@@ -116,7 +116,7 @@ static void iges_cases(void)
     size_t len;
     char *text = slurp("cases/song_yong_example1.igs", &len);
     if (text == NULL)
-        pc_test_skip("cases/song_yong_example1.igs is missing");
+        pc_test_missing_data("cases/song_yong_example1.igs");
     size_t surfaces = 0;
     CHECK_OK(read_mem(text, len, &surfaces));
     CHECK(surfaces == 1);
@@ -232,7 +232,7 @@ static void mutate(const char *relative, size_t rounds, unsigned long long seed)
     size_t len;
     char *text = slurp(relative, &len);
     if (text == NULL)
-        return;
+        pc_test_missing_data(relative);
     pc_test_rng rng;
     pc_test_rng_seed(&rng, seed);
     char *work = malloc(len + 1);
@@ -590,9 +590,9 @@ int main(void)
     garbage();
     mutate("cases/song_yong_example1.igs", 400, 1);
     mutate("cases/nurbs_half_cylinder_down.igs", 200, 2);
-    mutate("data/real/test-joinsurf_01.stp", 150, 3);
-    mutate("data/real/horn.xml", 100, 4);
-    mutate("data/real/teapot_newell_spd.txt", 200, 5);
+    mutate("real/test-joinsurf_01.stp", 150, 3);
+    mutate("real/horn.xml", 100, 4);
+    mutate("real/teapot_newell_spd.txt", 200, 5);
     iges_cases();
     reference_bombs();
     pointers_and_counts();

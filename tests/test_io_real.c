@@ -1,8 +1,8 @@
 /*
- * Every file of ../shared/data/real loads, with the surface counts, degrees,
- * net sizes and rational flags that ../shared/data/real/SOURCES.md states
+ * Every file of tests/data/real loads, with the surface counts, degrees,
+ * net sizes and rational flags that tests/data/real/SOURCES.md states
  * (an independent description of the files), and every case of
- * ../shared/cases loads with one surface and one curve.
+ * tests/data/cases loads with one surface and one curve.
  */
 #include <math.h>
 #include <stdio.h>
@@ -36,7 +36,7 @@ static const real_file files[] = {
 static projcurve_model *load(projcurve_context *ctx, const char *relative)
 {
     projcurve_model *m = NULL;
-    const char *path = pc_test_shared_path(relative);
+    const char *path = pc_test_data_path(relative);
     const projcurve_status st = projcurve_model_read_file(ctx, path, &m);
     if (st != PROJCURVE_OK)
         pc_test_fail_at(__FILE__, __LINE__, "%s: %s: %s", relative, projcurve_status_string(st),
@@ -55,7 +55,7 @@ static const projcurve_model *real(projcurve_context *ctx, const char *name)
         if (strcmp(files[f].name, name) == 0) {
             if (loaded[f] == NULL) {
                 char rel[256];
-                snprintf(rel, sizeof rel, "data/real/%s", name);
+                snprintf(rel, sizeof rel, "real/%s", name);
                 loaded[f] = load(ctx, rel);
             }
             return loaded[f];
@@ -279,9 +279,9 @@ static void check_cases(projcurve_context *ctx)
 
 int main(void)
 {
-    FILE *probe = fopen(pc_test_shared_path("data/real/SOURCES.md"), "r");
+    FILE *probe = fopen(pc_test_data_path("real/SOURCES.md"), "r");
     if (probe == NULL)
-        pc_test_skip("../shared/data/real is not available");
+        pc_test_missing_data("real/SOURCES.md");
     fclose(probe);
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));

@@ -1,5 +1,5 @@
 /*
- * The orthogonal cases of ../shared/cases (MANIFEST.tsv, mode "orthogonal"):
+ * The orthogonal cases of tests/data/cases (MANIFEST.tsv, mode "orthogonal"):
  * read each IGES file, project its curve onto its surface with the
  * manifest's tolerances, and compare the branch count with the manifest's.
  * Every traced vertex must satisfy the foot-point condition: the tangential
@@ -88,7 +88,7 @@ static void run_case(const char *name, double tol_dist, double tol_angle, size_t
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     projcurve_model *model = NULL;
-    const projcurve_status st = projcurve_model_read_file(ctx, pc_test_shared_path(rel), &model);
+    const projcurve_status st = projcurve_model_read_file(ctx, pc_test_data_path(rel), &model);
     CHECK_OK(st);
     if (st != PROJCURVE_OK) {
         printf("%s: %s\n", name, projcurve_context_message(ctx));
@@ -138,9 +138,9 @@ static void run_case(const char *name, double tol_dist, double tol_angle, size_t
 
 int main(void)
 {
-    FILE *f = fopen(pc_test_shared_path("cases/MANIFEST.tsv"), "r");
+    FILE *f = fopen(pc_test_data_path("cases/MANIFEST.tsv"), "r");
     if (f == NULL)
-        pc_test_skip("cases/MANIFEST.tsv not found");
+        pc_test_missing_data("cases/MANIFEST.tsv");
     char line[LINE_CAPACITY];
     int cases = 0;
     while (fgets(line, sizeof line, f)) {

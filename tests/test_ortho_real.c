@@ -1,5 +1,5 @@
 /*
- * Orthogonal projection onto real CAD surfaces (../shared/data/real): a
+ * Orthogonal projection onto real CAD surfaces (tests/data/real): a
  * wavy cubic curve hovering a little above the surface (along its thinnest
  * axis) is projected; every traced vertex must be a foot point, and every
  * interior local minimum of the distance from P(t), found independently by
@@ -157,10 +157,10 @@ static int missed_minima(const projcurve_surface *s, const projcurve_curve *c,
 static void run(const char *file)
 {
     char rel[256];
-    snprintf(rel, sizeof rel, "data/real/%s", file);
+    snprintf(rel, sizeof rel, "real/%s", file);
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path(rel), &m) != PROJCURVE_OK) {
-        printf("%s: not readable, skipped\n", file);
+    if (projcurve_model_read_file(NULL, pc_test_data_path(rel), &m) != PROJCURVE_OK) {
+        pc_test_fail_at(__FILE__, __LINE__, "%s: not readable", file);
         return;
     }
     const projcurve_surface *s = projcurve_model_surface(m, 0);

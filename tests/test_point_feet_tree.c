@@ -1,7 +1,7 @@
 /*
  * The foot-point search skips BVH subtrees by the tangent boxes
  * (bezier/tangent_boxes.h). Two facts are checked on the polynomial
- * surfaces of ../shared/data/real and ../shared/cases:
+ * surfaces of tests/data/real and tests/data/cases:
  *
  * - the boxes hold what they claim: Su and Sv at random points of every
  *   patch lie in the boxes of its leaf, and every node's boxes contain its
@@ -37,8 +37,8 @@
 #define TOL_FOOT 1e-8
 
 static const char *const k_files[] = {
-    "data/real/sunglasses_lens.igs", "data/real/bladex_upper.iges", "data/real/hammer.iges",
-    "data/real/test-joinsurf_04.stp", "data/real/horn.xml", "data/real/teapot_newell_spd.txt",
+    "real/sunglasses_lens.igs", "real/bladex_upper.iges", "real/hammer.iges",
+    "real/test-joinsurf_04.stp", "real/horn.xml", "real/teapot_newell_spd.txt",
     "cases/bumpy_bicubic_8x8_down.igs", "cases/deg5_quintic_9x8_down.igs",
     "cases/fold_c_sheet_jump.igs"};
 
@@ -172,15 +172,15 @@ static void check_surface(const projcurve_surface *s, const char *name, pc_test_
 
 int main(void)
 {
-    FILE *probe = fopen(pc_test_shared_path("data/real/SOURCES.md"), "r");
+    FILE *probe = fopen(pc_test_data_path("real/SOURCES.md"), "r");
     if (probe == NULL)
-        pc_test_skip("../shared/data/real is not available");
+        pc_test_missing_data("real/SOURCES.md");
     fclose(probe);
     pc_test_rng rng;
     pc_test_rng_seed(&rng, 77);
     for (size_t f = 0; f < sizeof k_files / sizeof *k_files; ++f) {
         projcurve_model *m = NULL;
-        if (projcurve_model_read_file(NULL, pc_test_shared_path(k_files[f]), &m) != PROJCURVE_OK) {
+        if (projcurve_model_read_file(NULL, pc_test_data_path(k_files[f]), &m) != PROJCURVE_OK) {
             pc_test_fail_at(__FILE__, __LINE__, "%s does not load", k_files[f]);
             continue;
         }

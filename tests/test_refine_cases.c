@@ -1,5 +1,5 @@
 /*
- * End to end on the shared cases (../shared/cases/MANIFEST.tsv): every
+ * End to end on the shared cases (tests/data/cases/MANIFEST.tsv): every
  * directional and orthogonal case is projected through the public API at
  * eps_D = 1e-2, 1e-3, 1e-4, 1e-5 and 1e-6 of the model size with eps_T = 1
  * degree, and at 1e-3 with 10 degrees, with straight and with cubic pcurves
@@ -35,7 +35,7 @@ typedef struct manifest_case {
  * tol_angle_deg, expected_branches, notes). */
 static size_t read_manifest(manifest_case *cases, size_t capacity)
 {
-    FILE *f = fopen(pc_test_shared_path("cases/MANIFEST.tsv"), "r");
+    FILE *f = fopen(pc_test_data_path("cases/MANIFEST.tsv"), "r");
     if (f == NULL)
         return 0;
     char line[2048];
@@ -114,14 +114,14 @@ int main(void)
     manifest_case cases[MAX_CASES];
     const size_t n = read_manifest(cases, MAX_CASES);
     if (n == 0)
-        pc_test_skip("no cases in ../shared/cases/MANIFEST.tsv");
+        pc_test_missing_data("cases/MANIFEST.tsv");
     static const double rel_eps[] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
     static const int pcurve_degrees[] = {1, 3};
     for (size_t k = 0; k < n; ++k) {
         char rel[NAME_LEN + 16];
         snprintf(rel, sizeof rel, "cases/%.*s.igs", NAME_LEN - 1, cases[k].name);
         projcurve_model *model = NULL;
-        CHECK_OK(projcurve_model_read_file(NULL, pc_test_shared_path(rel), &model));
+        CHECK_OK(projcurve_model_read_file(NULL, pc_test_data_path(rel), &model));
         const projcurve_surface *s = projcurve_model_surface(model, 0);
         const projcurve_curve *curve = projcurve_model_curve(model, 0);
         CHECK(s != NULL && curve != NULL);

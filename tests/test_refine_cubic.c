@@ -1,7 +1,7 @@
 /*
  * Cubic pcurves (PROJCURVE_OPT_PCURVE_DEGREE = 3) end to end, on the shapes
  * of the tracing tests (tests/support/trace_shapes) and on every directional
- * and orthogonal case of ../shared/cases: for eps_D = 1e-2, 1e-4, 1e-5 and
+ * and orthogonal case of tests/data/cases: for eps_D = 1e-2, 1e-4, 1e-5 and
  * 1e-6 of the model size at eps_T = 1 degree,
  *  - every branch measured by the oracles of tests/support/piece_oracle
  *    (exact projection by the oracle's own Newton; Hausdorff both ways on
@@ -208,11 +208,9 @@ static void test_shapes(void)
  * dir_y, dir_z, ...) with at least one branch expected. */
 static void test_shared_cases(void)
 {
-    FILE *f = fopen(pc_test_shared_path("cases/MANIFEST.tsv"), "r");
-    if (f == NULL) {
-        printf("no ../shared/cases/MANIFEST.tsv: shared cases skipped\n");
-        return;
-    }
+    FILE *f = fopen(pc_test_data_path("cases/MANIFEST.tsv"), "r");
+    if (f == NULL)
+        pc_test_missing_data("cases/MANIFEST.tsv");
     char line[2048];
     while (fgets(line, sizeof line, f) != NULL) {
         projection_case c;
@@ -228,7 +226,7 @@ static void test_shared_cases(void)
         char rel[NAME_LEN + 16];
         snprintf(rel, sizeof rel, "cases/%.*s.igs", NAME_LEN - 1, c.name);
         projcurve_model *model = NULL;
-        CHECK_OK(projcurve_model_read_file(NULL, pc_test_shared_path(rel), &model));
+        CHECK_OK(projcurve_model_read_file(NULL, pc_test_data_path(rel), &model));
         c.surface = projcurve_model_surface(model, 0);
         c.curve = projcurve_model_curve(model, 0);
         CHECK(c.surface != NULL && c.curve != NULL);

@@ -1,5 +1,5 @@
 /*
- * The directional cases of ../shared/cases (MANIFEST.tsv): each IGES file
+ * The directional cases of tests/data/cases (MANIFEST.tsv): each IGES file
  * holds one surface and its test curve(s); the projection along the listed
  * direction must give the expected number of branches, every vertex on the
  * projection, nothing missed by brute force, boundary ends exactly on the
@@ -180,7 +180,7 @@ static void run_case(const manifest_row *row)
     char rel[256];
     snprintf(rel, sizeof rel, "cases/%s.igs", row->name);
     projcurve_model *m = NULL;
-    const projcurve_status st = projcurve_model_read_file(NULL, pc_test_shared_path(rel), &m);
+    const projcurve_status st = projcurve_model_read_file(NULL, pc_test_data_path(rel), &m);
     CHECK_OK(st);
     if (st != PROJCURVE_OK)
         return;
@@ -198,9 +198,9 @@ static void run_case(const manifest_row *row)
 
 int main(void)
 {
-    FILE *f = fopen(pc_test_shared_path("cases/MANIFEST.tsv"), "r");
+    FILE *f = fopen(pc_test_data_path("cases/MANIFEST.tsv"), "r");
     if (f == NULL)
-        pc_test_skip("../shared/cases/MANIFEST.tsv not found");
+        pc_test_missing_data("cases/MANIFEST.tsv");
     char line[2048];
     int cases = 0;
     while (fgets(line, sizeof line, f)) {

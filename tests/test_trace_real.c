@@ -1,5 +1,5 @@
 /*
- * Directional projection onto real CAD surfaces (../shared/data/real): a
+ * Directional projection onto real CAD surfaces (tests/data/real): a
  * wavy cubic curve held above the surface's bounding box along its thinnest
  * axis, projected back along (a slight tilt of) that axis. Dense brute force
  * must find nothing the tracer missed, every vertex must satisfy the
@@ -19,10 +19,10 @@
 static void run(const char *file, size_t surface_index)
 {
     char rel[256];
-    snprintf(rel, sizeof rel, "data/real/%s", file);
+    snprintf(rel, sizeof rel, "real/%s", file);
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path(rel), &m) != PROJCURVE_OK) {
-        printf("%s: not readable, skipped\n", file);
+    if (projcurve_model_read_file(NULL, pc_test_data_path(rel), &m) != PROJCURVE_OK) {
+        pc_test_fail_at(__FILE__, __LINE__, "%s: not readable", file);
         return;
     }
     const projcurve_surface *s = projcurve_model_surface(m, surface_index);
@@ -81,9 +81,9 @@ static void run(const char *file, size_t surface_index)
 
 int main(void)
 {
-    FILE *probe = fopen(pc_test_shared_path("data/real/SOURCES.md"), "r");
+    FILE *probe = fopen(pc_test_data_path("real/SOURCES.md"), "r");
     if (probe == NULL)
-        pc_test_skip("../shared/data/real not found");
+        pc_test_missing_data("real/SOURCES.md");
     fclose(probe);
     run("sunglasses_lens.igs", 0);
     run("bladex_upper.iges", 0);

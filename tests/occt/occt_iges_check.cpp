@@ -2,7 +2,7 @@
 //
 // Writes (1) two surfaces and a curve, (2) a surface with a hand-made
 // projection result (one branch: pcurve 126, 3D curve 126, curve on surface
-// 142) and (3) the projections of two cases of ../shared/cases, then loads each with IGESControl_Reader: the load must succeed, the
+// 142) and (3) the projections of two cases of tests/data/cases, then loads each with IGESControl_Reader: the load must succeed, the
 // model must hold exactly the entities written (by type), and the
 // transferred shapes must be non-null with faces/edges where expected. For
 // (1) the geometry OCCT builds must be ours: its surfaces and curve agree
@@ -327,7 +327,7 @@ void check_case(const std::string &dir_out, const char *name, const double dir[3
 {
     projcurve_model *in = nullptr;
     const std::string path = std::string("cases/") + name + ".igs";
-    if (projcurve_model_read_file(ctx, pc_test_shared_path(path.c_str()), &in) != PROJCURVE_OK) {
+    if (projcurve_model_read_file(ctx, pc_test_data_path(path.c_str()), &in) != PROJCURVE_OK) {
         std::printf("%s not available: skipped\n", path.c_str());
         return;
     }

@@ -30,12 +30,20 @@ void pc_test_skip(const char *why)
     exit(77);
 }
 
-const char *pc_test_shared_path(const char *relative)
+void pc_test_missing_data(const char *what)
+{
+    fprintf(stderr, "FAIL: test data %s is missing (tests/data is part of the repository; "
+                    "$PROJCURVE_TEST_DATA_DIR, if set, must name a copy of it)\n",
+            what);
+    exit(EXIT_FAILURE);
+}
+
+const char *pc_test_data_path(const char *relative)
 {
     static char buffer[4096];
-    const char *root = getenv("PROJCURVE_SHARED_DIR");
+    const char *root = getenv("PROJCURVE_TEST_DATA_DIR");
     if (root == NULL || root[0] == '\0')
-        root = PC_SHARED_DIR;
+        root = PC_TEST_DATA_DIR;
     snprintf(buffer, sizeof buffer, "%s/%s", root, relative);
     return buffer;
 }

@@ -56,9 +56,14 @@ int pc_test_finish(const char *name);
 /* Exits with code 77 (CTest SKIP_RETURN_CODE) after printing why. */
 void pc_test_skip(const char *why);
 
-/* Path of a file under ../shared (e.g. "cases/MANIFEST.tsv"), in a static
- * buffer. The root is $PROJCURVE_SHARED_DIR if set, else the source tree's. */
-const char *pc_test_shared_path(const char *relative);
+/* Exits with failure (not a skip) after printing which test data is
+ * missing: the data is part of the repository, so its absence is an error. */
+void pc_test_missing_data(const char *what);
+
+/* Path of a file under tests/data (e.g. "cases/MANIFEST.tsv",
+ * "real/horn.xml"), in a static buffer. The root is
+ * $PROJCURVE_TEST_DATA_DIR if set, else the source tree's tests/data. */
+const char *pc_test_data_path(const char *relative);
 
 /* Deterministic pseudo-random numbers for tests (xorshift64*). */
 typedef struct pc_test_rng {
