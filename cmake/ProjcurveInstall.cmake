@@ -20,6 +20,9 @@ install(TARGETS projcurve projcurve_static EXPORT projcurveTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 
+# The licence beside the documentation, as distributions expect it.
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE DESTINATION ${CMAKE_INSTALL_DOCDIR})
+
 # The command-line tool (target projcurve_cli of src/cli, file `projcurve`).
 if(TARGET projcurve_cli)
   install(TARGETS projcurve_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
