@@ -79,14 +79,15 @@ typedef enum projcurve_status {
     PROJCURVE_ERR_NO_MEMORY = 13,      /* an allocation failed */
     PROJCURVE_ERR_VERSION = 14,        /* header/library major versions differ */
     PROJCURVE_ERR_NOT_CONVERGED = 15,  /* an iteration hit its bound */
-    PROJCURVE_ERR_LIMIT_REACHED = 16,  /* a size limit was hit; partial result kept */
+    PROJCURVE_ERR_LIMIT_REACHED = 16,  /* a size, time or work limit was hit; partial result kept */
     PROJCURVE_ERR_CALLBACK = 17,       /* a user callback failed or returned NaN */
     PROJCURVE_ERR_SINGULAR = 18,       /* a degenerate configuration (zero gradient, ...) */
     PROJCURVE_ERR_IO = 19,             /* a file could not be opened/read/written */
     PROJCURVE_ERR_PARSE = 20,          /* malformed file contents */
     PROJCURVE_ERR_UNSUPPORTED = 21,    /* valid input the library does not handle */
     PROJCURVE_ERR_INDEX = 22,          /* an index past the end */
-    PROJCURVE_ERR_WRONG_KIND = 23      /* the handle is of another kind (e.g. not NURBS) */
+    PROJCURVE_ERR_WRONG_KIND = 23,     /* the handle is of another kind (e.g. not NURBS) */
+    PROJCURVE_ERR_CANCELLED = 24       /* the progress callback asked to stop; partial result kept */
 } projcurve_status;
 
 /* A short, static English name for every status (never NULL; unknown codes
@@ -182,7 +183,23 @@ typedef enum projcurve_option {
      * whose cubic would leave its Bezier patch (or where q' is not
      * available, e.g. at a fold) is a straight segment: read each piece's
      * degree with projcurve_result_piece_pcurve. */
-    PROJCURVE_OPT_PCURVE_DEGREE = 12
+    PROJCURVE_OPT_PCURVE_DEGREE = 12,
+    /* double: wall time allowed per projection call, in seconds (a
+     * monotonic clock); 0 = no limit (default), bounds [0, 1e9]. A call
+     * that runs out returns PROJCURVE_ERR_LIMIT_REACHED with the partial
+     * result described at projcurve_project_directional. The clock is read
+     * every few hundred units of work (see MAX_WORK), so the limit is met
+     * to a few milliseconds; what a call returns when it hits the limit
+     * depends on the machine's speed and load: use MAX_WORK for a
+     * reproducible cut. */
+    PROJCURVE_OPT_TIME_LIMIT = 14,
+    /* integer: units of work allowed per projection call; 0 = no limit
+     * (default), bounds [0, 2^40]. A unit is one bounded piece of work: a
+     * traced step (prediction and correction), a check of the jump sweep,
+     * a segment of the refinement, a fitted piece. The count depends only
+     * on the inputs and options, so a call cut by MAX_WORK returns the same
+     * partial result (PROJCURVE_ERR_LIMIT_REACHED) on every machine. */
+    PROJCURVE_OPT_MAX_WORK = 15
 } projcurve_option;
 
 #define PROJCURVE_METHOD_SECOND_ORDER 0
@@ -231,6 +248,35 @@ PROJCURVE_API projcurve_status projcurve_options_get_int(projcurve_context *ctx,
                                                          const projcurve_options *opts,
                                                          projcurve_option key,
                                                          long long *value);
+
+/* Progress of a projection call: fraction_done in [0, 1], never smaller
+ * than at the previous call within the same projection call. Return 0 to
+ * go on; any other value stops the call, which then returns
+ * PROJCURVE_ERR_CANCELLED with the partial result described at
+ * projcurve_project_directional. */
+typedef int (*projcurve_progress_fn)(void *user, double fraction_done);
+
+/* Sets the progress callback of the projection calls made with opts (fn
+ * NULL: none, the default). Each projection call (directional, orthogonal
+ * and orthogonal implicit, including their refinement and composition)
+ * calls fn on the caller's thread only, from within the call: once after
+ * its first unit of work (see PROJCURVE_OPT_MAX_WORK), then every few
+ * hundred units, and last with 1 when the work is complete (the return
+ * value of that last call is ignored); a call stopped by a limit or by
+ * the callback does not report 1. fn must not use opts or the result
+ * being made. A handle used by several threads at once calls the same fn
+ * from each of them. Statuses: OK, NULL_ARGUMENT (opts). */
+PROJCURVE_API projcurve_status projcurve_options_set_progress(projcurve_context *ctx,
+                                                              projcurve_options *opts,
+                                                              projcurve_progress_fn fn,
+                                                              void *user);
+
+/* The progress callback and its user pointer (either output may be NULL;
+ * NULL when none is set). Statuses: OK, NULL_ARGUMENT (opts). */
+PROJCURVE_API projcurve_status projcurve_options_get_progress(projcurve_context *ctx,
+                                                              const projcurve_options *opts,
+                                                              projcurve_progress_fn *fn,
+                                                              void **user);
 
 /* ======================================================================== */
 /* Curves                                                                    */

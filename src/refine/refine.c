@@ -107,6 +107,8 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
         return st;
     const pc_rvertex *tv = l->traced.items;
     const size_t nt = l->traced.count;
+    l->out.count = 0; /* what store_branch finds if the budget stops step 1 */
+    r->t_lo = tv[0].t;
     r->t_range = tv[nt - 1].t - tv[0].t;
     r->min_dt = PC_REFINE_MIN_DT_REL * r->t_range;
     /* 1. knot-line crossings: an intermediate list, outside the piece budget */
@@ -268,7 +270,8 @@ static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_
             return st;
         ++runs;
     }
-    if (runs == 0) /* nothing could be composed: the traced polyline stays */
+    if (runs == 0 && last_end != PROJCURVE_END_LIMIT) /* nothing could be composed:
+                                                         the traced polyline stays */
         res->branches[i].end = PROJCURVE_END_FAILED;
     return PROJCURVE_OK;
 }
@@ -292,6 +295,7 @@ static void refiner_init(pc_refiner *r, projcurve_context *ctx, const pc_project
     /* cubic pcurves only where the composed degree fits (projcurve.h) */
     const int sum = s->nurbs.deg_u + s->nurbs.deg_v;
     r->pcurve_degree = o->pcurve_degree == 3 && 3 * sum <= 2 * PROJCURVE_MAX_DEGREE ? 3 : 1;
+    r->budget = o->budget;
 }
 
 projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projector *proj,
@@ -338,6 +342,8 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
             continue;
         int descending = 0;
         r.max_vertices = max_pieces - pieces + 1;
+        r.progress_lo = (double)i / (double)n_traced;
+        r.progress_width = 1.0 / (double)n_traced;
         st = refine_branch(&r, b, &lists, &descending);
         if (st == PROJCURVE_ERR_LIMIT_REACHED) {
             b->end = PROJCURVE_END_LIMIT;
@@ -352,7 +358,9 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
     }
     refine_lists_free(&lists);
     res->stats.pieces = (double)pieces;
-    if (st == PROJCURVE_OK && r.limit_hit)
+    if (st == PROJCURVE_OK && pc_budget_status(r.budget) != PROJCURVE_OK)
+        st = pc_budget_fail(r.budget, ctx);
+    else if (st == PROJCURVE_OK && r.limit_hit)
         st = pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
                      "the piece limit %lld was reached; the pieces made so far are kept",
                      opts->max_pieces);
