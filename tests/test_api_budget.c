@@ -13,8 +13,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/handles.h"
 #include "check.h"
 #include "common/budget.h"
+#include "point/point.h"
 #include "shapes.h"
 
 /* ---- the module, with a clock the test advances ------------------------ */
@@ -420,12 +422,84 @@ static void test_options(void)
     projcurve_options_destroy(o);
 }
 
+/* ---- real data: calls that ran for seconds to minutes ----------------- */
+
+/* linkrods.step, curve 7: onto surface 1 along -z the jump sweep's step
+ * collapsed and the call took ~550 s; onto surface 16 orthogonally one
+ * foot-point search took ~0.7 s, with no poll inside. A time limit bounds
+ * both (the limit itself is met or the call completes: nothing here
+ * depends on the machine's speed but the generous hang guard). */
+static void test_real_calls(void)
+{
+    FILE *probe = fopen(pc_test_shared_path("data/real/linkrods.step"), "r");
+    if (probe == NULL) {
+        printf("../shared/data/real/linkrods.step not found: real-data part skipped\n");
+        return;
+    }
+    fclose(probe);
+    projcurve_model *m = NULL;
+    CHECK_OK(projcurve_model_read_file(NULL, pc_test_shared_path("data/real/linkrods.step"), &m));
+    if (m == NULL)
+        return;
+    const projcurve_curve *c = projcurve_model_curve(m, 7);
+    const projcurve_surface *s1 = projcurve_model_surface(m, 1), *s16 = projcurve_model_surface(m, 16);
+    CHECK(c != NULL && s1 != NULL && s16 != NULL);
+    if (c == NULL || s1 == NULL || s16 == NULL) {
+        projcurve_model_destroy(m);
+        return;
+    }
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TIME_LIMIT, 0.25));
+    double t0 = 0.0, t1 = 0.0;
+    CHECK_OK(projcurve_curve_domain(NULL, c, &t0, &t1));
+    for (int orthogonal = 0; orthogonal <= 1; ++orthogonal) {
+        static const double down[3] = {0.0, 0.0, -1.0};
+        projcurve_context *ctx = NULL;
+        CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+        projcurve_result *r = NULL;
+        const projcurve_status st = orthogonal
+                                        ? projcurve_project_orthogonal(ctx, s16, c, o, &r)
+                                        : projcurve_project_directional(ctx, s1, c, down, o, &r);
+        CHECK(st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED);
+        if (st == PROJCURVE_ERR_LIMIT_REACHED)
+            CHECK(strstr(projcurve_context_message(ctx), "time limit") != NULL);
+        CHECK(r != NULL);
+        if (r != NULL)
+            check_readable(r, t0, t1);
+        printf("linkrods curve 7 onto surface %d (%s), 0.25 s limit: %s\n", orthogonal ? 16 : 1,
+               orthogonal ? "orthogonal" : "along -z", projcurve_status_string(st));
+        projcurve_result_destroy(r);
+        projcurve_context_destroy(ctx);
+    }
+
+    /* the foot-point search polls the budget once per sub-patch: it stops
+     * at exactly MAX_WORK units, with the feet found so far, and says OK
+     * (the caller's next poll sees the budget's status) */
+    pc_vec3 p;
+    CHECK_OK(pc_curve_eval(c, t0, 0, NULL, &p));
+    double uv[2 * 64];
+    size_t count = 0;
+    pc_budget b;
+    pc_budget_init(&b, 0.0, 0, NULL, NULL);
+    CHECK_OK(pc_surface_foot_points_uv(NULL, s16, p, &b, 64, uv, &count));
+    printf("a foot-point search on linkrods surface 16: %llu sub-patches\n", b.work);
+    CHECK(b.work >= 100);
+    pc_budget_init(&b, 0.0, 50, NULL, NULL);
+    CHECK_OK(pc_surface_foot_points_uv(NULL, s16, p, &b, 64, uv, &count));
+    CHECK(b.work == 51);
+    CHECK_STATUS(pc_budget_status(&b), PROJCURVE_ERR_LIMIT_REACHED);
+    projcurve_options_destroy(o);
+    projcurve_model_destroy(m);
+}
+
 int main(void)
 {
     test_module_time_limit();
     test_module_work_limit();
     test_module_progress();
     test_options();
+    test_real_calls();
 
     pc_shape_surface s = pc_shape_bumpy(7, 6, 6, 0.05, 0);
     fixture f = {pc_shape_surface_create(&s), NULL, NULL};
