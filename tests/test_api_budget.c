@@ -422,6 +422,53 @@ static void test_options(void)
     projcurve_options_destroy(o);
 }
 
+/* ---- memory bounded by the limits ---------------------------------------- */
+
+/* A line across a plane of 64 x 64 spans crosses ~100 knot lines, each a
+ * vertex of the refined polyline. With MAX_PIECES 5 the list of crossings
+ * stops after the pieces left (refine.c) instead of holding all of them:
+ * the pieces kept are still the first ones of the unlimited projection,
+ * bit for bit, and the polyline is their pcurve. */
+static void test_crossings_bounded_by_pieces(void)
+{
+    pc_shape_surface ps = pc_shape_plane(1, 1, 64, 64);
+    projcurve_surface *plane = pc_shape_surface_create(&ps);
+    pc_shape_surface_free(&ps);
+    pc_shape_line line = {{-0.9, -0.9, 1.0}, {1.8, 2.8, 0.0}};
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_callback(NULL, pc_shape_line_fn, &line, 0.0, 1.0, &c));
+    static const double down[3] = {0.0, 0.0, -1.0};
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    projcurve_result *full = NULL, *cut = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, plane, c, down, o, &full));
+    size_t n_full = 0;
+    CHECK_OK(projcurve_result_branch_info(NULL, full, 0, NULL, NULL, NULL, NULL, &n_full));
+    CHECK(projcurve_result_branch_count(full) == 1 && n_full >= 100);
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_PIECES, 5));
+    CHECK_STATUS(projcurve_project_directional(NULL, plane, c, down, o, &cut),
+                 PROJCURVE_ERR_LIMIT_REACHED);
+    size_t n_points = 0, n_pieces = 0;
+    projcurve_branch_end end;
+    CHECK_OK(projcurve_result_branch_info(NULL, cut, 0, NULL, NULL, &end, &n_points, &n_pieces));
+    CHECK(n_pieces == 5 && n_points == 6 && end == PROJCURVE_END_LIMIT);
+    for (size_t k = 0; k < n_pieces && k < n_full; ++k) {
+        int da = 0, db = 0;
+        double ca[3 * PROJCURVE_MAX_PIECE_POINTS], cb[3 * PROJCURVE_MAX_PIECE_POINTS];
+        double ra[2], rb[2];
+        CHECK_OK(projcurve_result_piece(NULL, full, 0, k, &da, ca, NULL, ra, NULL));
+        CHECK_OK(projcurve_result_piece(NULL, cut, 0, k, &db, cb, NULL, rb, NULL));
+        CHECK(da == db && ra[0] == rb[0] && ra[1] == rb[1] &&
+              memcmp(ca, cb, 3 * (size_t)(da + 1) * sizeof *ca) == 0);
+    }
+    check_readable(cut, 0.0, 1.0);
+    projcurve_result_destroy(full);
+    projcurve_result_destroy(cut);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(plane);
+}
+
 /* ---- real data: calls that ran for seconds to minutes ----------------- */
 
 /* linkrods.step, curve 7: onto surface 1 along -z the jump sweep's step
@@ -500,6 +547,7 @@ int main(void)
     test_module_progress();
     test_options();
     test_real_calls();
+    test_crossings_bounded_by_pieces();
 
     pc_shape_surface s = pc_shape_bumpy(7, 6, 6, 0.05, 0);
     fixture f = {pc_shape_surface_create(&s), NULL, NULL};

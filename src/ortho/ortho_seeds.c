@@ -1,5 +1,6 @@
 #include "ortho/ortho_seeds.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "common/error.h"
@@ -15,9 +16,9 @@ static projcurve_status grow(projcurve_context *ctx, pc_ortho_finder_state *st, 
     if (need <= st->capacity)
         return PROJCURVE_OK;
     size_t cap = st->capacity ? st->capacity : ORTHO_FOOT_CAPACITY;
-    while (cap < need)
+    while (cap < need && cap <= SIZE_MAX / (4 * sizeof *st->uv))
         cap *= 2;
-    double *uv = realloc(st->uv, 2 * cap * sizeof *uv);
+    double *uv = cap >= need ? realloc(st->uv, 2 * cap * sizeof *uv) : NULL;
     if (uv == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for %zu foot points", need);
     st->uv = uv;

@@ -15,6 +15,7 @@
  * converges to the foot point of its own basin. Duplicates (a foot point on
  * a shared edge is found from both sides) are merged at the end.
  */
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -55,7 +56,8 @@ static int push_foot(feet_search *fs, double u, double v)
     pc_foot_list *l = fs->list;
     if (l->count == l->capacity) {
         const size_t cap = l->capacity ? 2 * l->capacity : 16;
-        pc_surface_point *items = realloc(l->items, cap * sizeof *items);
+        pc_surface_point *items =
+            cap <= SIZE_MAX / sizeof *items ? realloc(l->items, cap * sizeof *items) : NULL;
         if (items == NULL) {
             fs->status = pc_fail(fs->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for foot points");
             return 0;

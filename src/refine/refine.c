@@ -111,9 +111,13 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
     r->t_lo = tv[0].t;
     r->t_range = tv[nt - 1].t - tv[0].t;
     r->min_dt = PC_REFINE_MIN_DT_REL * r->t_range;
-    /* 1. knot-line crossings: an intermediate list, outside the piece budget */
+    /* 1. knot-line crossings: an intermediate list. Each crossing is an
+     * output vertex below, so more crossings than the pieces left would
+     * pass the piece limit anyway: the list stops at nt + that many
+     * vertices (its memory is bounded before it grows) and the march
+     * meets the limit where it would have without the cap. */
     const size_t budget = r->max_vertices;
-    r->max_vertices = SIZE_MAX;
+    r->max_vertices = nt + budget + 1;
     r->guide = tv;
     r->n_guide = nt;
     l->crossed.count = 0;
@@ -121,6 +125,11 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
     for (size_t k = 0; k + 1 < nt && st == PROJCURVE_OK; ++k)
         st = pc_refine_split(r, &tv[k], &tv[k + 1], 0, &l->crossed);
     r->max_vertices = budget;
+    const int capped = st == PROJCURVE_ERR_LIMIT_REACHED && pc_budget_status(r->budget) == PROJCURVE_OK;
+    if (capped) {
+        st = PROJCURVE_OK;
+        r->limit_hit = 0;
+    }
     if (st != PROJCURVE_OK)
         return st;
     l->crossed.items[l->crossed.count - 1].fixed = 1;
@@ -144,6 +153,10 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
             st = r->pcurve_degree == 3 ? pc_refine_march_cubic(r, from, to, &l->out)
                                        : pc_refine_march(r, from, to, &l->out);
         start = k;
+    }
+    if (st == PROJCURVE_OK && capped) { /* (the march always meets the limit first) */
+        r->limit_hit = 1;
+        return PROJCURVE_ERR_LIMIT_REACHED;
     }
     /* (the angle pass splits straight segments; cubic pieces are G1) */
     if (st == PROJCURVE_OK && r->forced > 0 && r->pcurve_degree == 1)
