@@ -79,14 +79,15 @@ typedef enum projcurve_status {
     PROJCURVE_ERR_NO_MEMORY = 13,      /* an allocation failed */
     PROJCURVE_ERR_VERSION = 14,        /* header/library major versions differ */
     PROJCURVE_ERR_NOT_CONVERGED = 15,  /* an iteration hit its bound */
-    PROJCURVE_ERR_LIMIT_REACHED = 16,  /* a size limit was hit; partial result kept */
+    PROJCURVE_ERR_LIMIT_REACHED = 16,  /* a size, time or work limit was hit; partial result kept */
     PROJCURVE_ERR_CALLBACK = 17,       /* a user callback failed or returned NaN */
     PROJCURVE_ERR_SINGULAR = 18,       /* a degenerate configuration (zero gradient, ...) */
     PROJCURVE_ERR_IO = 19,             /* a file could not be opened/read/written */
     PROJCURVE_ERR_PARSE = 20,          /* malformed file contents */
     PROJCURVE_ERR_UNSUPPORTED = 21,    /* valid input the library does not handle */
     PROJCURVE_ERR_INDEX = 22,          /* an index past the end */
-    PROJCURVE_ERR_WRONG_KIND = 23      /* the handle is of another kind (e.g. not NURBS) */
+    PROJCURVE_ERR_WRONG_KIND = 23,     /* the handle is of another kind (e.g. not NURBS) */
+    PROJCURVE_ERR_CANCELLED = 24       /* the progress callback asked to stop; partial result kept */
 } projcurve_status;
 
 /* A short, static English name for every status (never NULL; unknown codes
@@ -158,7 +159,15 @@ typedef enum projcurve_option {
      * of the projection, used when PARAM_STEP is 0. Default 1/64, [1e-7, 1]. */
     PROJCURVE_OPT_ARC_STEP_FRACTION = 7,
     /* integer: maximum number of traced points per projection.
-     * Default 10,000,000, [16, 2^40]. */
+     * Default 10,000,000, [16, 2^40]. Both size limits are checked before
+     * the allocation that would pass them, and they bound the memory of a
+     * call: at most about 600 bytes per point of MAX_POINTS plus
+     * 1,100 + 32 (d + 1) bytes per piece of MAX_PIECES (d the pieces'
+     * degree, p + q, or 3 (p + q) with cubic pcurves), plus tables of the
+     * size of the surface (a few hundred bytes per Bezier patch); arrays
+     * grow by doubling, which this counts. Measured: ~400 bytes per piece
+     * on a bilinear plane. So MAX_POINTS 200,000 and MAX_PIECES 100,000
+     * keep a call below 256 MiB; the defaults allow several GiB. */
     PROJCURVE_OPT_MAX_POINTS = 8,
     /* integer: maximum number of composed pieces per projection.
      * Default 1,000,000, [1, 2^40]. A projection that needs more returns
@@ -182,7 +191,26 @@ typedef enum projcurve_option {
      * whose cubic would leave its Bezier patch (or where q' is not
      * available, e.g. at a fold) is a straight segment: read each piece's
      * degree with projcurve_result_piece_pcurve. */
-    PROJCURVE_OPT_PCURVE_DEGREE = 12
+    PROJCURVE_OPT_PCURVE_DEGREE = 12,
+    /* double: wall time allowed per projection call, in seconds (a
+     * monotonic clock); 0 = no limit (default), bounds [0, 1e9]. A call
+     * that runs out returns PROJCURVE_ERR_LIMIT_REACHED with the partial
+     * result described at projcurve_project_directional. The clock is read
+     * every 256 units of work (see MAX_WORK), typically every few
+     * milliseconds; a call stopped while composing still composes the
+     * pieces it has refined, up to a third more time where a branch has
+     * hundreds of thousands of pieces (limits of 0.2, 0.5 and 1 s returned
+     * after 0.25, 0.64 and 1.34 s on such a branch). What a call
+     * returns at the limit depends on the machine's speed and load: use
+     * MAX_WORK for a reproducible cut. */
+    PROJCURVE_OPT_TIME_LIMIT = 14,
+    /* integer: units of work allowed per projection call; 0 = no limit
+     * (default), bounds [0, 2^40]. A unit is one bounded piece of work: a
+     * traced step (prediction and correction), a check of the jump sweep,
+     * a segment of the refinement, a fitted piece. The count depends only
+     * on the inputs and options, so a call cut by MAX_WORK returns the same
+     * partial result (PROJCURVE_ERR_LIMIT_REACHED) on every machine. */
+    PROJCURVE_OPT_MAX_WORK = 15
 } projcurve_option;
 
 #define PROJCURVE_METHOD_SECOND_ORDER 0
@@ -231,6 +259,35 @@ PROJCURVE_API projcurve_status projcurve_options_get_int(projcurve_context *ctx,
                                                          const projcurve_options *opts,
                                                          projcurve_option key,
                                                          long long *value);
+
+/* Progress of a projection call: fraction_done in [0, 1], never smaller
+ * than at the previous call within the same projection call. Return 0 to
+ * go on; any other value stops the call, which then returns
+ * PROJCURVE_ERR_CANCELLED with the partial result described at
+ * projcurve_project_directional. */
+typedef int (*projcurve_progress_fn)(void *user, double fraction_done);
+
+/* Sets the progress callback of the projection calls made with opts (fn
+ * NULL: none, the default; user is passed to fn). Each projection call
+ * (directional, orthogonal and orthogonal implicit, with their refinement
+ * and composition) calls fn only from within the call and on the caller's
+ * thread: once after its first unit of work (see PROJCURVE_OPT_MAX_WORK),
+ * then every 256 units (typically every few milliseconds), and last with 1 when
+ * the work is complete (that call's return value is ignored); a call
+ * stopped by a limit or by fn does not report 1. Calls made with the same
+ * options on several threads call fn from each of them: fn must then be
+ * thread-safe. fn must not modify opts. Statuses: OK, NULL_ARGUMENT. */
+PROJCURVE_API projcurve_status projcurve_options_set_progress(projcurve_context *ctx,
+                                                              projcurve_options *opts,
+                                                              projcurve_progress_fn fn,
+                                                              void *user);
+
+/* The progress callback and its user pointer (either output may be NULL;
+ * NULL when none is set). Statuses: OK, NULL_ARGUMENT (opts). */
+PROJCURVE_API projcurve_status projcurve_options_get_progress(projcurve_context *ctx,
+                                                              const projcurve_options *opts,
+                                                              projcurve_progress_fn *fn,
+                                                              void **user);
 
 /* ======================================================================== */
 /* Curves                                                                    */
@@ -437,10 +494,19 @@ typedef struct projcurve_result projcurve_result;
  * are then the pcurve of those pieces only — the traced polyline beyond them
  * is dropped — and its t range ends with its last piece; every later branch
  * has no pieces and keeps its traced polyline.
+ * PROJCURVE_OPT_TIME_LIMIT and PROJCURVE_OPT_MAX_WORK also give
+ * LIMIT_REACHED, and a progress callback that asks to stop
+ * (projcurve_options_set_progress) gives PROJCURVE_ERR_CANCELLED, both
+ * with *out set to the partial result and the context's message saying
+ * which: stopped while composing, the result is the one described above
+ * for MAX_PIECES at that point; stopped while tracing, no branch is
+ * composed (none has pieces), the branch being traced ends with
+ * PROJCURVE_END_LIMIT (unless it had a single point, which is dropped) and
+ * the branches born later in the curve are missing.
  * A curve that misses the surface gives OK and a result with no branches.
- * Statuses: OK, LIMIT_REACHED, NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION,
- * OUT_OF_RANGE (tolerances), CALLBACK, NO_MEMORY. Thread-safe for distinct
- * contexts; the inputs are only read. */
+ * Statuses: OK, LIMIT_REACHED, CANCELLED, NULL_ARGUMENT, NOT_FINITE,
+ * ZERO_DIRECTION, OUT_OF_RANGE (tolerances), CALLBACK, NO_MEMORY.
+ * Thread-safe for distinct contexts; the inputs are only read. */
 PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *ctx,
                                                              const projcurve_surface *surface,
                                                              const projcurve_curve *curve,
@@ -456,7 +522,7 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
  * (the pole of a NURBS sphere, the apex of a cone) is a boundary: a branch
  * through it ends there with PROJCURVE_END_BOUNDARY and continues as one
  * starting with PROJCURVE_START_BOUNDARY. Same result and statuses as the
- * directional projection (ZERO_DIRECTION aside). */
+ * directional projection (ZERO_DIRECTION aside), CANCELLED included. */
 PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
                                                             const projcurve_surface *surface,
                                                             const projcurve_curve *curve,
@@ -480,7 +546,9 @@ typedef int (*projcurve_implicit_fn)(void *user, const double x[3], double *valu
  * cannot continue. model_size sets the scale for relative tolerances (> 0).
  * Statuses: as projcurve_project_orthogonal, plus INVALID_ARGUMENT
  * (model_size <= 0), CALLBACK (fn failed or gave NaN/inf), SINGULAR
- * (zero gradient) and NOT_CONVERGED (no foot point of P(t0) found). */
+ * (zero gradient) and NOT_CONVERGED (no foot point of P(t0) found). A
+ * limit or a cancel while fitting keeps the pieces made up to it; the
+ * branch then ends with PROJCURVE_END_LIMIT. */
 PROJCURVE_API projcurve_status projcurve_project_orthogonal_implicit(projcurve_context *ctx,
                                                                      projcurve_implicit_fn fn,
                                                                      void *user,

@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#define PC_LAST_STATUS PROJCURVE_ERR_WRONG_KIND
+#define PC_LAST_STATUS PROJCURVE_ERR_CANCELLED
 
 static void test_status_strings(void)
 {
@@ -110,6 +110,8 @@ static const option_case option_cases[] = {
     {PROJCURVE_OPT_COMPOSE, PROJCURVE_OPTION_INTEGER, 0, 1, 1, 0},
     {PROJCURVE_OPT_JUMP_DETECTION, PROJCURVE_OPTION_INTEGER, 0, 1, 1, 0},
     {PROJCURVE_OPT_PCURVE_DEGREE, PROJCURVE_OPTION_INTEGER, 1, 3, 1, 0},
+    {PROJCURVE_OPT_TIME_LIMIT, PROJCURVE_OPTION_DOUBLE, 0.0, 1e9, 0.0, 0},
+    {PROJCURVE_OPT_MAX_WORK, PROJCURVE_OPTION_INTEGER, 0, 1099511627776.0, 0, 0},
 };
 #define N_OPTION_CASES (sizeof option_cases / sizeof option_cases[0])
 

@@ -7,6 +7,7 @@
 #include "bezier/bezier.h"
 #include "bezier/bvh.h"
 #include "bezier/tangent_boxes.h"
+#include "common/budget.h"
 #include "nurbs/nurbs.h"
 #include "projcurve.h"
 
@@ -49,6 +50,15 @@ struct projcurve_options {
     long long compose;
     long long jump_detection;
     long long pcurve_degree;   /* 1 or 3: PROJCURVE_OPT_PCURVE_DEGREE */
+    double time_limit;         /* seconds per call, 0 = none: PROJCURVE_OPT_TIME_LIMIT */
+    long long max_work;        /* units per call, 0 = none: PROJCURVE_OPT_MAX_WORK */
+    projcurve_progress_fn progress; /* projcurve_options_set_progress; NULL = none */
+    void *progress_user;
+    /* Not an option: the budget of the call under way, made from the
+     * fields above by the entry point in its resolved copy of the options
+     * (pc_projection_budget), so that every stage handed the options can
+     * poll it. NULL in a handle and outside a projection call: no budget. */
+    pc_budget *budget;
     /* No option key, not in the public API: 1 makes the jump sweep search
      * in full only where the criteria of seed 000 s3.4 ask (no periodic
      * full search), so that tests can show what the criteria alone find.

@@ -19,6 +19,9 @@
 #define PC_OPTION_SIZE_LIMIT 1099511627776.0
 /* Upper bound of lengths in model units: finite, far above any model. */
 #define PC_OPTION_LENGTH_LIMIT 1e300
+/* Upper bound of the time limit, seconds (~32 years): large enough to mean
+ * "none", small enough that start + limit stays exact to microseconds. */
+#define PC_OPTION_TIME_LIMIT 1e9
 
 typedef struct pc_option_desc {
     projcurve_option key;
@@ -60,6 +63,10 @@ static const pc_option_desc pc_option_table[] = {
      0.0, 1.0, 0, 1.0, PC_FIELD(jump_detection)},
     {PROJCURVE_OPT_PCURVE_DEGREE, "PCURVE_DEGREE", PROJCURVE_OPTION_INTEGER,
      1.0, 3.0, 0, 1.0, PC_FIELD(pcurve_degree)},
+    {PROJCURVE_OPT_TIME_LIMIT, "TIME_LIMIT", PROJCURVE_OPTION_DOUBLE,
+     0.0, PC_OPTION_TIME_LIMIT, 0, 0.0, PC_FIELD(time_limit)},
+    {PROJCURVE_OPT_MAX_WORK, "MAX_WORK", PROJCURVE_OPTION_INTEGER,
+     0.0, PC_OPTION_SIZE_LIMIT, 0, 0.0, PC_FIELD(max_work)},
 };
 
 /* Integer options whose bounds admit values that mean nothing: the values
@@ -169,6 +176,9 @@ void pc_options_defaults(struct projcurve_options *o)
             *pc_option_int(o, d) = (long long)d->default_value;
     }
     o->sweep_criteria_only = 0;
+    o->progress = NULL;
+    o->progress_user = NULL;
+    o->budget = NULL;
 }
 
 projcurve_status projcurve_options_create(projcurve_context *ctx, projcurve_options **out)
@@ -267,5 +277,26 @@ projcurve_status projcurve_options_get_int(projcurve_context *ctx,
     if (s != PROJCURVE_OK)
         return s;
     *value = *pc_option_int_c(opts, d);
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_options_set_progress(projcurve_context *ctx, projcurve_options *opts,
+                                                projcurve_progress_fn fn, void *user)
+{
+    PC_REQUIRE(ctx, opts, "options");
+    opts->progress = fn;
+    opts->progress_user = fn != NULL ? user : NULL;
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_options_get_progress(projcurve_context *ctx,
+                                                const projcurve_options *opts,
+                                                projcurve_progress_fn *fn, void **user)
+{
+    PC_REQUIRE(ctx, opts, "options");
+    if (fn != NULL)
+        *fn = opts->progress;
+    if (user != NULL)
+        *user = opts->progress_user;
     return PROJCURVE_OK;
 }

@@ -77,17 +77,5 @@ projcurve_status projcurve_surface_foot_points(projcurve_context *ctx,
     projcurve_status st = check_point(ctx, p);
     if (st != PROJCURVE_OK)
         return st;
-    pc_foot_list list = {NULL, 0, 0};
-    st = pc_surface_foot_points(ctx, surface, vec3_load(p), &list);
-    if (st != PROJCURVE_OK) {
-        pc_foot_list_free(&list);
-        return st;
-    }
-    for (size_t k = 0; k < list.count && k < capacity; ++k) {
-        uv[2 * k] = list.items[k].u;
-        uv[2 * k + 1] = list.items[k].v;
-    }
-    *count = list.count;
-    pc_foot_list_free(&list);
-    return PROJCURVE_OK;
+    return pc_surface_foot_points_uv(ctx, surface, vec3_load(p), NULL, capacity, uv, count);
 }

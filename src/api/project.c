@@ -15,11 +15,24 @@
 #include "trace/result.h"
 #include "trace/trace.h"
 
-/* Names of the option keys for messages, indexed by key. */
+/* Names of the option keys for messages, indexed by key (NULL: no such
+ * key; the loop below skips it). */
 static const char *const pc_option_names[] = {
-    "?", "TOL_DISTANCE", "TOL_ANGLE_DEG", "NEWTON_TOL", "NEWTON_MAX_ITER", "METHOD",
-    "PARAM_STEP", "ARC_STEP_FRACTION", "MAX_POINTS", "MAX_PIECES", "COMPOSE",
-    "JUMP_DETECTION", "PCURVE_DEGREE"};
+    [PROJCURVE_OPT_TOL_DISTANCE] = "TOL_DISTANCE",
+    [PROJCURVE_OPT_TOL_ANGLE_DEG] = "TOL_ANGLE_DEG",
+    [PROJCURVE_OPT_NEWTON_TOL] = "NEWTON_TOL",
+    [PROJCURVE_OPT_NEWTON_MAX_ITER] = "NEWTON_MAX_ITER",
+    [PROJCURVE_OPT_METHOD] = "METHOD",
+    [PROJCURVE_OPT_PARAM_STEP] = "PARAM_STEP",
+    [PROJCURVE_OPT_ARC_STEP_FRACTION] = "ARC_STEP_FRACTION",
+    [PROJCURVE_OPT_MAX_POINTS] = "MAX_POINTS",
+    [PROJCURVE_OPT_MAX_PIECES] = "MAX_PIECES",
+    [PROJCURVE_OPT_COMPOSE] = "COMPOSE",
+    [PROJCURVE_OPT_JUMP_DETECTION] = "JUMP_DETECTION",
+    [PROJCURVE_OPT_PCURVE_DEGREE] = "PCURVE_DEGREE",
+    [PROJCURVE_OPT_TIME_LIMIT] = "TIME_LIMIT",
+    [PROJCURVE_OPT_MAX_WORK] = "MAX_WORK"};
+#define PC_OPTION_NAME_COUNT (sizeof pc_option_names / sizeof pc_option_names[0])
 
 projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_options *opts,
                                     struct projcurve_options *out)
@@ -28,11 +41,12 @@ projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_opti
         pc_options_defaults(out);
         return PROJCURVE_OK;
     }
-    for (int key = PROJCURVE_OPT_TOL_DISTANCE; key <= PROJCURVE_OPT_PCURVE_DEGREE; ++key) {
+    for (int key = 0; key < (int)PC_OPTION_NAME_COUNT; ++key) {
         projcurve_option_type type;
         double lo, hi, value;
-        if (projcurve_option_info(NULL, (projcurve_option)key, &type, &lo, &hi, NULL) !=
-            PROJCURVE_OK)
+        if (pc_option_names[key] == NULL ||
+            projcurve_option_info(NULL, (projcurve_option)key, &type, &lo, &hi, NULL) !=
+                PROJCURVE_OK)
             continue;
         if (type == PROJCURVE_OPTION_DOUBLE) {
             projcurve_options_get_double(NULL, opts, (projcurve_option)key, &value);
@@ -63,6 +77,13 @@ projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_o
     if (st == PROJCURVE_OK)
         out->tol_distance = eps_d;
     return st;
+}
+
+void pc_projection_budget(pc_budget *b, struct projcurve_options *o)
+{
+    pc_budget_init(b, o->time_limit, (unsigned long long)o->max_work, o->progress,
+                   o->progress_user);
+    o->budget = b;
 }
 
 /* Unit direction from dir; statuses NOT_FINITE, ZERO_DIRECTION. Scaling by
@@ -100,6 +121,9 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     if (st != PROJCURVE_OK)
         return st;
 
+    pc_budget budget;
+    pc_projection_budget(&budget, &o);
+    pc_budget_stage(&budget, 0.0, o.compose ? 0.5 : 1.0);
     pc_projector proj;
     pc_directional_data data;
     pc_directional_cache cache;
@@ -123,17 +147,22 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
         r->stats.tol_distance = o.tol_distance;
         st = pc_trace_branches(ctx, &proj, &o, &finder.base, &config, r);
     }
-    /* tolerance control and composition also on a partial result */
-    if (o.compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED)) {
+    /* tolerance control and composition also on a result cut by
+     * MAX_POINTS; not once the budget is spent (the traced polylines stay) */
+    if (o.compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED) &&
+        pc_budget_status(&budget) == PROJCURVE_OK) {
+        pc_budget_stage(&budget, 0.5, 1.0);
         const projcurve_status cs = pc_refine_and_compose(ctx, &proj, &o, r);
         if (cs != PROJCURVE_OK)
             st = cs;
     }
-    if (cache.callback_failed && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))
+    if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     pc_line_finder_free(&finder);
     free(bound_table);
-    if (st != PROJCURVE_OK && st != PROJCURVE_ERR_LIMIT_REACHED) {
+    if (st == PROJCURVE_OK)
+        pc_budget_finish(&budget);
+    if (!pc_status_keeps_result(st)) {
         projcurve_result_destroy(r);
         return st;
     }

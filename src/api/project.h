@@ -19,4 +19,16 @@ projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_opti
 projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_options *opts,
                                        double model_size, struct projcurve_options *out);
 
+/* Makes the call's budget from o's TIME_LIMIT, MAX_WORK and progress
+ * callback and points o->budget at it (o: the call's resolved copy). */
+void pc_projection_budget(pc_budget *b, struct projcurve_options *o);
+
+/* 1 for the statuses with which a projection still returns its result:
+ * OK and the partial results of LIMIT_REACHED and CANCELLED. */
+static inline int pc_status_keeps_result(projcurve_status st)
+{
+    return st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED ||
+           st == PROJCURVE_ERR_CANCELLED;
+}
+
 #endif /* PC_API_PROJECT_H */

@@ -38,6 +38,9 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     const projcurve_status st = pc_projection_options(ctx, opts, surface->size, &o);
     if (st != PROJCURVE_OK)
         return st;
+    pc_budget budget;
+    pc_projection_budget(&budget, &o);
+    pc_budget_stage(&budget, 0.0, o.compose ? 0.5 : 1.0);
 
     pc_ortho_cache cache;
     pc_projector proj;
@@ -45,15 +48,17 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     pc_ortho_finder_state finder_state;
     pc_seed_finder finder;
     pc_ortho_finder_init(&finder, &finder_state, surface, curve);
+    finder_state.budget = o.budget; /* a foot-point search can take long */
     const pc_trace_config config = {0.0, surface->size};
 
     projcurve_result *r = NULL;
     projcurve_status status = pc_result_create(ctx, 3, &r);
     if (status == PROJCURVE_OK)
         status = pc_trace_branches(ctx, &proj, &o, &finder, &config, r);
-    /* A partial result (LIMIT_REACHED) is finished like a whole one. */
+    /* A partial result (LIMIT_REACHED, CANCELLED) is finished like a whole
+     * one, except that a spent budget leaves it uncomposed. */
     const projcurve_status traced = status;
-    if (status == PROJCURVE_ERR_LIMIT_REACHED)
+    if (pc_status_keeps_result(status))
         status = PROJCURVE_OK;
     if (status == PROJCURVE_OK)
         status = pc_ortho_split_at_centres(ctx, &proj, r);
@@ -61,17 +66,21 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
         pc_ortho_drop_duplicates(&proj, r);
         name_singular_ends(r);
         r->stats.tol_distance = o.tol_distance;
-        if (o.compose)
+        if (o.compose && pc_budget_status(&budget) == PROJCURVE_OK) {
+            pc_budget_stage(&budget, 0.5, 1.0);
             status = pc_refine_and_compose(ctx, &proj, &o, r);
+        }
     }
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */
-    if (cache.callback_failed && (status == PROJCURVE_OK || status == PROJCURVE_ERR_LIMIT_REACHED))
+    if (cache.callback_failed && pc_status_keeps_result(status))
         status = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "a curve callback failed while tracing");
     if (status == PROJCURVE_OK)
         status = traced;
     pc_ortho_finder_free(&finder_state);
-    if (status != PROJCURVE_OK && status != PROJCURVE_ERR_LIMIT_REACHED) {
+    if (status == PROJCURVE_OK)
+        pc_budget_finish(&budget);
+    if (!pc_status_keeps_result(status)) {
         projcurve_result_destroy(r);
         return status;
     }
@@ -96,6 +105,9 @@ projcurve_status projcurve_project_orthogonal_implicit(
     if (st != PROJCURVE_OK)
         return st;
     const double eps_d = o.tol_distance;
+    pc_budget budget;
+    pc_projection_budget(&budget, &o);
+    pc_budget_stage(&budget, 0.0, o.compose ? 0.5 : 1.0);
 
     pc_implicit imp;
     imp.fn = fn;
@@ -110,9 +122,13 @@ projcurve_status projcurve_project_orthogonal_implicit(
     projcurve_status status = pc_result_create(ctx, 4, &r);
     if (status == PROJCURVE_OK)
         status = pc_implicit_trace(ctx, &imp, &o, r);
-    if (status == PROJCURVE_OK && o.compose)
+    if (status == PROJCURVE_OK && o.compose) {
+        pc_budget_stage(&budget, 0.5, 1.0);
         status = pc_implicit_fit(ctx, &imp, eps_d, &o, r);
-    if (status != PROJCURVE_OK && status != PROJCURVE_ERR_LIMIT_REACHED) {
+    }
+    if (status == PROJCURVE_OK)
+        pc_budget_finish(&budget);
+    if (!pc_status_keeps_result(status)) {
         projcurve_result_destroy(r);
         return status;
     }

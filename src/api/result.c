@@ -2,6 +2,7 @@
  * The result accessors of projcurve.h: branches, their traced polylines,
  * composed pieces, statistics, and a branch joined into one NURBS curve.
  */
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -202,6 +203,9 @@ projcurve_status projcurve_result_branch_curve(projcurve_context *ctx,
         if (b->pieces[i].degree > deg)
             deg = b->pieces[i].degree;
     const size_t d = (size_t)deg, np = b->n_pieces;
+    if (np > (SIZE_MAX / (3 * sizeof(double)) - 2 * d - 2) / d)
+        return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "branch %zu: %zu pieces of degree %zu overflow",
+                       branch, np, d);
     const size_t n_ctrl = np * d + 1, n_knots = n_ctrl + d + 1;
     double *ctrl = malloc(3 * n_ctrl * sizeof *ctrl);
     double *weights = malloc(n_ctrl * sizeof *weights);

@@ -24,7 +24,7 @@ static const char *const pc_status_names[] = {
     [PROJCURVE_ERR_NO_MEMORY] = "out of memory",
     [PROJCURVE_ERR_VERSION] = "version mismatch",
     [PROJCURVE_ERR_NOT_CONVERGED] = "iteration did not converge",
-    [PROJCURVE_ERR_LIMIT_REACHED] = "size limit reached",
+    [PROJCURVE_ERR_LIMIT_REACHED] = "size, time or work limit reached",
     [PROJCURVE_ERR_CALLBACK] = "callback failed",
     [PROJCURVE_ERR_SINGULAR] = "singular configuration",
     [PROJCURVE_ERR_IO] = "input/output error",
@@ -32,6 +32,7 @@ static const char *const pc_status_names[] = {
     [PROJCURVE_ERR_UNSUPPORTED] = "unsupported input",
     [PROJCURVE_ERR_INDEX] = "index out of range",
     [PROJCURVE_ERR_WRONG_KIND] = "wrong kind of handle or value",
+    [PROJCURVE_ERR_CANCELLED] = "cancelled by the progress callback",
 };
 
 #define PC_STATUS_COUNT (sizeof pc_status_names / sizeof pc_status_names[0])

@@ -1,6 +1,7 @@
 /*
  * projcurve project FILE... (--dir X,Y,Z | --orthogonal) [--tol D]
- *   [--angle DEG] [--pcurve-degree 1|3] [-o OUT.igs] [--svg OUT.svg] [--json OUT.json]
+ *   [--angle DEG] [--pcurve-degree 1|3] [--timeout S] [-o OUT.igs] [--svg OUT.svg]
+ *   [--json OUT.json]
  */
 #include <math.h>
 #include <stdlib.h>
@@ -11,8 +12,8 @@
 static void project_usage(FILE *out)
 {
     fputs("usage: projcurve project FILE... (--dir X,Y,Z | --orthogonal) [--tol D]\n"
-          "                         [--angle DEG] [--pcurve-degree 1|3] [-o OUT.igs]\n"
-          "                         [--svg OUT.svg] [--json OUT.json]\n"
+          "                         [--angle DEG] [--pcurve-degree 1|3] [--timeout S]\n"
+          "                         [-o OUT.igs] [--svg OUT.svg] [--json OUT.json]\n"
           "\n"
           "Projects every curve of the files onto every surface of the files.\n"
           "\n"
@@ -23,6 +24,8 @@ static void project_usage(FILE *out)
           "  --angle DEG     joint angle tolerance eps_T in degrees (default 1)\n"
           "  --pcurve-degree N  pieces' (u, v) curves: 1 straight (default), 3 cubic\n"
           "                  Hermite (far fewer pieces at tight eps_D)\n"
+          "  --timeout S     stop each (curve, surface) projection after S seconds of\n"
+          "                  wall time, keeping what it made (0: no limit, default)\n"
           "  -o OUT.igs      write surfaces, curves and branches as IGES 5.3\n"
           "  --svg OUT.svg   write a picture\n"
           "  --json OUT.json write the branches as JSON (see docs/cli.md)\n"
@@ -36,8 +39,8 @@ typedef struct project_args {
     size_t n_files;
     int have_dir, orthogonal;
     double dir[3];
-    double tol, angle, pcurve_degree;
-    int have_tol, have_angle, have_pcurve_degree;
+    double tol, angle, pcurve_degree, timeout;
+    int have_tol, have_angle, have_pcurve_degree, have_timeout;
     const char *iges, *svg, *json;
 } project_args;
 
@@ -73,6 +76,12 @@ static int parse(int argc, char **argv, project_args *a)
             if (!cli_parse_double(v, target))
                 return cli_usage_error("%s wants a number, got '%s'", arg, v);
             *(arg[2] == 't' ? &a->have_tol : &a->have_angle) = 1;
+        } else if (strcmp(arg, "--timeout") == 0) {
+            if ((v = value_of(argc, argv, &i)) == NULL)
+                return CLI_EXIT_USAGE;
+            if (!cli_parse_double(v, &a->timeout))
+                return cli_usage_error("%s wants a number of seconds, got '%s'", arg, v);
+            a->have_timeout = 1;
         } else if (strcmp(arg, "--pcurve-degree") == 0) {
             if ((v = value_of(argc, argv, &i)) == NULL)
                 return CLI_EXIT_USAGE;
@@ -113,6 +122,9 @@ static int make_options(projcurve_context *ctx, const project_args *a, projcurve
         projcurve_options_set_int(ctx, *opts, PROJCURVE_OPT_PCURVE_DEGREE,
                                   (long long)a->pcurve_degree) != PROJCURVE_OK)
         return cli_usage_error("--pcurve-degree: %s", projcurve_context_message(ctx));
+    if (a->have_timeout && projcurve_options_set_double(ctx, *opts, PROJCURVE_OPT_TIME_LIMIT,
+                                                        a->timeout) != PROJCURVE_OK)
+        return cli_usage_error("--timeout: %s", projcurve_context_message(ctx));
     return CLI_EXIT_OK;
 }
 

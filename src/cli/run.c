@@ -28,8 +28,10 @@ int cli_run(projcurve_context *ctx, cli_job *job)
             if (p->status != PROJCURVE_OK) {
                 fprintf(stderr, "projcurve: curve %zu onto surface %zu: %s: %s\n", c, s,
                         projcurve_status_string(p->status), projcurve_context_message(ctx));
-                /* A partial result (size limit) is kept and reported. */
-                if (p->status != PROJCURVE_ERR_LIMIT_REACHED)
+                /* A partial result (a size, time or work limit, or a
+                 * cancel) is kept and reported. */
+                if (p->status != PROJCURVE_ERR_LIMIT_REACHED &&
+                    p->status != PROJCURVE_ERR_CANCELLED)
                     p->result = NULL;
                 ++job->failures;
             }

@@ -103,8 +103,10 @@ static projcurve_status add_piece(projcurve_context *ctx, pc_branch *b,
  * within eps_D gets the exact midpoint inserted as a vertex and is tried
  * again, so the loop is bounded by the point limit. */
 static projcurve_status fit_branch(projcurve_context *ctx, const pc_implicit *imp, double eps_d,
-                                   long long max_points, pc_branch *b, pc_stats *stats)
+                                   const struct projcurve_options *opts, pc_branch *b,
+                                   pc_stats *stats)
 {
+    const long long max_points = opts->max_points;
     pc_branch_clear_pieces(b);
     if (b->n_points < 2)
         return PROJCURVE_OK;
@@ -113,6 +115,18 @@ static projcurve_status fit_branch(projcurve_context *ctx, const pc_implicit *im
     projcurve_status status = point_of(ctx, imp, b, 0, &a);
     size_t i = 0;
     while (status == PROJCURVE_OK && i + 1 < b->n_points) {
+        /* a segment tried is the budget's unit; pieces are bounded by
+         * MAX_PIECES before they are allocated */
+        if (pc_budget_check(opts->budget, (double)i / (double)(b->n_points - 1)) !=
+                PROJCURVE_OK ||
+            stats->pieces >= (double)opts->max_pieces) {
+            b->end = PROJCURVE_END_LIMIT;
+            return pc_budget_status(opts->budget) != PROJCURVE_OK
+                       ? pc_budget_fail(opts->budget, ctx)
+                       : pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
+                                 "fitting the implicit projection reached the piece limit %lld",
+                                 opts->max_pieces);
+        }
         status = point_of(ctx, imp, b, i + 1, &e);
         if (status != PROJCURVE_OK)
             break;
@@ -154,7 +168,7 @@ projcurve_status pc_implicit_fit(projcurve_context *ctx, const pc_implicit *imp,
 {
     for (size_t k = 0; k < r->n_branches; ++k) {
         const projcurve_status status =
-            fit_branch(ctx, imp, eps_d, opts->max_points, &r->branches[k], &r->stats);
+            fit_branch(ctx, imp, eps_d, opts, &r->branches[k], &r->stats);
         if (status != PROJCURVE_OK)
             return status;
     }

@@ -251,7 +251,13 @@ projcurve_status pc_implicit_trace(projcurve_context *ctx, pc_implicit *imp,
 
     double ds = run.ds_nominal;
     const long long max_points = opts->max_points;
+    const double t0 = imp->curve->t0, t_span = imp->curve->t1 - t0;
     while (cur.t < imp->curve->t1) {
+        /* a step (prediction and correction) is the budget's unit */
+        if (pc_budget_check(opts->budget, (cur.t - t0) / t_span) != PROJCURVE_OK) {
+            branch->end = PROJCURVE_END_LIMIT;
+            return pc_budget_fail(opts->budget, ctx);
+        }
         int ended = 0;
         projcurve_branch_end end = PROJCURVE_END_FAILED;
         status = step(ctx, &run, &cur, &ds, &ended, &end);

@@ -1,9 +1,11 @@
 #include "ortho/ortho_seeds.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "common/error.h"
 #include "ortho/collapsed.h"
+#include "point/point.h"
 
 /* Initial capacity of the foot-point buffer; it grows when a search finds
  * more (the geometry reports the full count). */
@@ -14,9 +16,9 @@ static projcurve_status grow(projcurve_context *ctx, pc_ortho_finder_state *st, 
     if (need <= st->capacity)
         return PROJCURVE_OK;
     size_t cap = st->capacity ? st->capacity : ORTHO_FOOT_CAPACITY;
-    while (cap < need)
+    while (cap < need && cap <= SIZE_MAX / (4 * sizeof *st->uv))
         cap *= 2;
-    double *uv = realloc(st->uv, 2 * cap * sizeof *uv);
+    double *uv = cap >= need ? realloc(st->uv, 2 * cap * sizeof *uv) : NULL;
     if (uv == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for %zu foot points", need);
     st->uv = uv;
@@ -62,17 +64,16 @@ static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx,
     pc_vec3 p;
     if (pc_curve_eval(st->curve, t, 0, NULL, &p) != PROJCURVE_OK)
         return pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "curve callback failed at t = %.17g", t);
-    const double point[3] = {p.x, p.y, p.z};
     projcurve_status status = grow(ctx, st, ORTHO_FOOT_CAPACITY);
     size_t count = 0;
     if (status == PROJCURVE_OK)
-        status = projcurve_surface_foot_points(ctx, st->surface, point, st->capacity, st->uv,
-                                               &count);
+        status = pc_surface_foot_points_uv(ctx, st->surface, p, st->budget, st->capacity,
+                                           st->uv, &count);
     if (status == PROJCURVE_OK && count > st->capacity) {
         status = grow(ctx, st, count);
         if (status == PROJCURVE_OK)
-            status = projcurve_surface_foot_points(ctx, st->surface, point, st->capacity,
-                                                   st->uv, &count);
+            status = pc_surface_foot_points_uv(ctx, st->surface, p, st->budget, st->capacity,
+                                               st->uv, &count);
         if (count > st->capacity)
             count = st->capacity;
     }
@@ -127,6 +128,7 @@ void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
     state->uv = NULL;
     state->capacity = 0;
     state->known = (pc_seed_list){0};
+    state->budget = NULL;
     finder->find = ortho_find;
     finder->may_jump = ortho_may_jump;
     finder->reset = ortho_reset;

@@ -35,6 +35,7 @@ typedef struct pc_ortho_finder_state {
     pc_seed_list known;     /* the active points given to that may_jump */
     double *uv;             /* foot-point buffer, 2 doubles per point */
     size_t capacity;        /* points the buffer holds */
+    pc_budget *budget;      /* the call's, polled inside each search (NULL: none) */
 } pc_ortho_finder_state;
 
 /* Number of full foot-point searches per curve domain in the mid-curve

@@ -15,6 +15,7 @@
  * converges to the foot point of its own basin. Duplicates (a foot point on
  * a shared edge is found from both sides) are merged at the end.
  */
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -40,6 +41,7 @@ typedef struct feet_search {
     size_t starts;
     projcurve_status status;
     projcurve_context *ctx;
+    pc_budget *budget; /* NULL: none */
 } feet_search;
 
 void pc_foot_list_free(pc_foot_list *list)
@@ -54,7 +56,8 @@ static int push_foot(feet_search *fs, double u, double v)
     pc_foot_list *l = fs->list;
     if (l->count == l->capacity) {
         const size_t cap = l->capacity ? 2 * l->capacity : 16;
-        pc_surface_point *items = realloc(l->items, cap * sizeof *items);
+        pc_surface_point *items =
+            cap <= SIZE_MAX / sizeof *items ? realloc(l->items, cap * sizeof *items) : NULL;
         if (items == NULL) {
             fs->status = pc_fail(fs->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for foot points");
             return 0;
@@ -103,6 +106,9 @@ static pc_subdiv_action decide_feet(void *user, const pc_subpatch *sp)
     feet_search *fs = user;
     const pc_nurbs_surface *n = &fs->s->nurbs;
     if (fs->status != PROJCURVE_OK)
+        return PC_SUBDIV_DROP;
+    /* a sub-patch is a unit of the call's budget (0: no news of progress) */
+    if (pc_budget_check(fs->budget, 0.0) != PROJCURVE_OK)
         return PC_SUBDIV_DROP;
     if (!pc_subpatch_may_hold_foot(sp, n->deg_u, n->deg_v, n->rational, fs->p))
         return PC_SUBDIV_DROP;
@@ -185,11 +191,11 @@ static int search_patch(void *user, size_t patch_index)
 
 /* The search over the patches the BVH walk keeps (use_tree) or over all. */
 static projcurve_status foot_points(projcurve_context *ctx, const projcurve_surface *s, pc_vec3 p,
-                                    int use_tree, pc_foot_list *list)
+                                    int use_tree, pc_budget *budget, pc_foot_list *list)
 {
     list->count = 0;
     pc_subdiv_work work;
-    feet_search fs = {s, p, &work, list, 0, PROJCURVE_OK, ctx};
+    feet_search fs = {s, p, &work, list, 0, PROJCURVE_OK, ctx, budget};
     projcurve_status st = pc_subdiv_work_init(ctx, fs.work, s->nurbs.deg_u, s->nurbs.deg_v);
     if (st != PROJCURVE_OK)
         return st;
@@ -210,12 +216,29 @@ static projcurve_status foot_points(projcurve_context *ctx, const projcurve_surf
 projcurve_status pc_surface_foot_points(projcurve_context *ctx, const projcurve_surface *s,
                                         pc_vec3 p, pc_foot_list *list)
 {
-    return foot_points(ctx, s, p, 1, list);
+    return foot_points(ctx, s, p, 1, NULL, list);
+}
+
+projcurve_status pc_surface_foot_points_uv(projcurve_context *ctx, const projcurve_surface *s,
+                                           pc_vec3 p, pc_budget *budget, size_t capacity,
+                                           double *uv, size_t *count)
+{
+    pc_foot_list list = {NULL, 0, 0};
+    const projcurve_status st = foot_points(ctx, s, p, 1, budget, &list);
+    if (st == PROJCURVE_OK) {
+        for (size_t k = 0; k < list.count && k < capacity; ++k) {
+            uv[2 * k] = list.items[k].u;
+            uv[2 * k + 1] = list.items[k].v;
+        }
+        *count = list.count;
+    }
+    pc_foot_list_free(&list);
+    return st;
 }
 
 projcurve_status pc_surface_foot_points_exhaustive(projcurve_context *ctx,
                                                    const projcurve_surface *s, pc_vec3 p,
                                                    pc_foot_list *list)
 {
-    return foot_points(ctx, s, p, 0, list);
+    return foot_points(ctx, s, p, 0, NULL, list);
 }

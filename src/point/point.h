@@ -47,6 +47,17 @@ void pc_foot_list_free(pc_foot_list *list);
 projcurve_status pc_surface_foot_points(projcurve_context *ctx, const projcurve_surface *s,
                                         pc_vec3 p, pc_foot_list *list);
 
+/* pc_surface_foot_points into the caller's array, as
+ * projcurve_surface_foot_points gives them (up to capacity (u, v) pairs,
+ * *count = the number found), polling budget (may be NULL) once per
+ * sub-patch examined: a search on a large surface is long enough to need
+ * it. Once the budget stops the call, the search ends with the feet found
+ * so far (the caller sees the budget's status at its next poll).
+ * Statuses: OK, NO_MEMORY. */
+projcurve_status pc_surface_foot_points_uv(projcurve_context *ctx, const projcurve_surface *s,
+                                           pc_vec3 p, pc_budget *budget, size_t capacity,
+                                           double *uv, size_t *count);
+
 /* The same search without the BVH culling (every patch subdivided): the
  * reference that the culled search must agree with (tests). */
 projcurve_status pc_surface_foot_points_exhaustive(projcurve_context *ctx,

@@ -107,11 +107,17 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
         return st;
     const pc_rvertex *tv = l->traced.items;
     const size_t nt = l->traced.count;
+    l->out.count = 0; /* what store_branch finds if the budget stops step 1 */
+    r->t_lo = tv[0].t;
     r->t_range = tv[nt - 1].t - tv[0].t;
     r->min_dt = PC_REFINE_MIN_DT_REL * r->t_range;
-    /* 1. knot-line crossings: an intermediate list, outside the piece budget */
+    /* 1. knot-line crossings: an intermediate list. Each crossing is an
+     * output vertex below, so more crossings than the pieces left would
+     * pass the piece limit anyway: the list stops at nt + that many
+     * vertices (its memory is bounded before it grows) and the march
+     * meets the limit where it would have without the cap. */
     const size_t budget = r->max_vertices;
-    r->max_vertices = SIZE_MAX;
+    r->max_vertices = nt + budget + 1;
     r->guide = tv;
     r->n_guide = nt;
     l->crossed.count = 0;
@@ -119,6 +125,11 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
     for (size_t k = 0; k + 1 < nt && st == PROJCURVE_OK; ++k)
         st = pc_refine_split(r, &tv[k], &tv[k + 1], 0, &l->crossed);
     r->max_vertices = budget;
+    const int capped = st == PROJCURVE_ERR_LIMIT_REACHED && pc_budget_status(r->budget) == PROJCURVE_OK;
+    if (capped) {
+        st = PROJCURVE_OK;
+        r->limit_hit = 0;
+    }
     if (st != PROJCURVE_OK)
         return st;
     l->crossed.items[l->crossed.count - 1].fixed = 1;
@@ -142,6 +153,10 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
             st = r->pcurve_degree == 3 ? pc_refine_march_cubic(r, from, to, &l->out)
                                        : pc_refine_march(r, from, to, &l->out);
         start = k;
+    }
+    if (st == PROJCURVE_OK && capped) { /* (the march always meets the limit first) */
+        r->limit_hit = 1;
+        return PROJCURVE_ERR_LIMIT_REACHED;
     }
     /* (the angle pass splits straight segments; cubic pieces are G1) */
     if (st == PROJCURVE_OK && r->forced > 0 && r->pcurve_degree == 1)
@@ -268,7 +283,8 @@ static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_
             return st;
         ++runs;
     }
-    if (runs == 0) /* nothing could be composed: the traced polyline stays */
+    if (runs == 0 && last_end != PROJCURVE_END_LIMIT) /* nothing could be composed:
+                                                         the traced polyline stays */
         res->branches[i].end = PROJCURVE_END_FAILED;
     return PROJCURVE_OK;
 }
@@ -292,6 +308,7 @@ static void refiner_init(pc_refiner *r, projcurve_context *ctx, const pc_project
     /* cubic pcurves only where the composed degree fits (projcurve.h) */
     const int sum = s->nurbs.deg_u + s->nurbs.deg_v;
     r->pcurve_degree = o->pcurve_degree == 3 && 3 * sum <= 2 * PROJCURVE_MAX_DEGREE ? 3 : 1;
+    r->budget = o->budget;
 }
 
 projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projector *proj,
@@ -338,6 +355,8 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
             continue;
         int descending = 0;
         r.max_vertices = max_pieces - pieces + 1;
+        r.progress_lo = (double)i / (double)n_traced;
+        r.progress_width = 1.0 / (double)n_traced;
         st = refine_branch(&r, b, &lists, &descending);
         if (st == PROJCURVE_ERR_LIMIT_REACHED) {
             b->end = PROJCURVE_END_LIMIT;
@@ -352,7 +371,9 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
     }
     refine_lists_free(&lists);
     res->stats.pieces = (double)pieces;
-    if (st == PROJCURVE_OK && r.limit_hit)
+    if (st == PROJCURVE_OK && pc_budget_status(r.budget) != PROJCURVE_OK)
+        st = pc_budget_fail(r.budget, ctx);
+    else if (st == PROJCURVE_OK && r.limit_hit)
         st = pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
                      "the piece limit %lld was reached; the pieces made so far are kept",
                      opts->max_pieces);

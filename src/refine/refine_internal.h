@@ -92,6 +92,12 @@ typedef struct pc_refiner {
     double last_d[2];
     size_t hint_u, hint_v;
     int pcurve_degree;   /* 1 (straight segments) or 3 (cubic Hermite) */
+    /* The call's budget (NULL: none), polled once per output vertex: the
+     * work between two is bounded (the march's rejections, a split's
+     * depth). The branch being refined covers the stage's progress
+     * [progress_lo, progress_lo + progress_width] over its t from t_lo. */
+    pc_budget *budget;
+    double progress_lo, progress_width, t_lo;
 } pc_refiner;
 
 /* vertices.c */
@@ -99,8 +105,8 @@ projcurve_status pc_vertex_list_push(projcurve_context *ctx, pc_vertex_list *lis
                                      const pc_rvertex *v);
 void pc_vertex_list_free(pc_vertex_list *list);
 
-/* Appends v to the output list unless the vertex budget is spent (then sets
- * r->limit_hit and returns LIMIT_REACHED). */
+/* Appends v to the output list unless the vertex budget or the call's
+ * budget is spent (then sets r->limit_hit and returns LIMIT_REACHED). */
 projcurve_status pc_refine_output(pc_refiner *r, pc_vertex_list *out, const pc_rvertex *v);
 /* Marks the last output vertex as a gap of the given kind, then appends v. */
 projcurve_status pc_refine_output_gap(pc_refiner *r, pc_vertex_list *out, const pc_rvertex *v,

@@ -38,7 +38,9 @@ void pc_vertex_list_free(pc_vertex_list *list)
 
 projcurve_status pc_refine_output(pc_refiner *r, pc_vertex_list *out, const pc_rvertex *v)
 {
-    if (out->count >= r->max_vertices) {
+    const double at = r->t_range > 0.0 ? (v->t - r->t_lo) / r->t_range : 0.0;
+    if (out->count >= r->max_vertices ||
+        pc_budget_check(r->budget, r->progress_lo + r->progress_width * at) != PROJCURVE_OK) {
         r->limit_hit = 1;
         return PROJCURVE_ERR_LIMIT_REACHED;
     }

@@ -29,6 +29,9 @@
 #define PC_SEED_SAME 1e-9
 /* The sweep checks every this fraction of the arc-length step. */
 #define PC_SWEEP_STEP_FRACTION 0.5
+/* With jump detection, the share of the tracing stage's progress that the
+ * branches seeded at the start of the curve take; the sweep has the rest. */
+#define PC_SWEEP_SHARE_START 0.5
 /* Largest arc-length step in t, as a multiple of the arc-step fraction of
  * the domain: the step where the projection barely moves stays sane. */
 #define PC_MAX_STEP_FACTOR 4.0
@@ -80,6 +83,8 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     tr->min_step = PC_TRACE_MIN_STEP * span;
     tr->max_points = (size_t)opts->max_points;
     tr->criteria_only = opts->sweep_criteria_only != 0;
+    tr->budget = opts->budget;
+    tr->progress_hi = 1.0;
 }
 
 static projcurve_branch_start start_reason(projcurve_branch_end backward_end)
@@ -300,6 +305,12 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
     const size_t max_checks = (size_t)(1.0 / PC_SWEEP_MIN_FRACTION) + 2;
     double t = tr->t_begin;
     for (size_t check = 0; check < max_checks && t < tr->t_end && !tr->limit_hit; ++check) {
+        /* a check (criteria, and maybe a full seed search) is a unit of
+         * the budget; branches born here are traced at this progress */
+        tr->progress_lo = tr->progress_hi = PC_SWEEP_SHARE_START +
+            (1.0 - PC_SWEEP_SHARE_START) * (t - tr->t_begin) / (tr->t_end - tr->t_begin);
+        if (pc_tracer_budget_spent(tr, t))
+            break;
         const double dt = sweep_step(tr, t);
         const double t_prev = t;
         t = t + dt >= tr->t_end ? tr->t_end : t + dt;
@@ -366,13 +377,19 @@ projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *p
     pc_seed_list seeds = {0};
     projcurve_status st = finder->find(finder, ctx, tr.t_begin, &seeds);
     drop_coincident(&tr, &seeds);
-    for (size_t k = 0; k < seeds.count && st == PROJCURVE_OK && !tr.limit_hit; ++k)
+    const double share = opts->jump_detection ? PC_SWEEP_SHARE_START : 1.0;
+    for (size_t k = 0; k < seeds.count && st == PROJCURVE_OK && !tr.limit_hit; ++k) {
+        tr.progress_lo = share * (double)k / (double)seeds.count;
+        tr.progress_hi = share * (double)(k + 1) / (double)seeds.count;
         st = start_branch(&tr, &seeds.items[k], SEED_AT_START);
+    }
     pc_seed_list_free(&seeds);
     if (st == PROJCURVE_OK && opts->jump_detection && !tr.limit_hit)
         st = sweep(&tr, finder);
     drop_single_points(r);
-    if (st == PROJCURVE_OK && tr.limit_hit)
+    if (st == PROJCURVE_OK && pc_budget_status(tr.budget) != PROJCURVE_OK)
+        st = pc_budget_fail(tr.budget, ctx);
+    else if (st == PROJCURVE_OK && tr.limit_hit)
         st = pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
                      "the limit of %zu traced points was reached", tr.max_points);
     return st;

@@ -6,6 +6,7 @@
  */
 #include "trace/line_seeds.h"
 
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "bezier/bvh.h"
@@ -64,7 +65,7 @@ static int collect_patch(void *user, size_t patch_index)
     pc_line_finder *f = user;
     if (f->n_patches == f->cap_patches) {
         const size_t cap = f->cap_patches ? 2 * f->cap_patches : 16;
-        size_t *p = realloc(f->patches, cap * sizeof *p);
+        size_t *p = cap <= SIZE_MAX / sizeof *p ? realloc(f->patches, cap * sizeof *p) : NULL;
         if (p == NULL) {
             f->patches_incomplete = 1;
             return 1; /* stop the walk */
@@ -80,7 +81,7 @@ static int push_polygon_hit(pc_polygon_hits *l, size_t patch, pc_vec3 x)
 {
     if (l->count == l->capacity) {
         const size_t cap = l->capacity ? 2 * l->capacity : 16;
-        pc_polygon_hit *p = realloc(l->items, cap * sizeof *p);
+        pc_polygon_hit *p = cap <= SIZE_MAX / sizeof *p ? realloc(l->items, cap * sizeof *p) : NULL;
         if (p == NULL)
             return 0;
         l->items = p;

@@ -67,6 +67,17 @@ static projcurve_status add_vertex(pc_tracer *tr, pc_branch *b, double t, double
     return PROJCURVE_OK;
 }
 
+int pc_tracer_budget_spent(pc_tracer *tr, double t)
+{
+    const double span = tr->t_end - tr->t_begin;
+    const double at = span > 0.0 ? (t - tr->t_begin) / span : 0.0;
+    const double f = tr->progress_lo + (tr->progress_hi - tr->progress_lo) * at;
+    if (pc_budget_check(tr->budget, f) == PROJCURVE_OK)
+        return 0;
+    tr->limit_hit = 1;
+    return 1;
+}
+
 /* Step length in t (positive) at the current point, before halvings. */
 static double nominal_step(const pc_tracer *tr, const pc_proj_point *cur)
 {
@@ -214,6 +225,11 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
      * < 2^60), so this bound is never the one hit. */
     const size_t max_passes = PC_TRACE_MAX_HALVINGS * (tr->max_points + 1);
     for (size_t pass = 0; pass < max_passes; ++pass) {
+        /* a pass (one prediction and correction) is the budget's unit */
+        if (pc_tracer_budget_spent(tr, cur->t)) {
+            *why = PROJCURVE_END_LIMIT;
+            return PROJCURVE_OK;
+        }
         const double remaining = sign * (t_stop - cur->t);
         if (remaining <= tr->min_step) {
             *why = PROJCURVE_END_CURVE_END;

@@ -44,9 +44,17 @@ typedef struct pc_tracer {
     double min_step;       /* steps below this end the branch */
     size_t max_points;     /* budget of vertices over all branches */
     size_t n_points;       /* vertices added so far */
-    int limit_hit;         /* max_points stopped a branch */
+    int limit_hit;         /* max_points or the budget stopped a branch */
     int criteria_only;     /* the sweep searches only where the criteria ask */
+    pc_budget *budget;     /* the call's (NULL: none), polled once per step */
+    /* The share [lo, hi] of the tracing stage that the branch being traced
+     * covers from the start of the curve to its end: its progress. */
+    double progress_lo, progress_hi;
 } pc_tracer;
+
+/* Polls the call's budget for one unit of tracing work at curve parameter
+ * t; 1 (and limit_hit set) when the budget stops the call. */
+int pc_tracer_budget_spent(pc_tracer *tr, double t);
 
 /* Traces one branch from the seed (a corrected point) towards t_stop
  * (direction +1: forward, -1: backward), appending vertices (t, u, v) to b;

@@ -93,6 +93,16 @@ def part_usage(exe, data_dir, work):
     proc = run([exe, "project", case, "--dir", "-1,0,0", "--tol", "1e-300"], 1,
                "eps_D below the model's precision: projection fails")
     check("TOL_DISTANCE" in proc.stderr, "unreachable eps_D: no message naming TOL_DISTANCE")
+    # --timeout: a limit per (curve, surface) call; one hit is a failure
+    # naming the pair (exit 1), with the partial result still reported
+    run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "-1"], 2, "negative timeout")
+    run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "soon"], 2,
+        "non-numeric timeout")
+    proc = run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "1e-9"], 1,
+               "a 1 ns timeout: the projection is cut")
+    check("curve 0 onto surface 0" in proc.stderr and "time limit" in proc.stderr,
+          f"timeout hit: no message naming the pair and the limit: {proc.stderr.strip()}")
+    run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "1000"], 0, "a generous timeout")
     teapot = os.path.join(data_dir, "real", "teapot_newell_spd.txt")
     run([exe, "project", teapot, "--dir", "0,0,-1"], 2, "surfaces without curves")
 

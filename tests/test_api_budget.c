@@ -1,0 +1,575 @@
+/*
+ * The work budget of a projection call (common/budget.h, projcurve.h):
+ * TIME_LIMIT, MAX_WORK and the progress / cancel callback.
+ *
+ * Nothing here depends on the machine's speed: the budget module is tested
+ * with a clock the test drives; through the public API the time limit is
+ * tested with a limit far below the time of the first unit of work (its
+ * outcome is certain), the callback by counting its calls, which depend
+ * only on the work done.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/handles.h"
+#include "check.h"
+#include "common/budget.h"
+#include "point/point.h"
+#include "shapes.h"
+
+/* ---- the module, with a clock the test advances ------------------------ */
+
+typedef struct fake_clock {
+    double now, tick; /* each reading advances the clock by tick */
+    int reads;
+} fake_clock;
+
+static double fake_now(void *user)
+{
+    fake_clock *c = user;
+    const double t = c->now;
+    c->now += c->tick;
+    ++c->reads;
+    return t;
+}
+
+typedef struct progress_log {
+    double fractions[4096];
+    int calls;
+    int cancel_at; /* the call (1-based) that returns nonzero; 0 = never */
+} progress_log;
+
+static int log_progress(void *user, double f)
+{
+    progress_log *log = user;
+    if (log->calls < (int)(sizeof log->fractions / sizeof log->fractions[0]))
+        log->fractions[log->calls] = f;
+    ++log->calls;
+    return log->cancel_at > 0 && log->calls == log->cancel_at;
+}
+
+/* The time limit is seen at the first full poll after it passed: with a
+ * clock that moves 1 s per reading and a 5 s limit, the init reads 0 and
+ * the polls read 1, 2, ...: the 5th poll (unit 1 + 4 * POLL_EVERY) stops. */
+static void test_module_time_limit(void)
+{
+    fake_clock clock = {0.0, 1.0, 0};
+    pc_budget b;
+    pc_budget_init_clock(&b, 5.0, 0, NULL, NULL, fake_now, &clock);
+    unsigned long long units = 0;
+    while (pc_budget_check(&b, 0.5) == PROJCURVE_OK && units < 100000)
+        ++units;
+    CHECK(units == 4ull * PC_BUDGET_POLL_EVERY); /* units 1 .. 4 POLL_EVERY passed */
+    CHECK(clock.reads == 6);                     /* init + 5 polls */
+    CHECK_STATUS(pc_budget_status(&b), PROJCURVE_ERR_LIMIT_REACHED);
+    /* sticky, without reading the clock again */
+    CHECK_STATUS(pc_budget_check(&b, 0.9), PROJCURVE_ERR_LIMIT_REACHED);
+    CHECK(clock.reads == 6);
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    CHECK_STATUS(pc_budget_fail(&b, ctx), PROJCURVE_ERR_LIMIT_REACHED);
+    CHECK(strstr(projcurve_context_message(ctx), "time limit of 5 s") != NULL);
+    projcurve_context_destroy(ctx);
+    /* no limit: the clock is never read */
+    fake_clock idle = {0.0, 1.0, 0};
+    pc_budget_init_clock(&b, 0.0, 0, NULL, NULL, fake_now, &idle);
+    for (int i = 0; i < 10000; ++i)
+        CHECK(pc_budget_check(&b, 0.0) == PROJCURVE_OK);
+    CHECK(idle.reads == 0);
+}
+
+/* MAX_WORK n allows exactly n units, whatever the poll interval. */
+static void test_module_work_limit(void)
+{
+    const unsigned long long limits[] = {1, 2, 255, 256, 257, 1000};
+    for (size_t i = 0; i < sizeof limits / sizeof limits[0]; ++i) {
+        pc_budget b;
+        pc_budget_init(&b, 0.0, limits[i], NULL, NULL);
+        unsigned long long units = 0;
+        while (pc_budget_check(&b, 0.0) == PROJCURVE_OK && units < 100000)
+            ++units;
+        CHECK(units == limits[i]);
+        CHECK_STATUS(pc_budget_status(&b), PROJCURVE_ERR_LIMIT_REACHED);
+        CHECK(b.stopped_by == PC_BUDGET_STOP_WORK);
+    }
+    CHECK(pc_budget_check(NULL, 0.5) == PROJCURVE_OK); /* no budget */
+}
+
+/* The callback: first at unit 1, then every POLL_EVERY units; the fraction
+ * maps the stage's share, never decreases (nor takes a NaN) and is 1 at
+ * finish; a nonzero return cancels for good. */
+static void test_module_progress(void)
+{
+    progress_log log = {{0}, 0, 0};
+    pc_budget b;
+    pc_budget_init(&b, 0.0, 0, log_progress, &log);
+    pc_budget_stage(&b, 0.0, 0.5);
+    const double stage_fraction[] = {0.2, 0.1, NAN, 0.8, 2.0};
+    for (size_t k = 0; k < 5; ++k)
+        for (unsigned i = 0; i < PC_BUDGET_POLL_EVERY; ++i)
+            CHECK(pc_budget_check(&b, stage_fraction[k]) == PROJCURVE_OK);
+    CHECK(log.calls == 5);
+    const double expected[] = {0.1, 0.1, 0.1, 0.4, 0.5};
+    for (int k = 0; k < 5 && k < log.calls; ++k)
+        CHECK_NEAR(log.fractions[k], expected[k], 1e-15);
+    pc_budget_stage(&b, 0.5, 1.0);
+    pc_budget_finish(&b);
+    CHECK(log.calls == 6 && log.fractions[5] == 1.0);
+
+    progress_log stop = {{0}, 0, 2};
+    pc_budget_init(&b, 0.0, 0, log_progress, &stop);
+    unsigned long long units = 0;
+    while (pc_budget_check(&b, 0.0) == PROJCURVE_OK && units < 100000)
+        ++units;
+    CHECK(units == PC_BUDGET_POLL_EVERY); /* unit 1 + POLL_EVERY is cancelled */
+    CHECK_STATUS(pc_budget_status(&b), PROJCURVE_ERR_CANCELLED);
+    pc_budget_finish(&b); /* a stopped call does not report 1 */
+    CHECK(stop.calls == 2);
+}
+
+/* ---- through the public API ------------------------------------------- */
+
+/* A wave above the unit square, z = 1: projected along -z onto a bumpy
+ * graph over the square it gives one long branch with many traced steps
+ * and (at eps_D 1e-6) many pieces. */
+static int wave_fn(void *user, double t, double out[9])
+{
+    (void)user;
+    const double w = 6.0 * 3.14159265358979323846;
+    out[0] = 0.1 + 0.8 * t;
+    out[1] = 0.5 + 0.3 * sin(w * t);
+    out[2] = 1.0;
+    out[3] = 0.8;
+    out[4] = 0.3 * w * cos(w * t);
+    out[5] = 0.0;
+    out[6] = 0.0;
+    out[7] = -0.3 * w * w * sin(w * t);
+    out[8] = 0.0;
+    return 0;
+}
+
+/* The unit sphere as f(x) = |x|^2 - 1. */
+static int sphere_fn(void *user, const double x[3], double *value, double grad[3],
+                     double hess[9])
+{
+    (void)user;
+    *value = x[0] * x[0] + x[1] * x[1] + x[2] * x[2] - 1.0;
+    for (int i = 0; i < 3; ++i)
+        grad[i] = 2.0 * x[i];
+    for (int i = 0; i < 9; ++i)
+        hess[i] = i % 4 == 0 ? 2.0 : 0.0;
+    return 0;
+}
+
+typedef enum call_kind { CALL_DIRECTIONAL, CALL_ORTHOGONAL, CALL_IMPLICIT } call_kind;
+
+typedef struct fixture {
+    projcurve_surface *surface;
+    projcurve_curve *wave, *low_wave;
+} fixture;
+
+static const char *const kind_names[] = {"directional", "orthogonal", "implicit"};
+
+static projcurve_options *base_options(call_kind kind)
+{
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_ARC_STEP_FRACTION, 1e-3));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE,
+                                          kind == CALL_IMPLICIT ? 1e-5 : 1e-6));
+    return o;
+}
+
+static projcurve_status run(const fixture *f, call_kind kind, const projcurve_options *o,
+                            projcurve_context *ctx, projcurve_result **r)
+{
+    static const double down[3] = {0.0, 0.0, -1.0};
+    switch (kind) {
+    case CALL_DIRECTIONAL:
+        return projcurve_project_directional(ctx, f->surface, f->wave, down, o, r);
+    case CALL_ORTHOGONAL:
+        return projcurve_project_orthogonal(ctx, f->surface, f->low_wave, o, r);
+    default:
+        return projcurve_project_orthogonal_implicit(ctx, sphere_fn, NULL, 2.0, f->wave, o, r);
+    }
+}
+
+/* Everything a caller can read of a result, checked for consistency: the
+ * branch and piece counts agree with the statistics, points are finite and
+ * run one way in t inside the curve's domain, pieces tile their branch's
+ * range in order. Returns the number of branches ending with END_LIMIT. */
+static size_t check_readable(const projcurve_result *r, double t0, double t1)
+{
+    const size_t n = projcurve_result_branch_count(r);
+    const int dim = projcurve_result_point_dim(r);
+    CHECK(dim == 3 || dim == 4);
+    size_t limited = 0, pieces_total = 0;
+    for (size_t i = 0; i < n; ++i) {
+        double range[2];
+        projcurve_branch_start start;
+        projcurve_branch_end end;
+        size_t n_points = 0, n_pieces = 0;
+        CHECK_OK(projcurve_result_branch_info(NULL, r, i, range, &start, &end, &n_points,
+                                              &n_pieces));
+        limited += end == PROJCURVE_END_LIMIT;
+        pieces_total += n_pieces;
+        double *p = malloc((n_points + 1) * 4 * sizeof *p);
+        size_t count = 0;
+        CHECK_OK(projcurve_result_branch_points(NULL, r, i, n_points, p, &count));
+        CHECK(count == n_points);
+        for (size_t k = 0; k < count; ++k) {
+            for (int c = 0; c < dim; ++c)
+                CHECK(isfinite(p[dim * k + c]));
+            CHECK(p[dim * k] >= t0 - 1e-12 && p[dim * k] <= t1 + 1e-12);
+            if (k >= 2) /* one way in t */
+                CHECK((p[dim * k] - p[dim * (k - 1)]) * (p[dim * 1] - p[0]) >= 0.0);
+        }
+        free(p);
+        double prev_end = NAN;
+        for (size_t k = 0; k < n_pieces; ++k) {
+            int degree = 0;
+            double ctrl[3 * PROJCURVE_MAX_PIECE_POINTS], w[PROJCURVE_MAX_PIECE_POINTS];
+            double pr[2], uv[4];
+            CHECK_OK(projcurve_result_piece(NULL, r, i, k, &degree, ctrl, w, pr, uv));
+            CHECK(degree >= 1 && degree < PROJCURVE_MAX_PIECE_POINTS);
+            if (k > 0) /* pieces follow each other */
+                CHECK_NEAR(pr[0], prev_end, 1e-12);
+            prev_end = pr[1];
+        }
+    }
+    double stat = 0.0;
+    CHECK_OK(projcurve_result_stat(NULL, r, PROJCURVE_STAT_PIECES, &stat));
+    CHECK(stat == (double)pieces_total);
+    return limited;
+}
+
+/* 1 when two results have the same branches, points and pieces, bit for bit. */
+static int same_result(const projcurve_result *a, const projcurve_result *b)
+{
+    const size_t n = projcurve_result_branch_count(a);
+    if (n != projcurve_result_branch_count(b))
+        return 0;
+    const int dim = projcurve_result_point_dim(a);
+    for (size_t i = 0; i < n; ++i) {
+        size_t na = 0, nb = 0, pa = 0, pb = 0;
+        projcurve_branch_end ea, eb;
+        projcurve_result_branch_info(NULL, a, i, NULL, NULL, &ea, &na, &pa);
+        projcurve_result_branch_info(NULL, b, i, NULL, NULL, &eb, &nb, &pb);
+        if (na != nb || pa != pb || ea != eb)
+            return 0;
+        double *x = malloc((na + 1) * 4 * sizeof *x), *y = malloc((nb + 1) * 4 * sizeof *y);
+        size_t count = 0;
+        projcurve_result_branch_points(NULL, a, i, na, x, &count);
+        projcurve_result_branch_points(NULL, b, i, nb, y, &count);
+        const int same = memcmp(x, y, na * (size_t)dim * sizeof *x) == 0;
+        free(x);
+        free(y);
+        if (!same)
+            return 0;
+    }
+    return 1;
+}
+
+/* A complete call: progress is monotone in [0, 1], ends at 1, and the
+ * callback changes nothing in the result. Returns the number of calls. */
+static int check_complete_call(const fixture *f, call_kind kind)
+{
+    projcurve_options *o = base_options(kind);
+    projcurve_result *plain = NULL, *watched = NULL;
+    CHECK_OK(run(f, kind, o, NULL, &plain));
+    progress_log *log = calloc(1, sizeof *log);
+    CHECK_OK(projcurve_options_set_progress(NULL, o, log_progress, log));
+    CHECK_OK(run(f, kind, o, NULL, &watched));
+    CHECK(log->calls >= 3);
+    const int n = log->calls < 4096 ? log->calls : 4096;
+    for (int k = 0; k < n; ++k) {
+        CHECK(log->fractions[k] >= 0.0 && log->fractions[k] <= 1.0);
+        if (k > 0)
+            CHECK(log->fractions[k] >= log->fractions[k - 1]);
+    }
+    CHECK(log->fractions[n - 1] == 1.0);
+    CHECK(n < 2 || log->fractions[n - 2] < 1.0); /* 1 comes at the end */
+    CHECK(same_result(plain, watched));
+    CHECK(projcurve_result_branch_count(plain) >= 1);
+    check_readable(watched, 0.0, 1.0);
+    printf("%s: %d progress calls, %zu branches\n", kind_names[kind], log->calls,
+           projcurve_result_branch_count(plain));
+    const int calls = log->calls;
+    free(log);
+    projcurve_result_destroy(plain);
+    projcurve_result_destroy(watched);
+    projcurve_options_destroy(o);
+    return calls;
+}
+
+/* Cancelling at the k-th call: CANCELLED, a readable partial result, no
+ * call after the one that cancelled. With in_composition, the call came
+ * in the composition stage (past 1/2): some pieces are made, and kept. */
+static void check_cancel_at(const fixture *f, call_kind kind, int k, int in_composition)
+{
+    projcurve_options *o = base_options(kind);
+    progress_log *log = calloc(1, sizeof *log);
+    log->cancel_at = k;
+    CHECK_OK(projcurve_options_set_progress(NULL, o, log_progress, log));
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    projcurve_result *r = NULL;
+    CHECK_STATUS(run(f, kind, o, ctx, &r), PROJCURVE_ERR_CANCELLED);
+    CHECK(log->calls == k);
+    CHECK(strstr(projcurve_context_message(ctx), "progress callback") != NULL);
+    CHECK(r != NULL);
+    if (r != NULL) {
+        /* (a branch cut at its first vertex is dropped, and a cut in the
+         * jump sweep falls between branches: no END_LIMIT need remain) */
+        check_readable(r, 0.0, 1.0);
+        double pieces = 0.0;
+        CHECK_OK(projcurve_result_stat(NULL, r, PROJCURVE_STAT_PIECES, &pieces));
+        if (in_composition)
+            CHECK(log->fractions[k - 1] > 0.5 && pieces > 0.0);
+    }
+    projcurve_result_destroy(r);
+    projcurve_context_destroy(ctx);
+    free(log);
+    projcurve_options_destroy(o);
+}
+
+/* MAX_WORK cuts at the same place every time (the count depends on the
+ * work only); enough of it changes nothing. */
+static void check_work_limit(const fixture *f, call_kind kind)
+{
+    projcurve_options *o = base_options(kind);
+    projcurve_result *full = NULL, *a = NULL, *b = NULL, *big = NULL;
+    CHECK_OK(run(f, kind, o, NULL, &full));
+    const long long limits[] = {1, 200, 1000};
+    for (size_t i = 0; i < 3; ++i) {
+        CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, limits[i]));
+        projcurve_context *ctx = NULL;
+        CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+        CHECK_STATUS(run(f, kind, o, ctx, &a), PROJCURVE_ERR_LIMIT_REACHED);
+        CHECK(strstr(projcurve_context_message(ctx), "work limit") != NULL);
+        CHECK_STATUS(run(f, kind, o, NULL, &b), PROJCURVE_ERR_LIMIT_REACHED);
+        CHECK(a != NULL && b != NULL);
+        if (a != NULL && b != NULL) {
+            CHECK(same_result(a, b));
+            check_readable(a, 0.0, 1.0);
+        }
+        projcurve_result_destroy(a);
+        projcurve_result_destroy(b);
+        a = b = NULL;
+        projcurve_context_destroy(ctx);
+    }
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, 1099511627776LL));
+    CHECK_OK(run(f, kind, o, NULL, &big));
+    CHECK(same_result(full, big));
+    projcurve_result_destroy(full);
+    projcurve_result_destroy(big);
+    projcurve_options_destroy(o);
+}
+
+/* A time limit of 1 ns has passed by the first full poll (after the seed
+ * search and a traced step, microseconds at least): LIMIT_REACHED with a
+ * readable result; a limit of 1e9 s changes nothing. */
+static void check_time_limit(const fixture *f, call_kind kind)
+{
+    projcurve_options *o = base_options(kind);
+    projcurve_result *full = NULL, *cut = NULL, *relaxed = NULL;
+    CHECK_OK(run(f, kind, o, NULL, &full));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TIME_LIMIT, 1e-9));
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    CHECK_STATUS(run(f, kind, o, ctx, &cut), PROJCURVE_ERR_LIMIT_REACHED);
+    CHECK(strstr(projcurve_context_message(ctx), "time limit") != NULL);
+    CHECK(cut != NULL);
+    if (cut != NULL)
+        check_readable(cut, 0.0, 1.0);
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TIME_LIMIT, 1e9));
+    CHECK_OK(run(f, kind, o, NULL, &relaxed));
+    CHECK(same_result(full, relaxed));
+    projcurve_result_destroy(full);
+    projcurve_result_destroy(cut);
+    projcurve_result_destroy(relaxed);
+    projcurve_context_destroy(ctx);
+    projcurve_options_destroy(o);
+}
+
+static void test_options(void)
+{
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    projcurve_progress_fn fn = log_progress;
+    void *user = &fn;
+    CHECK_OK(projcurve_options_get_progress(NULL, o, &fn, &user));
+    CHECK(fn == NULL && user == NULL);
+    int token = 0;
+    CHECK_OK(projcurve_options_set_progress(NULL, o, log_progress, &token));
+    CHECK_OK(projcurve_options_get_progress(NULL, o, &fn, NULL));
+    CHECK_OK(projcurve_options_get_progress(NULL, o, NULL, &user));
+    CHECK(fn == log_progress && user == &token);
+    CHECK_OK(projcurve_options_set_progress(NULL, o, NULL, &token));
+    CHECK_OK(projcurve_options_get_progress(NULL, o, &fn, &user));
+    CHECK(fn == NULL && user == NULL);
+    CHECK_STATUS(projcurve_options_set_progress(NULL, NULL, log_progress, NULL),
+                 PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_STATUS(projcurve_options_get_progress(NULL, NULL, &fn, &user),
+                 PROJCURVE_ERR_NULL_ARGUMENT);
+    CHECK_STATUS(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TIME_LIMIT, -1.0),
+                 PROJCURVE_ERR_OUT_OF_RANGE);
+    CHECK_STATUS(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, -1),
+                 PROJCURVE_ERR_OUT_OF_RANGE);
+    CHECK(strcmp(projcurve_status_string(PROJCURVE_ERR_CANCELLED), "unknown status") != 0);
+    projcurve_options_destroy(o);
+}
+
+/* ---- memory bounded by the limits ---------------------------------------- */
+
+/* A line across a plane of 64 x 64 spans crosses ~100 knot lines, each a
+ * vertex of the refined polyline. With MAX_PIECES 5 the list of crossings
+ * stops after the pieces left (refine.c) instead of holding all of them:
+ * the pieces kept are still the first ones of the unlimited projection,
+ * bit for bit, and the polyline is their pcurve. */
+static void test_crossings_bounded_by_pieces(void)
+{
+    pc_shape_surface ps = pc_shape_plane(1, 1, 64, 64);
+    projcurve_surface *plane = pc_shape_surface_create(&ps);
+    pc_shape_surface_free(&ps);
+    pc_shape_line line = {{-0.9, -0.9, 1.0}, {1.8, 2.8, 0.0}};
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_callback(NULL, pc_shape_line_fn, &line, 0.0, 1.0, &c));
+    static const double down[3] = {0.0, 0.0, -1.0};
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    projcurve_result *full = NULL, *cut = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, plane, c, down, o, &full));
+    size_t n_full = 0;
+    CHECK_OK(projcurve_result_branch_info(NULL, full, 0, NULL, NULL, NULL, NULL, &n_full));
+    CHECK(projcurve_result_branch_count(full) == 1 && n_full >= 100);
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_PIECES, 5));
+    CHECK_STATUS(projcurve_project_directional(NULL, plane, c, down, o, &cut),
+                 PROJCURVE_ERR_LIMIT_REACHED);
+    size_t n_points = 0, n_pieces = 0;
+    projcurve_branch_end end;
+    CHECK_OK(projcurve_result_branch_info(NULL, cut, 0, NULL, NULL, &end, &n_points, &n_pieces));
+    CHECK(n_pieces == 5 && n_points == 6 && end == PROJCURVE_END_LIMIT);
+    for (size_t k = 0; k < n_pieces && k < n_full; ++k) {
+        int da = 0, db = 0;
+        double ca[3 * PROJCURVE_MAX_PIECE_POINTS], cb[3 * PROJCURVE_MAX_PIECE_POINTS];
+        double ra[2], rb[2];
+        CHECK_OK(projcurve_result_piece(NULL, full, 0, k, &da, ca, NULL, ra, NULL));
+        CHECK_OK(projcurve_result_piece(NULL, cut, 0, k, &db, cb, NULL, rb, NULL));
+        CHECK(da == db && ra[0] == rb[0] && ra[1] == rb[1] &&
+              memcmp(ca, cb, 3 * (size_t)(da + 1) * sizeof *ca) == 0);
+    }
+    check_readable(cut, 0.0, 1.0);
+    projcurve_result_destroy(full);
+    projcurve_result_destroy(cut);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(plane);
+}
+
+/* ---- real data: calls that ran for seconds to minutes ----------------- */
+
+/* linkrods.step, curve 7: onto surface 1 along -z the jump sweep's step
+ * collapsed and the call took ~550 s; onto surface 16 orthogonally one
+ * foot-point search took ~0.7 s, with no poll inside. A time limit bounds
+ * both (the limit itself is met or the call completes: nothing here
+ * depends on the machine's speed but the generous hang guard). */
+static void test_real_calls(void)
+{
+    FILE *probe = fopen(pc_test_shared_path("data/real/linkrods.step"), "r");
+    if (probe == NULL) {
+        printf("../shared/data/real/linkrods.step not found: real-data part skipped\n");
+        return;
+    }
+    fclose(probe);
+    projcurve_model *m = NULL;
+    CHECK_OK(projcurve_model_read_file(NULL, pc_test_shared_path("data/real/linkrods.step"), &m));
+    if (m == NULL)
+        return;
+    const projcurve_curve *c = projcurve_model_curve(m, 7);
+    const projcurve_surface *s1 = projcurve_model_surface(m, 1), *s16 = projcurve_model_surface(m, 16);
+    CHECK(c != NULL && s1 != NULL && s16 != NULL);
+    if (c == NULL || s1 == NULL || s16 == NULL) {
+        projcurve_model_destroy(m);
+        return;
+    }
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TIME_LIMIT, 0.25));
+    double t0 = 0.0, t1 = 0.0;
+    CHECK_OK(projcurve_curve_domain(NULL, c, &t0, &t1));
+    for (int orthogonal = 0; orthogonal <= 1; ++orthogonal) {
+        static const double down[3] = {0.0, 0.0, -1.0};
+        projcurve_context *ctx = NULL;
+        CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+        projcurve_result *r = NULL;
+        const projcurve_status st = orthogonal
+                                        ? projcurve_project_orthogonal(ctx, s16, c, o, &r)
+                                        : projcurve_project_directional(ctx, s1, c, down, o, &r);
+        CHECK(st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED);
+        if (st == PROJCURVE_ERR_LIMIT_REACHED)
+            CHECK(strstr(projcurve_context_message(ctx), "time limit") != NULL);
+        CHECK(r != NULL);
+        if (r != NULL)
+            check_readable(r, t0, t1);
+        printf("linkrods curve 7 onto surface %d (%s), 0.25 s limit: %s\n", orthogonal ? 16 : 1,
+               orthogonal ? "orthogonal" : "along -z", projcurve_status_string(st));
+        projcurve_result_destroy(r);
+        projcurve_context_destroy(ctx);
+    }
+
+    /* the foot-point search polls the budget once per sub-patch: it stops
+     * at exactly MAX_WORK units, with the feet found so far, and says OK
+     * (the caller's next poll sees the budget's status) */
+    pc_vec3 p;
+    CHECK_OK(pc_curve_eval(c, t0, 0, NULL, &p));
+    double uv[2 * 64];
+    size_t count = 0;
+    pc_budget b;
+    pc_budget_init(&b, 0.0, 0, NULL, NULL);
+    CHECK_OK(pc_surface_foot_points_uv(NULL, s16, p, &b, 64, uv, &count));
+    printf("a foot-point search on linkrods surface 16: %llu sub-patches\n", b.work);
+    CHECK(b.work >= 100);
+    pc_budget_init(&b, 0.0, 50, NULL, NULL);
+    CHECK_OK(pc_surface_foot_points_uv(NULL, s16, p, &b, 64, uv, &count));
+    CHECK(b.work == 51);
+    CHECK_STATUS(pc_budget_status(&b), PROJCURVE_ERR_LIMIT_REACHED);
+    projcurve_options_destroy(o);
+    projcurve_model_destroy(m);
+}
+
+int main(void)
+{
+    test_module_time_limit();
+    test_module_work_limit();
+    test_module_progress();
+    test_options();
+    test_real_calls();
+    test_crossings_bounded_by_pieces();
+
+    pc_shape_surface s = pc_shape_bumpy(7, 6, 6, 0.05, 0);
+    fixture f = {pc_shape_surface_create(&s), NULL, NULL};
+    CHECK_OK(projcurve_curve_create_callback(NULL, wave_fn, NULL, 0.0, 1.0, &f.wave));
+    f.low_wave = f.wave; /* z = 1: far from the graph's centres of curvature */
+    pc_shape_surface_free(&s);
+    CHECK(f.surface != NULL);
+    if (f.surface == NULL)
+        return pc_test_finish("test_api_budget");
+
+    for (int kind = CALL_DIRECTIONAL; kind <= CALL_IMPLICIT; ++kind) {
+        const int calls = check_complete_call(&f, (call_kind)kind);
+        /* cancel at the first call, at a few k, and at the last call
+         * before the final 1 (the composition stage) */
+        const int ks[] = {1, 2, 3, calls / 2, calls - 1};
+        for (size_t i = 0; i < sizeof ks / sizeof ks[0]; ++i)
+            if (ks[i] >= 1 && ks[i] < calls)
+                check_cancel_at(&f, (call_kind)kind, ks[i], ks[i] == calls - 1);
+        check_work_limit(&f, (call_kind)kind);
+        check_time_limit(&f, (call_kind)kind);
+    }
+    projcurve_curve_destroy(f.wave);
+    projcurve_surface_destroy(f.surface);
+    return pc_test_finish("test_api_budget");
+}
