@@ -566,8 +566,11 @@ typedef enum projcurve_branch_start {
     PROJCURVE_START_CURVE_START = 0, /* seeded at the start of the curve */
     PROJCURVE_START_JUMP = 1,        /* born in mid-curve (jump detection) */
     PROJCURVE_START_BOUNDARY = 2,    /* enters through the boundary of S */
-    PROJCURVE_START_SILHOUETTE = 3   /* born at a fold where Dir is tangent to S
+    PROJCURVE_START_SILHOUETTE = 3,  /* born at a fold where Dir is tangent to S
                                         (orthogonal: at a centre of curvature) */
+    PROJCURVE_START_CURVE_CROSSING = 4 /* directional: the curve meets S here;
+                                        before it the surface lies behind the
+                                        curve ((q - p).Dir < 0) */
 } projcurve_branch_start;
 
 /* Why a branch ends. */
@@ -577,7 +580,10 @@ typedef enum projcurve_branch_end {
     PROJCURVE_END_SILHOUETTE = 2,    /* met a fold (det J = 0) */
     PROJCURVE_END_CURVATURE_CENTRE = 3, /* orthogonal: P(t) at a centre of curvature */
     PROJCURVE_END_LIMIT = 4,         /* a size limit stopped it */
-    PROJCURVE_END_FAILED = 5         /* the corrector could not continue */
+    PROJCURVE_END_FAILED = 5,        /* the corrector could not continue */
+    PROJCURVE_END_CURVE_CROSSING = 6 /* directional: the curve meets S here;
+                                        beyond it the surface lies behind the
+                                        curve ((q - p).Dir < 0) */
 } projcurve_branch_end;
 
 /* Statistics keys for projcurve_result_stat. */

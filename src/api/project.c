@@ -143,7 +143,8 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
          * sweep; constant parameter steps without jumps do without it */
         const int need_length = o.param_step == 0.0 || o.jump_detection;
         const pc_trace_config config = {
-            need_length ? pc_directional_length_estimate(&finder) : 0.0, proj.model_size};
+            need_length ? pc_directional_length_estimate(&finder) : 0.0, proj.model_size, 1,
+            unit};
         r->stats.tol_distance = o.tol_distance;
         st = pc_trace_branches(ctx, &proj, &o, &finder.base, &config, r);
     }

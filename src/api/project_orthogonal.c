@@ -49,7 +49,7 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     pc_seed_finder finder;
     pc_ortho_finder_init(&finder, &finder_state, surface, curve);
     finder_state.budget = o.budget; /* a foot-point search can take long */
-    const pc_trace_config config = {0.0, surface->size};
+    const pc_trace_config config = {0.0, surface->size, 0, {0.0, 0.0, 0.0}};
 
     projcurve_result *r = NULL;
     projcurve_status status = pc_result_create(ctx, 3, &r);

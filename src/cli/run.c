@@ -132,6 +132,7 @@ const char *cli_start_name(projcurve_branch_start s)
     case PROJCURVE_START_JUMP: return "jump";
     case PROJCURVE_START_BOUNDARY: return "boundary";
     case PROJCURVE_START_SILHOUETTE: return "silhouette";
+    case PROJCURVE_START_CURVE_CROSSING: return "curve_crossing";
     }
     return "unknown";
 }
@@ -145,6 +146,7 @@ const char *cli_end_name(projcurve_branch_end e)
     case PROJCURVE_END_CURVATURE_CENTRE: return "curvature_centre";
     case PROJCURVE_END_LIMIT: return "limit";
     case PROJCURVE_END_FAILED: return "failed";
+    case PROJCURVE_END_CURVE_CROSSING: return "curve_crossing";
     }
     return "unknown";
 }

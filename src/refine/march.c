@@ -45,6 +45,11 @@
  * is about curvature x step, the rounding error newton_tol / step: both far
  * below any eps_T at this size. */
 #define PC_SIDE_STEP_REL 1e-6
+/* ... and long enough on S that the corrector's tolerance (floored by the
+ * rounding of the coordinates, which far from the origin is far above
+ * 1e-12 of the model) moves the difference's direction by at most 1 /
+ * PC_SIDE_STEP_ROUNDING rad: 1e-4 rad, below any eps_T. */
+#define PC_SIDE_STEP_ROUNDING 1e4
 
 /* Tangent of the exact projection at v, along increasing t (zero if the
  * projector cannot give it, e.g. at a fold: then no angle bound there). */
@@ -71,6 +76,9 @@ pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rve
     if (!pc_refine_on_knot_line(r, v) || other->t == v->t)
         return derivative_tangent(r, v);
     double step = PC_SIDE_STEP_REL * r->t_range;
+    pc_proj_point pt;
+    if (r->proj->derivatives(r->proj, v->t, v->u, v->v, &pt) && pt.speed > 0.0)
+        step = fmax(step, PC_SIDE_STEP_ROUNDING * r->proj->newton_tol / pt.speed);
     if (step > 0.25 * fabs(other->t - v->t))
         step = 0.25 * fabs(other->t - v->t);
     const double sign = other->t > v->t ? 1.0 : -1.0;

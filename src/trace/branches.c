@@ -13,9 +13,15 @@
 
 /* Samples of the curve for the fallback length estimate. */
 #define PC_LENGTH_SAMPLES 64
-/* Smallest sweep step, as a fraction of the curve's domain; it bounds the
- * number of checks. */
-#define PC_SWEEP_MIN_FRACTION 1e-7
+/* Most checks of the sweep: its step is at least 1 / this of the curve's
+ * domain. A check costs a few microseconds (the criteria, every second one
+ * a full search, the matching against the live branches), up to ~50 us on
+ * a degree 6 x 10 rational surface of linkrods.step, so the sweep stays
+ * within ~0.2 s; where branches move faster than ds per that step, a
+ * branch born and gone within two such steps of t can be missed
+ * (docs/tracing.md). (The floor was 1e-7 of the domain: 1e7 checks, 550 s
+ * on linkrods curve 7 / surface 1.) */
+#define PC_SWEEP_MAX_CHECKS 4096
 /* A full search every this many checks (every 2 ds), whatever the jump
  * criteria say: they look at control polygons, which need not show a fold
  * of the surface inside a patch, so a branch born and gone between two
@@ -32,6 +38,10 @@
 /* With jump detection, the share of the tracing stage's progress that the
  * branches seeded at the start of the curve take; the sweep has the rest. */
 #define PC_SWEEP_SHARE_START 0.5
+/* Floor of the length estimate the arc-length step is a fraction of,
+ * relative to the model size: the step is then at least 1/64 of 1e-3 of
+ * the model at the default ARC_STEP_FRACTION, a tenth of the default eps_D. */
+#define PC_MIN_LENGTH 1e-3
 /* Largest arc-length step in t, as a multiple of the arc-step fraction of
  * the domain: the step where the projection barely moves stays sane. */
 #define PC_MAX_STEP_FACTOR 4.0
@@ -77,6 +87,12 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
                                                : (need_ds ? curve_length(c) : 0.0);
     if (!(length > 0.0) || !isfinite(length))
         length = cfg->model_size > 0.0 ? cfg->model_size : 1.0;
+    /* The estimate can be near 0 when the projection is not (the curve
+     * nearly parallel to Dir: its polyline projects onto a point of the
+     * control polygons; 7e-10 on linkrods, with steps and sweep checks of
+     * 1e-11 model units). Below PC_MIN_LENGTH of the model size the step
+     * would resolve nothing the refinement (eps_D) needs. */
+    length = fmax(length, PC_MIN_LENGTH * cfg->model_size);
     tr->ds = opts->arc_step_fraction * length;
     tr->param_step = opts->param_step;
     tr->max_step = fmin(PC_MAX_STEP_FACTOR * opts->arc_step_fraction, 1.0) * span;
@@ -85,6 +101,9 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     tr->criteria_only = opts->sweep_criteria_only != 0;
     tr->budget = opts->budget;
     tr->progress_hi = 1.0;
+    tr->ray = cfg->ray;
+    tr->dir = cfg->dir;
+    tr->lambda_tol = proj->newton_tol;
 }
 
 static projcurve_branch_start start_reason(projcurve_branch_end backward_end)
@@ -96,6 +115,8 @@ static projcurve_branch_start start_reason(projcurve_branch_end backward_end)
         return PROJCURVE_START_SILHOUETTE;
     case PROJCURVE_END_CURVE_END:
         return PROJCURVE_START_CURVE_START;
+    case PROJCURVE_END_CURVE_CROSSING:
+        return PROJCURVE_START_CURVE_CROSSING;
     default:
         return PROJCURVE_START_JUMP;
     }
@@ -144,6 +165,15 @@ static projcurve_status start_branch(pc_tracer *tr, const pc_seed *seed, seed_ki
     projcurve_branch_end why = PROJCURVE_END_FAILED;
     st = pc_trace_run(tr, seed, +1, tr->t_end, b->n_points == 0, b, &why);
     b->end = why;
+    /* A single vertex (a grazing seed on a fold, a seed behind the curve,
+     * a ray lying in S) carries no curve: dropped at once, so that the
+     * sweep, which finds it again at every check, does not pile them up
+     * (each check matches against every branch). */
+    if (st == PROJCURVE_OK && b->n_points < 2) {
+        tr->n_points -= b->n_points;
+        tr->r->stats.points -= (double)b->n_points;
+        pc_result_remove_branch(tr->r, bi);
+    }
     return st;
 }
 
@@ -239,7 +269,7 @@ static double sweep_step(const pc_tracer *tr, double t)
     const double span = tr->t_end - tr->t_begin;
     double dt = speed > 0.0 ? PC_SWEEP_STEP_FRACTION * tr->ds / speed : tr->max_step;
     dt = fmin(dt, tr->max_step);
-    return fmax(dt, PC_SWEEP_MIN_FRACTION * span);
+    return fmax(dt, span / PC_SWEEP_MAX_CHECKS);
 }
 
 /* 1 when the found point continues a branch that stopped short of t
@@ -302,7 +332,10 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
     projcurve_status st = PROJCURVE_OK;
     if (finder->reset)
         finder->reset(finder);
-    const size_t max_checks = (size_t)(1.0 / PC_SWEEP_MIN_FRACTION) + 2;
+    /* every check advances t by at least span / PC_SWEEP_MAX_CHECKS (up to
+     * rounding of t), so this bound is reached only through rounding; the
+     * sweep then ends where it got to */
+    const size_t max_checks = 2 * (size_t)PC_SWEEP_MAX_CHECKS + 2;
     double t = tr->t_begin;
     for (size_t check = 0; check < max_checks && t < tr->t_end && !tr->limit_hit; ++check) {
         /* a check (criteria, and maybe a full seed search) is a unit of
@@ -367,6 +400,35 @@ static void drop_single_points(projcurve_result *r)
         }
 }
 
+/* 1 when the image of b on S lies within `radius` of its first point. */
+static int image_is_point(const projcurve_surface *s, const pc_branch *b, double radius)
+{
+    pc_vec3 first;
+    pc_nurbs_surface_eval(&s->nurbs, b->points[1], b->points[2], 0, NULL, NULL, &first);
+    for (size_t k = 1; k < b->n_points; ++k) {
+        pc_vec3 x;
+        pc_nurbs_surface_eval(&s->nurbs, b->points[3 * k + 1], b->points[3 * k + 2], 0, NULL,
+                              NULL, &x);
+        if (vec3_dist(x, first) > radius)
+            return 0;
+    }
+    return 1;
+}
+
+/* Ray projections: where the curve runs along Dir, P(t) slides along its
+ * own ray and the projection stands still. A branch whose whole image on S
+ * lies within eps_D of one point is that point, not a curve: dropped (a
+ * point has no tangent the composition could bound; tracing it cost a few
+ * steps of max_step, composing it would not end). */
+static void drop_point_images(const pc_tracer *tr, double eps_d, projcurve_result *r)
+{
+    for (size_t i = r->n_branches; i-- > 0;)
+        if (image_is_point(tr->proj->surface, &r->branches[i], eps_d)) {
+            r->stats.points -= (double)r->branches[i].n_points;
+            pc_result_remove_branch(r, i);
+        }
+}
+
 projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *proj,
                                    const struct projcurve_options *opts,
                                    pc_seed_finder *finder, const pc_trace_config *config,
@@ -387,6 +449,8 @@ projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *p
     if (st == PROJCURVE_OK && opts->jump_detection && !tr.limit_hit)
         st = sweep(&tr, finder);
     drop_single_points(r);
+    if (tr.ray && opts->tol_distance > 0.0)
+        drop_point_images(&tr, opts->tol_distance, r);
     if (st == PROJCURVE_OK && pc_budget_status(tr.budget) != PROJCURVE_OK)
         st = pc_budget_fail(tr.budget, ctx);
     else if (st == PROJCURVE_OK && tr.limit_hit)

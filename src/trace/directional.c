@@ -13,6 +13,7 @@
 
 #include <math.h>
 
+#include "trace/precision.h"
 #include "trace/span_bound.h"
 
 /* Without a third-derivative bound (rational surfaces), a Newton step is in
@@ -493,7 +494,9 @@ void pc_directional_init(pc_projector *proj, pc_directional_data *data,
     proj->surface = surface;
     proj->curve = curve;
     proj->model_size = surface->size > 0.0 ? surface->size : 1.0;
-    proj->newton_tol = newton_tol_rel * proj->model_size;
+    /* floored by the rounding of the coordinates: far from the origin the
+     * relative tolerance is below what S - P can be known to */
+    proj->newton_tol = fmax(newton_tol_rel * proj->model_size, pc_pair_rounding(surface, curve));
     proj->newton_max_iter = newton_max_iter;
     proj->correct = dir_correct;
     proj->advance = dir_advance;

@@ -13,6 +13,10 @@
 #include "trace/control_polygon.h"
 #include "common/error.h"
 
+/* How far behind P(t), in corrector tolerances, the rays of the search
+ * start. */
+#define PC_SEED_BEHIND 4.0
+
 static projcurve_status line_find(pc_seed_finder *self, projcurve_context *ctx, double t,
                                   pc_seed_list *out)
 {
@@ -23,7 +27,12 @@ static projcurve_status line_find(pc_seed_finder *self, projcurve_context *ctx, 
     projcurve_status st = pc_curve_eval(proj->curve, t, 0, &f->curve_hint, &p);
     if (st != PROJCURVE_OK)
         return pc_fail(ctx, st, "curve evaluation failed at t = %.17g", t);
-    st = pc_intersect_line(ctx, proj->surface, p, f->dir, 1, &f->hits);
+    /* lambda = 0 counts (a curve lying on S is its own projection): the
+     * ray starts PC_SEED_BEHIND corrector tolerances behind P(t), so that
+     * the rounding of a hit at lambda = 0 does not decide whether it is
+     * found; the tracer judges what lies behind (pc_trace_behind) */
+    const pc_vec3 origin = vec3_axpy(p, -PC_SEED_BEHIND * proj->newton_tol, f->dir);
+    st = pc_intersect_line(ctx, proj->surface, origin, f->dir, 1, &f->hits);
     if (st != PROJCURVE_OK)
         return st;
     for (size_t k = 0; k < f->hits.count; ++k) {

@@ -122,7 +122,7 @@ static int moved_far_on_surface(const pc_tracer *tr, const pc_proj_point *cur,
     pc_nurbs_surface_eval(s, clamp(pred[0], tr->dom[0], tr->dom[1]),
                           clamp(pred[1], tr->dom[2], tr->dom[3]), 0, NULL, NULL, &at_pred);
     pc_nurbs_surface_eval(s, uv[0], uv[1], 0, NULL, NULL, &at_uv);
-    const double noise = PC_TRACE_BOUNDARY_TOL * tr->proj->model_size;
+    const double noise = fmax(PC_TRACE_BOUNDARY_TOL * tr->proj->model_size, tr->proj->newton_tol);
     return vec3_dist(at_uv, at_pred) >
            PC_TRACE_MAX_CORRECTION * vec3_dist(at_pred, cur->s) + noise;
 }
@@ -196,6 +196,24 @@ static projcurve_branch_end stall_reason(const pc_proj_point *cur)
                                                    : PROJCURVE_END_FAILED;
 }
 
+/* The step from cur landed behind the curve: the branch ends where lambda
+ * reaches 0 between them (on cur itself when nothing better is found). */
+static projcurve_status end_at_crossing(pc_tracer *tr, const pc_proj_point *cur,
+                                        const pc_proj_point *next, pc_branch *b,
+                                        projcurve_branch_end *why)
+{
+    *why = PROJCURVE_END_CURVE_CROSSING;
+    pc_proj_point at;
+    if (!pc_locate_crossing(tr, cur, next, &at))
+        return PROJCURVE_OK;
+    if (tr->n_points >= tr->max_points) {
+        tr->limit_hit = 1;
+        *why = PROJCURVE_END_LIMIT;
+        return PROJCURVE_OK;
+    }
+    return add_vertex(tr, b, at.t, at.u, at.v);
+}
+
 projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction, double t_stop,
                               int add_seed, pc_branch *b, projcurve_branch_end *why)
 {
@@ -217,6 +235,10 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
     pc_proj_point *cur = &points[0], *next = &points[1];
     if (!proj->derivatives(proj, seed->t, seed->u, seed->v, cur)) {
         *why = stall_reason(cur);
+        return PROJCURVE_OK;
+    }
+    if (pc_trace_behind(tr, cur)) { /* not a projection: nothing to trace */
+        *why = PROJCURVE_END_CURVE_CROSSING;
         return PROJCURVE_OK;
     }
     double scale = 1.0; /* halvings after failed corrections, seed 000 s3.3 */
@@ -255,6 +277,8 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             scale *= 0.5;
             continue;
         }
+        if (pc_trace_behind(tr, next)) /* the curve passed through S */
+            return end_at_crossing(tr, cur, next, b, why);
         if (tr->n_points >= tr->max_points) {
             tr->limit_hit = 1;
             *why = PROJCURVE_END_LIMIT;

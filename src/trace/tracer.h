@@ -50,6 +50,13 @@ typedef struct pc_tracer {
     /* The share [lo, hi] of the tracing stage that the branch being traced
      * covers from the start of the curve to its end: its progress. */
     double progress_lo, progress_hi;
+    /* Ray projections (directional): a point of F = 0 is a projection only
+     * where lambda = (S - P).dir >= 0; a branch ends where lambda reaches 0
+     * (PROJCURVE_END_CURVE_CROSSING). lambda_tol is the rounding of lambda
+     * that still counts as 0 (the corrector's tolerance). */
+    int ray;
+    pc_vec3 dir;
+    double lambda_tol;
 } pc_tracer;
 
 /* Polls the call's budget for one unit of tracing work at curve parameter
@@ -82,6 +89,26 @@ int pc_predict_rk4(const pc_projector *proj, const pc_proj_point *pt, double h, 
  * holds the farthest corrected point reached (t != cur->t); -1 when
  * nothing better than cur was found. */
 int pc_locate_exit(pc_tracer *tr, const pc_proj_point *cur, double h, pc_proj_point *out);
+
+/* Ray projections: lambda = (S - P).dir at p, in model units. */
+double pc_trace_lambda(const pc_tracer *tr, const pc_proj_point *p);
+
+/* 1 when p lies behind the curve beyond rounding: lambda below -lambda_tol,
+ * scaled by 1 / |det| (the corrector leaves S - P off the ray by up to its
+ * tolerance, which moves lambda by that over the tangent of the angle
+ * between Dir and the normal). Always 0 for projections without a ray. */
+int pc_trace_behind(const pc_tracer *tr, const pc_proj_point *p);
+
+/* Where the branch from `front` (not behind) to `back` (behind, one step
+ * of the tracer away, either direction in t) meets the curve, lambda = 0:
+ * regula falsi (Illinois) on t with bisection as the fallback, each
+ * iterate predicted by the Taylor model at the nearer known point and
+ * corrected, until |lambda| <= lambda_tol or the bracket is below
+ * min_step (at most PC_CROSSING_MAX_ITER iterations). Returns 1 with *out
+ * the crossing (never behind), 0 when no corrected point better than
+ * `front` was found (front is then the branch's last point). */
+int pc_locate_crossing(pc_tracer *tr, const pc_proj_point *front, const pc_proj_point *back,
+                       pc_proj_point *out);
 
 /* Distance of (u, v) from the nearest side of the domain, as a fraction of
  * that side's width (0 on the boundary). */

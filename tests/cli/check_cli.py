@@ -185,8 +185,9 @@ def manifest(data_dir):
     return rows
 
 
-START_KINDS = {"curve_start", "jump", "boundary", "silhouette"}
-END_KINDS = {"curve_end", "boundary", "silhouette", "curvature_centre", "limit", "failed"}
+START_KINDS = {"curve_start", "jump", "boundary", "silhouette", "curve_crossing"}
+END_KINDS = {"curve_end", "boundary", "silhouette", "curvature_centre", "limit", "failed",
+             "curve_crossing"}
 # The fields the --json output must have, with their types.
 BRANCH_FIELDS = {"surface": int, "curve": int, "t_range": list, "pieces": int, "degree": int,
                  "control_points": int, "start": str, "end": str}
