@@ -49,6 +49,7 @@ struct projcurve_options {
     long long compose;
     long long jump_detection;
     long long pcurve_degree;   /* 1 or 3: PROJCURVE_OPT_PCURVE_DEGREE */
+    long long foot_points;     /* PROJCURVE_FOOT_POINTS_*: PROJCURVE_OPT_FOOT_POINTS */
     /* No option key, not in the public API: 1 makes the jump sweep search
      * in full only where the criteria of seed 000 s3.4 ask (no periodic
      * full search), so that tests can show what the criteria alone find.

@@ -60,6 +60,9 @@ static const pc_option_desc pc_option_table[] = {
      0.0, 1.0, 0, 1.0, PC_FIELD(jump_detection)},
     {PROJCURVE_OPT_PCURVE_DEGREE, "PCURVE_DEGREE", PROJCURVE_OPTION_INTEGER,
      1.0, 3.0, 0, 1.0, PC_FIELD(pcurve_degree)},
+    {PROJCURVE_OPT_FOOT_POINTS, "FOOT_POINTS", PROJCURVE_OPTION_INTEGER,
+     (double)PROJCURVE_FOOT_POINTS_MINIMA, (double)PROJCURVE_FOOT_POINTS_ALL, 0,
+     (double)PROJCURVE_FOOT_POINTS_MINIMA, PC_FIELD(foot_points)},
 };
 
 /* Integer options whose bounds admit values that mean nothing: the values

@@ -19,7 +19,7 @@
 static const char *const pc_option_names[] = {
     "?", "TOL_DISTANCE", "TOL_ANGLE_DEG", "NEWTON_TOL", "NEWTON_MAX_ITER", "METHOD",
     "PARAM_STEP", "ARC_STEP_FRACTION", "MAX_POINTS", "MAX_PIECES", "COMPOSE",
-    "JUMP_DETECTION", "PCURVE_DEGREE"};
+    "JUMP_DETECTION", "PCURVE_DEGREE", "FOOT_POINTS"};
 
 projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_options *opts,
                                     struct projcurve_options *out)
@@ -28,7 +28,7 @@ projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_opti
         pc_options_defaults(out);
         return PROJCURVE_OK;
     }
-    for (int key = PROJCURVE_OPT_TOL_DISTANCE; key <= PROJCURVE_OPT_PCURVE_DEGREE; ++key) {
+    for (int key = PROJCURVE_OPT_TOL_DISTANCE; key <= PROJCURVE_OPT_FOOT_POINTS; ++key) {
         projcurve_option_type type;
         double lo, hi, value;
         if (projcurve_option_info(NULL, (projcurve_option)key, &type, &lo, &hi, NULL) !=
