@@ -192,6 +192,18 @@ typedef enum projcurve_option {
      * available, e.g. at a fold) is a straight segment: read each piece's
      * degree with projcurve_result_piece_pcurve. */
     PROJCURVE_OPT_PCURVE_DEGREE = 12,
+    /* integer: which foot points projcurve_project_orthogonal returns,
+     * PROJCURVE_FOOT_POINTS_MINIMA or PROJCURVE_FOOT_POINTS_ALL.
+     * PROJCURVE_FOOT_POINTS_MINIMA (0, the default): only the feet where the
+     * distance |S - P(t)| is locally smallest (K positive definite), what
+     * pulling a curve onto a face gives; a branch ends where its foot
+     * stops being a local minimum (P(t) at a centre of curvature,
+     * PROJCURVE_END_CURVATURE_CENTRE). PROJCURVE_FOOT_POINTS_ALL (1): every
+     * critical foot point, saddles and maxima of the distance too (e.g. the
+     * far side of a torus tube). Ignored by the directional and the
+     * implicit projections (the latter traces the one branch it is seeded
+     * on). Bounds [0, 1]. */
+    PROJCURVE_OPT_FOOT_POINTS = 13,
     /* double: wall time allowed per projection call, in seconds (a
      * monotonic clock); 0 = no limit (default), bounds [0, 1e9]. A call
      * that runs out returns PROJCURVE_ERR_LIMIT_REACHED with the partial
@@ -212,6 +224,9 @@ typedef enum projcurve_option {
      * partial result (PROJCURVE_ERR_LIMIT_REACHED) on every machine. */
     PROJCURVE_OPT_MAX_WORK = 15
 } projcurve_option;
+
+#define PROJCURVE_FOOT_POINTS_MINIMA 0
+#define PROJCURVE_FOOT_POINTS_ALL 1
 
 #define PROJCURVE_METHOD_SECOND_ORDER 0
 #define PROJCURVE_METHOD_RK4 1

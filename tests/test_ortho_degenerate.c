@@ -153,6 +153,9 @@ static void run_case(const degenerate_case *c)
                                              &curve));
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
+    /* far-side feet (saddles, maxima) are part of the expected answer */
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_FOOT_POINTS,
+                                       PROJCURVE_FOOT_POINTS_ALL));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, eps_d));
     projcurve_result *r = NULL;
     CHECK_OK(projcurve_project_orthogonal(NULL, surf, curve, o, &r));

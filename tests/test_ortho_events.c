@@ -51,6 +51,9 @@ static size_t project_with_step(const projcurve_surface *surf, const path *w, do
     CHECK_OK(projcurve_curve_create_callback(NULL, path_fn, (void *)w, t0, t1, &curve));
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
+    /* far-side feet (saddles, maxima) are part of the expected answer */
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_FOOT_POINTS,
+                                       PROJCURVE_FOOT_POINTS_ALL));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, 1e-4));
     if (param_step > 0.0)
         CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_PARAM_STEP, param_step));

@@ -443,7 +443,14 @@ static void test_one_branch(void)
     pc_shape_surface data = pc_shape_sphere(centre, R);
     projcurve_surface *surf = pc_shape_surface_create(&data);
     pc_shape_surface_free(&data);
-    CHECK_OK(projcurve_project_orthogonal(NULL, surf, curve, NULL, &rp));
+    /* every foot point: the far side of the sphere (a maximum) is the
+     * parametric route's second branch */
+    projcurve_options *all = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &all));
+    CHECK_OK(projcurve_options_set_int(NULL, all, PROJCURVE_OPT_FOOT_POINTS,
+                                       PROJCURVE_FOOT_POINTS_ALL));
+    CHECK_OK(projcurve_project_orthogonal(NULL, surf, curve, all, &rp));
+    projcurve_options_destroy(all);
     const size_t ni = ri ? projcurve_result_branch_count(ri) : 0;
     const size_t np = rp ? projcurve_result_branch_count(rp) : 0;
     printf("sphere: implicit route %zu branch(es), parametric route %zu\n", ni, np);

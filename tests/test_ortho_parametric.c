@@ -244,6 +244,9 @@ static projcurve_options *options(double eps_d)
 {
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
+    /* far-side feet (saddles, maxima) are part of the expected answer */
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_FOOT_POINTS,
+                                       PROJCURVE_FOOT_POINTS_ALL));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, eps_d));
     return o;
 }

@@ -50,6 +50,7 @@ struct projcurve_options {
     long long compose;
     long long jump_detection;
     long long pcurve_degree;   /* 1 or 3: PROJCURVE_OPT_PCURVE_DEGREE */
+    long long foot_points;     /* PROJCURVE_FOOT_POINTS_*: PROJCURVE_OPT_FOOT_POINTS */
     double time_limit;         /* seconds per call, 0 = none: PROJCURVE_OPT_TIME_LIMIT */
     long long max_work;        /* units per call, 0 = none: PROJCURVE_OPT_MAX_WORK */
     projcurve_progress_fn progress; /* projcurve_options_set_progress; NULL = none */

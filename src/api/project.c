@@ -30,6 +30,7 @@ static const char *const pc_option_names[] = {
     [PROJCURVE_OPT_COMPOSE] = "COMPOSE",
     [PROJCURVE_OPT_JUMP_DETECTION] = "JUMP_DETECTION",
     [PROJCURVE_OPT_PCURVE_DEGREE] = "PCURVE_DEGREE",
+    [PROJCURVE_OPT_FOOT_POINTS] = "FOOT_POINTS",
     [PROJCURVE_OPT_TIME_LIMIT] = "TIME_LIMIT",
     [PROJCURVE_OPT_MAX_WORK] = "MAX_WORK"};
 #define PC_OPTION_NAME_COUNT (sizeof pc_option_names / sizeof pc_option_names[0])

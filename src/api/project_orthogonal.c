@@ -10,6 +10,7 @@
 #include "ortho/implicit.h"
 #include "ortho/ortho_centres.h"
 #include "ortho/ortho_duplicates.h"
+#include "ortho/ortho_minima.h"
 #include "ortho/ortho_projector.h"
 #include "ortho/ortho_seeds.h"
 #include "refine/refine.h"
@@ -47,7 +48,8 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     pc_ortho_projector_init(&proj, &cache, surface, curve, o.newton_tol, (int)o.newton_max_iter);
     pc_ortho_finder_state finder_state;
     pc_seed_finder finder;
-    pc_ortho_finder_init(&finder, &finder_state, surface, curve);
+    const int minima_only = o.foot_points == PROJCURVE_FOOT_POINTS_MINIMA;
+    pc_ortho_finder_init(&finder, &finder_state, surface, curve, minima_only ? &proj : NULL);
     finder_state.budget = o.budget; /* a foot-point search can take long */
     const pc_trace_config config = {0.0, surface->size, 0, {0.0, 0.0, 0.0}};
 
@@ -63,6 +65,8 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     if (status == PROJCURVE_OK)
         status = pc_ortho_split_at_centres(ctx, &proj, r);
     if (status == PROJCURVE_OK) {
+        if (minima_only)
+            pc_ortho_keep_minima(&proj, r);
         pc_ortho_drop_duplicates(&proj, r);
         name_singular_ends(r);
         r->stats.tol_distance = o.tol_distance;

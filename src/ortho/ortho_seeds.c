@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "ortho/collapsed.h"
+#include "ortho/ortho_minima.h"
 #include "point/point.h"
 
 /* Initial capacity of the foot-point buffer; it grows when a search finds
@@ -77,9 +78,12 @@ static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx,
         if (count > st->capacity)
             count = st->capacity;
     }
-    for (size_t i = 0; status == PROJCURVE_OK && i < count; ++i)
-        if (!at_collapsed_point(st->surface, st->uv[2 * i], st->uv[2 * i + 1]))
-            status = pc_seed_list_push(ctx, out, t, st->uv[2 * i], st->uv[2 * i + 1]);
+    for (size_t i = 0; status == PROJCURVE_OK && i < count; ++i) {
+        const double u = st->uv[2 * i], v = st->uv[2 * i + 1];
+        if (!at_collapsed_point(st->surface, u, v) &&
+            (st->minima_of == NULL || pc_ortho_is_minimum(st->minima_of, t, u, v)))
+            status = pc_seed_list_push(ctx, out, t, u, v);
+    }
     return status;
 }
 
@@ -120,10 +124,12 @@ static void ortho_reset(pc_seed_finder *self)
 }
 
 void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
-                          const projcurve_surface *surface, const projcurve_curve *curve)
+                          const projcurve_surface *surface, const projcurve_curve *curve,
+                          const pc_projector *minima_of)
 {
     state->surface = surface;
     state->curve = curve;
+    state->minima_of = minima_of;
     state->interval = (curve->t1 - curve->t0) / PC_ORTHO_JUMP_CHECKS;
     state->uv = NULL;
     state->capacity = 0;

@@ -26,6 +26,10 @@
 typedef struct pc_ortho_finder_state {
     const projcurve_surface *surface;
     const projcurve_curve *curve;
+    /* Non-NULL: only the foot points that are local minima of the distance
+     * are seeds (PROJCURVE_FOOT_POINTS_MINIMA, ortho_minima.h), their
+     * Morse index evaluated with this projector. */
+    const pc_projector *minima_of;
     double interval;        /* full search at least every `interval` in t */
     double last_full_t;     /* t of the last check that asked for a search */
     size_t last_active;     /* branches alive at the previous check */
@@ -43,10 +47,12 @@ typedef struct pc_ortho_finder_state {
  * is found at the next one and traced back to where it was born. */
 #define PC_ORTHO_JUMP_CHECKS 16
 
-/* Sets up finder over state for surface and curve. Release with
+/* Sets up finder over state for surface and curve; minima_of (may be NULL:
+ * every foot point is a seed) as in pc_ortho_finder_state. Release with
  * pc_ortho_finder_free. */
 void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
-                          const projcurve_surface *surface, const projcurve_curve *curve);
+                          const projcurve_surface *surface, const projcurve_curve *curve,
+                          const pc_projector *minima_of);
 void pc_ortho_finder_free(pc_ortho_finder_state *state);
 
 #endif /* PC_ORTHO_SEEDS_H */

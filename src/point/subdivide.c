@@ -4,15 +4,17 @@
  */
 #include "point/subdivide.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "bezier/net.h"
 #include "common/error.h"
 
-/* Depth-first: a split pops one net and pushes four, so the stack never
- * holds more than 3 * depth + 1 nets; 2 more are scratch for the split. */
-#define PC_SUBDIV_STACK (3 * PC_SUBDIV_MAX_DEPTH + 1)
+/* Depth-first: a split pops one net and pushes four for 2 levels of depth
+ * (or two for 1), so the stack never holds more than 3 * depth / 2 + 1
+ * nets; 2 more are scratch for the split. */
+#define PC_SUBDIV_STACK (3 * PC_SUBDIV_MAX_DEPTH / 2 + 1)
 #define PC_SUBDIV_SCRATCH 2
 
 projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, int p, int q)
@@ -106,6 +108,39 @@ static void split_v(const double *net, int p, int q, double *bottom, double *top
         split_line(net + 4 * i, (size_t)q + 1, row, bottom + 4 * i, top + 4 * i);
 }
 
+/* Longest control polygon of the net (Cartesian points xyz) along u
+ * (along_v == 0) or v: the 3D extent of the sub-patch that way. */
+static double net_extent(const double *xyz, int p, int q, int along_v)
+{
+    const size_t n_u = (size_t)p + 1;
+    const size_t n_lines = along_v ? (size_t)p + 1 : (size_t)q + 1;
+    const size_t n_steps = along_v ? (size_t)q : (size_t)p;
+    double longest = 0.0;
+    for (size_t a = 0; a < n_lines; ++a) {
+        double len = 0.0;
+        for (size_t k = 0; k < n_steps; ++k) {
+            const size_t i0 = along_v ? k * n_u + a : a * n_u + k;
+            const size_t i1 = along_v ? (k + 1) * n_u + a : a * n_u + k + 1;
+            const double dx = xyz[3 * i1] - xyz[3 * i0], dy = xyz[3 * i1 + 1] - xyz[3 * i0 + 1],
+                         dz = xyz[3 * i1 + 2] - xyz[3 * i0 + 2];
+            len += sqrt(dx * dx + dy * dy + dz * dz);
+        }
+        longest = len > longest ? len : longest;
+    }
+    return longest;
+}
+
+/* Which directions a split halves: 1 u only, 2 v only, 3 both. */
+static int split_directions(const double *xyz, int p, int q)
+{
+    const double eu = net_extent(xyz, p, q, 0), ev = net_extent(xyz, p, q, 1);
+    if (eu > PC_SUBDIV_ANISOTROPY * ev)
+        return 1;
+    if (ev > PC_SUBDIV_ANISOTROPY * eu)
+        return 2;
+    return 3;
+}
+
 typedef struct stack_item {
     double u0, u1, v0, v1;
     int depth;
@@ -142,17 +177,35 @@ void pc_subdiv_walk(pc_subdiv_work *w, const pc_bezier_patch *patch, pc_subdiv_f
         const pc_subdiv_action action = decide(user, &sp);
         if (action != PC_SUBDIV_SPLIT || it.depth >= PC_SUBDIV_MAX_DEPTH)
             continue;
-        /* The quarters go straight to the slots top .. top + 3 (the first
-         * overwrites the parent, which split_u has consumed by then). */
+        int dirs = split_directions(sp.xyz, w->p, w->q);
+        if (dirs == 3 && it.depth + 2 > PC_SUBDIV_MAX_DEPTH)
+            continue;
+        /* The halves go straight to the slots top, top + 1, ... (the first
+         * overwrites the parent, which the first split has consumed by
+         * then). */
         double *left = scratch, *right = scratch + len;
-        split_u(net, w->p, w->q, left, right);
-        split_v(left, w->p, w->q, slot, slot + len);
-        split_v(right, w->p, w->q, slot + 2 * len, slot + 3 * len);
         const double um = 0.5 * (it.u0 + it.u1), vm = 0.5 * (it.v0 + it.v1);
-        items[top++] = (stack_item){it.u0, um, it.v0, vm, it.depth + 1};
-        items[top++] = (stack_item){it.u0, um, vm, it.v1, it.depth + 1};
-        items[top++] = (stack_item){um, it.u1, it.v0, vm, it.depth + 1};
-        items[top++] = (stack_item){um, it.u1, vm, it.v1, it.depth + 1};
+        if (dirs == 1) {
+            split_u(net, w->p, w->q, left, right);
+            memcpy(slot, left, len * sizeof *slot);
+            memcpy(slot + len, right, len * sizeof *slot);
+            items[top++] = (stack_item){it.u0, um, it.v0, it.v1, it.depth + 1};
+            items[top++] = (stack_item){um, it.u1, it.v0, it.v1, it.depth + 1};
+        } else if (dirs == 2) {
+            split_v(net, w->p, w->q, left, right);
+            memcpy(slot, left, len * sizeof *slot);
+            memcpy(slot + len, right, len * sizeof *slot);
+            items[top++] = (stack_item){it.u0, it.u1, it.v0, vm, it.depth + 1};
+            items[top++] = (stack_item){it.u0, it.u1, vm, it.v1, it.depth + 1};
+        } else {
+            split_u(net, w->p, w->q, left, right);
+            split_v(left, w->p, w->q, slot, slot + len);
+            split_v(right, w->p, w->q, slot + 2 * len, slot + 3 * len);
+            items[top++] = (stack_item){it.u0, um, it.v0, vm, it.depth + 2};
+            items[top++] = (stack_item){it.u0, um, vm, it.v1, it.depth + 2};
+            items[top++] = (stack_item){um, it.u1, it.v0, vm, it.depth + 2};
+            items[top++] = (stack_item){um, it.u1, vm, it.v1, it.depth + 2};
+        }
     }
 }
 
@@ -211,30 +264,31 @@ typedef struct interval {
     double lo, hi;
 } interval;
 
+/* Plain comparisons instead of fmin / fmax: the operands are finite, and
+ * the libm calls (NaN semantics) took half the time of the rational test. */
+static inline double dmin(double a, double b) { return a < b ? a : b; }
+static inline double dmax(double a, double b) { return a > b ? a : b; }
+
 static interval iv_mul(interval a, interval b)
 {
-    const double c[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-    interval r = {c[0], c[0]};
-    for (int k = 1; k < 4; ++k) {
-        r.lo = fmin(r.lo, c[k]);
-        r.hi = fmax(r.hi, c[k]);
-    }
-    return r;
+    const double c0 = a.lo * b.lo, c1 = a.lo * b.hi, c2 = a.hi * b.lo, c3 = a.hi * b.hi;
+    return (interval){dmin(dmin(c0, c1), dmin(c2, c3)), dmax(dmax(c0, c1), dmax(c2, c3))};
 }
 
 static interval iv_add(interval a, interval b) { return (interval){a.lo + b.lo, a.hi + b.hi}; }
 
 static interval iv_sq(interval a)
 {
+    const double l = a.lo * a.lo, h = a.hi * a.hi;
     if (a.lo <= 0.0 && a.hi >= 0.0)
-        return (interval){0.0, fmax(a.lo * a.lo, a.hi * a.hi)};
-    return (interval){fmin(a.lo * a.lo, a.hi * a.hi), fmax(a.lo * a.lo, a.hi * a.hi)};
+        return (interval){0.0, dmax(l, h)};
+    return (interval){dmin(l, h), dmax(l, h)};
 }
 
 static void iv_include(interval *r, double x)
 {
-    r->lo = fmin(r->lo, x);
-    r->hi = fmax(r->hi, x);
+    r->lo = dmin(r->lo, x);
+    r->hi = dmax(r->hi, x);
 }
 
 /* Rational patches: with B = A - p w (homogeneous, a polynomial patch),

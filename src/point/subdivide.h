@@ -13,8 +13,12 @@
 #include "bezier/bezier.h"
 #include "common/vec.h"
 
-/* Deepest subdivision level: a sub-patch is then 1/4096 of its patch. */
-#define PC_SUBDIV_MAX_DEPTH 12
+/* Deepest subdivision level, counted in halvings of the parameter box: a
+ * split into quarters counts 2, a split of one direction only (a sub-patch
+ * much longer in 3D one way than the other, see pc_subdiv_walk) counts 1.
+ * A sub-patch is then at least 1/4096 x 1/4096 of its patch, or as small in
+ * area when it was split one way only. */
+#define PC_SUBDIV_MAX_DEPTH 24
 
 typedef struct pc_subpatch {
     double u0, u1, v0, v1;  /* parameter box in the surface's parameters */
@@ -34,6 +38,10 @@ typedef pc_subdiv_action (*pc_subdiv_fn)(void *user, const pc_subpatch *sp);
  * nothing; higher degrees allocate. */
 #define PC_SUBDIV_LOCAL 4096
 
+/* Ratio of the 3D extents along u and v above which only the longer
+ * direction is split. */
+#define PC_SUBDIV_ANISOTROPY 4.0
+
 /* Scratch memory for walks over patches of degree (p, q). Holds a pointer
  * into itself: not to be copied once initialised. */
 typedef struct pc_subdiv_work {
@@ -48,8 +56,12 @@ projcurve_status pc_subdiv_work_init(projcurve_context *ctx, pc_subdiv_work *w, 
 void pc_subdiv_work_free(pc_subdiv_work *w);
 
 /* Walks the patch: decide() is called for the patch itself and for every
- * sub-patch that a SPLIT produced; at PC_SUBDIV_MAX_DEPTH a SPLIT counts as
- * STOP. */
+ * sub-patch that a SPLIT produced; a SPLIT that would pass
+ * PC_SUBDIV_MAX_DEPTH counts as STOP. A SPLIT halves only the direction in
+ * which the control net is more than PC_SUBDIV_ANISOTROPY times longer in
+ * 3D than in the other (a knot span of 1e-8 next to one of 1: quartering
+ * it would leave it as thin after every split, while its shape and the
+ * culling tests depend on the long direction alone), else both. */
 void pc_subdiv_walk(pc_subdiv_work *w, const pc_bezier_patch *patch, pc_subdiv_fn decide,
                     void *user);
 

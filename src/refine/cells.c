@@ -72,6 +72,13 @@ const pc_bezier_patch *pc_refine_common_patch(const pc_refiner *r, const pc_rver
     return pc_patch_grid_at(g, iu, iv);
 }
 
+void pc_refine_snap_to_knot_lines(const pc_refiner *r, pc_rvertex *v)
+{
+    const pc_patch_grid *g = r->grid;
+    v->u = snap_to_break(g->breaks_u, g->spans_u, v->u, r->snap);
+    v->v = snap_to_break(g->breaks_v, g->spans_v, v->v, r->snap);
+}
+
 int pc_refine_on_knot_line(const pc_refiner *r, const pc_rvertex *v)
 {
     const pc_patch_grid *g = r->grid;

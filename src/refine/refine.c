@@ -105,6 +105,8 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
     projcurve_status st = load_branch(r->ctx, b, &l->traced, descending);
     if (st != PROJCURVE_OK)
         return st;
+    for (size_t k = 0; k < l->traced.count; ++k)
+        pc_refine_snap_to_knot_lines(r, &l->traced.items[k]);
     const pc_rvertex *tv = l->traced.items;
     const size_t nt = l->traced.count;
     l->out.count = 0; /* what store_branch finds if the budget stops step 1 */

@@ -122,6 +122,12 @@ size_t pc_refine_guide_index(const pc_refiner *r, double t);
 /* S(u, v). */
 pc_vec3 pc_refine_surface_point(pc_refiner *r, double u, double v);
 
+/* v moved onto the knot lines it lies within r->snap of (rounding of the
+ * tracer's corrector: a traced vertex 1e-14 beside a knot line would
+ * otherwise count as crossing it, and the crossing, found a rounding error
+ * later in t, would leave a run too short for the corrector). */
+void pc_refine_snap_to_knot_lines(const pc_refiner *r, pc_rvertex *v);
+
 /* cells.c: the patch whose closed parameter box holds both a and b (then the
  * whole segment lies in it), or NULL. */
 const pc_bezier_patch *pc_refine_common_patch(const pc_refiner *r, const pc_rvertex *a,
