@@ -258,6 +258,36 @@ static void curve_on_plane(int n, const double d[3])
     projcurve_surface_destroy(s);
 }
 
+/* A curve on the plane only to a modelling tolerance, 1e-6 above and below
+ * it in turn (a CAD curve on its face; joinsurf_01 curve 7 lies on surface
+ * 1 so): points behind by less than eps_D count as on the curve, so it is
+ * still one branch over [0, 1], not cut at every sign change of lambda. */
+static void curve_near_plane(const double d[3])
+{
+    projcurve_surface *s = grid_plane(11);
+    const double pts[15] = {10, 15, 1e-6, 35, 80, -1e-6, 55, 20, 1e-6, 75, 85, -1e-6, 90, 40, 1e-6};
+    projcurve_curve *c = shape_bspline_curve(3, 5, pts);
+    projcurve_result *r = project(s, c, d, 1);
+    const vertex_report v = vertices(s, c, d, r);
+    printf("curve within 1e-6 of a plane: %zu branches, min lambda %.3g\n",
+           projcurve_result_branch_count(r), v.min_lambda);
+    CHECK(v.min_lambda >= -2e-6);
+    CHECK(projcurve_result_branch_count(r) == 1);
+    if (projcurve_result_branch_count(r) == 1) {
+        double t[2];
+        projcurve_branch_start st;
+        projcurve_branch_end en;
+        branch(r, 0, t, &st, &en);
+        CHECK(st == PROJCURVE_START_CURVE_START);
+        CHECK(en == PROJCURVE_END_CURVE_END);
+        CHECK_NEAR(t[0], 0.0, 1e-12);
+        CHECK_NEAR(t[1], 1.0, 1e-12);
+    }
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+}
+
 static projcurve_model *read_real(const char *file)
 {
     char rel[256];
@@ -349,6 +379,8 @@ int main(void)
     curve_on_plane(2, tilted);
     curve_on_plane(31, normal);
     curve_on_plane(31, tilted);
+    curve_near_plane(normal);
+    curve_near_plane(tilted);
     egg_lifted();
     pipe_behind();
     return pc_test_finish("test_trace_crossing");

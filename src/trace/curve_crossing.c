@@ -28,7 +28,8 @@ int pc_trace_behind(const pc_tracer *tr, const pc_proj_point *p)
     if (!tr->ray)
         return 0;
     const double cosine = fmax(fabs(p->det), PC_TRACE_DET_FOLD);
-    return pc_trace_lambda(tr, p) < -tr->lambda_tol * (1.0 + 1.0 / cosine);
+    const double band = fmax(tr->behind_tol, tr->lambda_tol * (1.0 + 1.0 / cosine));
+    return pc_trace_lambda(tr, p) < -band;
 }
 
 static double clamp(double x, double lo, double hi)
@@ -83,7 +84,7 @@ int pc_locate_crossing(pc_tracer *tr, const pc_proj_point *front, const pc_proj_
             continue;
         }
         const double fp = pc_trace_lambda(tr, &p);
-        if (fp < 0.0 && pc_trace_behind(tr, &p)) {
+        if (fp < 0.0) {
             tb = t;
             wb = fp;
             if (side == -1)
