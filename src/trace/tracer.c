@@ -263,7 +263,11 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             return PROJCURVE_OK;
         }
         double h = nominal_step(tr, cur) * scale;
-        if (h < tr->min_step) {
+        /* the floor of a cut step: 1e-13 of the domain in t, and a move of
+         * the projection on S (h |Q'|) no longer than the corrector's
+         * tolerance, below which the points it would add cannot be told
+         * apart from this one */
+        if (h < tr->min_step || (scale < 1.0 && h * cur->speed <= proj->newton_tol)) {
             *why = stall_reason(cur);
             return PROJCURVE_OK;
         }
