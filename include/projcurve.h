@@ -519,6 +519,13 @@ typedef struct projcurve_result projcurve_result;
  * PROJCURVE_END_LIMIT (unless it had a single point, which is dropped) and
  * the branches born later in the curve are missing.
  * A curve that misses the surface gives OK and a result with no branches.
+ * The projection holds in front of the curve, (q - p).Dir >= 0: a branch
+ * ends where the curve meets S (PROJCURVE_END_CURVE_CROSSING) and one
+ * starts where it leaves it (PROJCURVE_START_CURVE_CROSSING); lambda = 0
+ * counts, so a curve lying on S is its own projection. Where the curve runs
+ * along Dir its projection is a point: a branch whose image lies within
+ * eps_D of one point is not returned. Where Dir is tangent to S along a
+ * region (a plane seen edge-on) no branch is traced.
  * Statuses: OK, LIMIT_REACHED, CANCELLED, NULL_ARGUMENT, NOT_FINITE,
  * ZERO_DIRECTION, OUT_OF_RANGE (tolerances), CALLBACK, NO_MEMORY.
  * Thread-safe for distinct contexts; the inputs are only read. */

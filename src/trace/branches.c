@@ -104,6 +104,7 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     tr->ray = cfg->ray;
     tr->dir = cfg->dir;
     tr->lambda_tol = proj->newton_tol;
+    tr->behind_tol = opts->tol_distance;
 }
 
 static projcurve_branch_start start_reason(projcurve_branch_end backward_end)

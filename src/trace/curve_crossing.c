@@ -28,7 +28,8 @@ int pc_trace_behind(const pc_tracer *tr, const pc_proj_point *p)
     if (!tr->ray)
         return 0;
     const double cosine = fmax(fabs(p->det), PC_TRACE_DET_FOLD);
-    return pc_trace_lambda(tr, p) < -tr->lambda_tol * (1.0 + 1.0 / cosine);
+    const double band = fmax(tr->behind_tol, tr->lambda_tol * (1.0 + 1.0 / cosine));
+    return pc_trace_lambda(tr, p) < -band;
 }
 
 static double clamp(double x, double lo, double hi)
@@ -56,7 +57,8 @@ int pc_locate_crossing(pc_tracer *tr, const pc_proj_point *front, const pc_proj_
 {
     pc_proj_point a = *front; /* the farthest point known in front */
     double fa = pc_trace_lambda(tr, &a);
-    double tb = back->t, fb = pc_trace_lambda(tr, back);
+    const double fb = pc_trace_lambda(tr, back);
+    double tb = back->t;
     double wa = fa, wb = fb; /* the secant's values, halved by Illinois */
     int bisect = !(fb < 0.0) || !(fa > fb); /* no usable secant */
     int side = 0;     /* which end moved last: +1 a, -1 b (Illinois) */
@@ -66,12 +68,10 @@ int pc_locate_crossing(pc_tracer *tr, const pc_proj_point *front, const pc_proj_
             break;
         double t = 0.5 * (a.t + tb);
         if (!bisect) {
+            /* the secant's zero, when strictly inside the bracket (the
+             * Illinois halving keeps it from creeping up on one end) */
             const double x = a.t + (tb - a.t) * wa / (wa - wb);
-            /* keep the iterate strictly inside, away from the ends by a
-             * little more than rounding */
-            const double lo = fmin(a.t, tb), hi = fmax(a.t, tb);
-            const double margin = 1e-3 * (hi - lo);
-            if (x > lo + margin && x < hi - margin)
+            if (x > fmin(a.t, tb) && x < fmax(a.t, tb))
                 t = x;
         }
         pc_proj_point p;
@@ -83,7 +83,7 @@ int pc_locate_crossing(pc_tracer *tr, const pc_proj_point *front, const pc_proj_
             continue;
         }
         const double fp = pc_trace_lambda(tr, &p);
-        if (fp < 0.0 && pc_trace_behind(tr, &p)) {
+        if (fp < 0.0) {
             tb = t;
             wb = fp;
             if (side == -1)

@@ -196,15 +196,30 @@ static projcurve_branch_end stall_reason(const pc_proj_point *cur)
                                                    : PROJCURVE_END_FAILED;
 }
 
-/* The step from cur landed behind the curve: the branch ends where lambda
- * reaches 0 between them (on cur itself when nothing better is found). */
+/* The step from cur to next landed behind the curve (beyond the band
+ * pc_trace_behind allows). The vertices this run added at the end with
+ * lambda < 0 (within the band: a curve lying on S only to its modelling
+ * tolerance) are taken back, down to min_keep, and the branch ends where
+ * lambda reaches 0 after the last vertex in front, located to the
+ * corrector's tolerance; when every vertex it may take back is behind, it
+ * ends on the last one left. */
 static projcurve_status end_at_crossing(pc_tracer *tr, const pc_proj_point *cur,
                                         const pc_proj_point *next, pc_branch *b,
-                                        projcurve_branch_end *why)
+                                        size_t min_keep, projcurve_branch_end *why)
 {
     *why = PROJCURVE_END_CURVE_CROSSING;
+    pc_proj_point front = *cur, back = *next;
+    while (b->n_points > min_keep && pc_trace_lambda(tr, &front) < 0.0) {
+        back = front;
+        b->n_points--;
+        tr->n_points--;
+        tr->r->stats.points -= 1.0;
+        const double *v = b->points + 3 * (b->n_points - 1);
+        if (!tr->proj->derivatives(tr->proj, v[0], v[1], v[2], &front))
+            return PROJCURVE_OK;
+    }
     pc_proj_point at;
-    if (!pc_locate_crossing(tr, cur, next, &at))
+    if (pc_trace_lambda(tr, &front) < 0.0 || !pc_locate_crossing(tr, &front, &back, &at))
         return PROJCURVE_OK;
     if (tr->n_points >= tr->max_points) {
         tr->limit_hit = 1;
@@ -220,6 +235,8 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
     const pc_projector *proj = tr->proj;
     const double sign = direction >= 0 ? 1.0 : -1.0;
     projcurve_status st = PROJCURVE_OK;
+    /* vertices before this run's, and its seed, are never taken back */
+    const size_t min_keep = b->n_points + (add_seed ? 1 : 0);
     if (add_seed) {
         if (tr->n_points >= tr->max_points) {
             tr->limit_hit = 1;
@@ -262,7 +279,11 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             return PROJCURVE_OK;
         }
         double h = nominal_step(tr, cur) * scale;
-        if (h < tr->min_step) {
+        /* the floor of a cut step: 1e-13 of the domain in t, and a move of
+         * the projection on S (h |Q'|) no longer than the corrector's
+         * tolerance, below which the points it would add cannot be told
+         * apart from this one */
+        if (h < tr->min_step || (scale < 1.0 && h * cur->speed <= proj->newton_tol)) {
             *why = stall_reason(cur);
             return PROJCURVE_OK;
         }
@@ -278,7 +299,7 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             continue;
         }
         if (pc_trace_behind(tr, next)) /* the curve passed through S */
-            return end_at_crossing(tr, cur, next, b, why);
+            return end_at_crossing(tr, cur, next, b, min_keep, why);
         if (tr->n_points >= tr->max_points) {
             tr->limit_hit = 1;
             *why = PROJCURVE_END_LIMIT;

@@ -52,11 +52,13 @@ typedef struct pc_tracer {
     double progress_lo, progress_hi;
     /* Ray projections (directional): a point of F = 0 is a projection only
      * where lambda = (S - P).dir >= 0; a branch ends where lambda reaches 0
-     * (PROJCURVE_END_CURVE_CROSSING). lambda_tol is the rounding of lambda
-     * that still counts as 0 (the corrector's tolerance). */
+     * (PROJCURVE_END_CURVE_CROSSING). lambda_tol is the corrector's
+     * tolerance, to which the crossing is located; behind_tol (eps_D) how
+     * far behind a step may land before the branch ends there: a curve
+     * lying on S only to its modelling tolerance stays one branch. */
     int ray;
     pc_vec3 dir;
-    double lambda_tol;
+    double lambda_tol, behind_tol;
 } pc_tracer;
 
 /* Polls the call's budget for one unit of tracing work at curve parameter
@@ -93,14 +95,16 @@ int pc_locate_exit(pc_tracer *tr, const pc_proj_point *cur, double h, pc_proj_po
 /* Ray projections: lambda = (S - P).dir at p, in model units. */
 double pc_trace_lambda(const pc_tracer *tr, const pc_proj_point *p);
 
-/* 1 when p lies behind the curve beyond rounding: lambda below -lambda_tol,
- * scaled by 1 / |det| (the corrector leaves S - P off the ray by up to its
- * tolerance, which moves lambda by that over the tangent of the angle
- * between Dir and the normal). Always 0 for projections without a ray. */
+/* 1 when p lies behind the curve beyond the band that still counts as on
+ * it: lambda below -max(behind_tol, lambda_tol (1 + 1 / |det|)) (the
+ * corrector leaves S - P off the ray by up to its tolerance, which moves
+ * lambda by that over the tangent of the angle between Dir and the
+ * normal). Always 0 for projections without a ray. */
 int pc_trace_behind(const pc_tracer *tr, const pc_proj_point *p);
 
-/* Where the branch from `front` (not behind) to `back` (behind, one step
- * of the tracer away, either direction in t) meets the curve, lambda = 0:
+/* Where the branch from `front` (lambda >= 0) to `back` (lambda < 0, at
+ * most a step of the tracer away, either direction in t) meets the curve,
+ * lambda = 0:
  * regula falsi (Illinois) on t with bisection as the fallback, each
  * iterate predicted by the Taylor model at the nearer known point and
  * corrected, until |lambda| <= lambda_tol or the bracket is below

@@ -412,6 +412,10 @@ def check_branch_geometry(name, case, b, written, curve):
             span = max(surface.domain[1] - surface.domain[0], surface.domain[3] - surface.domain[2])
             check(on_edge(u, v) <= 1e-9 * span,
                   f"{name}: '{kind}' at (u, v) = ({u}, {v}), not on the domain edge")
+        elif kind == "curve_crossing":
+            # the curve meets S there: S(u, v) is the curve's point
+            gap = norm(sub(surface.eval(u, v), curve.eval(t)))
+            check(gap <= tol, f"{name}: '{kind}' at t = {t} is {gap:.3g} from the curve")
 
 
 def part_cases(exe, data_dir, work):
