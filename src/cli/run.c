@@ -104,23 +104,54 @@ static double orthogonal_residual(const double *s, const double d[3])
     return tangential(d, n);
 }
 
-/* The violation of the projection condition at one traced point. */
+/* Parameter nudge, as a fraction of the domain's width, that moves an
+ * evaluation off a knot line to the patch on one side of it (S moves by
+ * ~1e-12 of the model size). */
+#define CLI_SIDE_NUDGE 1e-12
+
+/* The orthogonal residual at (u, v), INFINITY where S cannot be evaluated. */
+static double orthogonal_at(projcurve_context *ctx, const projcurve_surface *surface,
+                            const double p[3], double u, double v)
+{
+    double s[18];
+    if (projcurve_surface_eval(ctx, surface, u, v, 2, s) != PROJCURVE_OK)
+        return INFINITY;
+    const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
+    return orthogonal_residual(s, d);
+}
+
+/* The violation of the projection condition at one traced point. For the
+ * orthogonal kind, the smallest of the residuals at (u, v) and just beside
+ * it on either side in u and in v: on a knot line where S is only C0 (a
+ * crease of a faceted surface, as every knot of a degree-1 surface) the
+ * derivatives are those of one patch, and a foot point of the patch on the
+ * other side measured with them showed residuals of 3,400
+ * (test_pipe_out_true.step surface 0) while it is exact on its own side. */
 static double residual_at(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
                           const double tuv[3])
 {
-    double s[18], p[3];
-    if (projcurve_surface_eval(ctx, job->surfaces[pair->surface], tuv[1], tuv[2], 2, s) !=
-            PROJCURVE_OK ||
-        projcurve_curve_eval(ctx, job->curves[pair->curve], tuv[0], 0, p) != PROJCURVE_OK)
+    const projcurve_surface *surface = job->surfaces[pair->surface];
+    double s[3], p[3];
+    if (projcurve_curve_eval(ctx, job->curves[pair->curve], tuv[0], 0, p) != PROJCURVE_OK)
         return INFINITY;
-    const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
     if (!job->orthogonal) {
+        if (projcurve_surface_eval(ctx, surface, tuv[1], tuv[2], 0, s) != PROJCURVE_OK)
+            return INFINITY;
         /* distance of S from the line P + lambda Dir */
+        const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
         double c[3];
         cross3(d, job->dir, c);
         return norm3(c) / norm3(job->dir);
     }
-    return orthogonal_residual(s, d);
+    double dom[4];
+    projcurve_surface_domain(ctx, surface, dom);
+    const double hu = CLI_SIDE_NUDGE * (dom[1] - dom[0]), hv = CLI_SIDE_NUDGE * (dom[3] - dom[2]);
+    const double u = tuv[1], v = tuv[2];
+    double r = orthogonal_at(ctx, surface, p, u, v);
+    r = fmin(r, orthogonal_at(ctx, surface, p, fmax(dom[0], u - hu), v));
+    r = fmin(r, orthogonal_at(ctx, surface, p, fmin(dom[1], u + hu), v));
+    r = fmin(r, orthogonal_at(ctx, surface, p, u, fmax(dom[2], v - hv)));
+    return fmin(r, orthogonal_at(ctx, surface, p, u, fmin(dom[3], v + hv)));
 }
 
 void cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
