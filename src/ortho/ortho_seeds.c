@@ -27,17 +27,6 @@ static projcurve_status grow(projcurve_context *ctx, pc_ortho_finder_state *st, 
     return PROJCURVE_OK;
 }
 
-/* The points of the branches alive at st->skip_t (see ortho_seeds.h). */
-static projcurve_status known_points(projcurve_context *ctx, const pc_ortho_finder_state *st,
-                                     pc_seed_list *out)
-{
-    projcurve_status status = PROJCURVE_OK;
-    for (size_t i = 0; status == PROJCURVE_OK && i < st->known.count; ++i)
-        status = pc_seed_list_push(ctx, out, st->known.items[i].t, st->known.items[i].u,
-                                   st->known.items[i].v);
-    return status;
-}
-
 /* 1 when (u, v) is a collapsed point of the parametrisation (collapsed.h).
  * Such a foot point is no seed: its u (or v) is arbitrary (at the pole of a
  * sphere every u is a foot point of a P on the axis, and the search returns
@@ -51,8 +40,8 @@ static int at_collapsed_point(const projcurve_surface *s, double u, double v)
     return pc_collapsed_direction(sd[1], sd[2]) != PC_COLLAPSE_NONE;
 }
 
-/* Every local foot point of P(t) (projcurve_surface_foot_points), or the
- * known ones where may_jump asked for no search. */
+/* Every local foot point of P(t) (projcurve_surface_foot_points), or none
+ * where may_jump asked for no search (ortho_seeds.h). */
 static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx, double t,
                                    pc_seed_list *out)
 {
@@ -61,7 +50,7 @@ static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx,
     const int skip = st->skip_due && t == st->skip_t;
     st->skip_due = 0;
     if (skip)
-        return known_points(ctx, st, out);
+        return PROJCURVE_OK;
     pc_vec3 p;
     if (pc_curve_eval(st->curve, t, 0, NULL, &p) != PROJCURVE_OK)
         return pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "curve callback failed at t = %.17g", t);
@@ -91,24 +80,15 @@ static int ortho_may_jump(pc_seed_finder *self, double t, const pc_seed *active,
                           size_t n_active, double ds)
 {
     pc_ortho_finder_state *st = self->state;
+    (void)active;
     (void)ds;
     int search = 0;
     if (!st->started || n_active != st->last_active || t - st->last_full_t >= st->interval)
         search = 1;
     st->started = 1;
     st->last_active = n_active;
-    st->skip_due = 0;
-    if (!search) {
-        /* Keep the active points for a find the engine may run anyway;
-         * where they cannot be kept (no memory), that find searches. */
-        st->known.count = 0;
-        int kept = 1;
-        for (size_t i = 0; kept && i < n_active; ++i)
-            kept = pc_seed_list_push(NULL, &st->known, active[i].t, active[i].u,
-                                     active[i].v) == PROJCURVE_OK;
-        st->skip_due = kept;
-        st->skip_t = t;
-    }
+    st->skip_due = !search;
+    st->skip_t = t;
     if (search)
         st->last_full_t = t;
     return search;
@@ -133,7 +113,6 @@ void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
     state->interval = (curve->t1 - curve->t0) / PC_ORTHO_JUMP_CHECKS;
     state->uv = NULL;
     state->capacity = 0;
-    state->known = (pc_seed_list){0};
     state->budget = NULL;
     finder->find = ortho_find;
     finder->may_jump = ortho_may_jump;
@@ -147,5 +126,4 @@ void pc_ortho_finder_free(pc_ortho_finder_state *state)
     free(state->uv);
     state->uv = NULL;
     state->capacity = 0;
-    pc_seed_list_free(&state->known);
 }

@@ -32,6 +32,13 @@
 #define FEET_MAX_STARTS 4096
 /* |Su x Sv| below this fraction of |Su|^2 + |Sv|^2: a singular point. */
 #define FEET_SINGULAR 1e-8
+/* A patch narrower than this fraction of the domain in u or v is a knot
+ * span of rounding width (hammer.iges surface 9 has [-1.5e-14, 0] in u):
+ * in space it is its edge curve, and its derivatives, divided by that
+ * width, point anywhere. Its "foot points" satisfy G = 0 for those
+ * derivatives, not for the surface: it is not searched (the foot points
+ * on that edge are the neighbouring patch's). */
+#define FEET_MIN_SPAN 1e-12
 
 typedef struct feet_search {
     const projcurve_surface *s;
@@ -84,6 +91,17 @@ static int is_regular(const pc_nurbs_surface *s, double u, double v)
     return area > FEET_SINGULAR * (vec3_dot(d[1], d[1]) + vec3_dot(d[2], d[2]));
 }
 
+/* 1 when x lies strictly inside a span of breaks narrower than
+ * FEET_MIN_SPAN of the domain [breaks[0], breaks[n]]. */
+static int in_thin_span(const double *breaks, size_t n, double x)
+{
+    const double thin = FEET_MIN_SPAN * (breaks[n] - breaks[0]);
+    for (size_t k = 0; k < n; ++k)
+        if (breaks[k + 1] - breaks[k] <= thin && x > breaks[k] && x < breaks[k + 1])
+            return 1;
+    return 0;
+}
+
 /* Newton from (u, v): 0 if it failed, 1 if it converged inside the
  * sub-patch (grown by half its size), 2 if it converged farther away. */
 static int start_newton(feet_search *fs, const pc_subpatch *sp, double u, double v)
@@ -91,9 +109,11 @@ static int start_newton(feet_search *fs, const pc_subpatch *sp, double u, double
     ++fs->starts;
     const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
     double uv[2] = {u, v};
+    const pc_patch_grid *g = &fs->s->grid;
     if (!pc_surface_foot_newton(&fs->s->nurbs, fs->p, fs->s->size, hu, hv, uv) ||
-        !is_regular(&fs->s->nurbs, uv[0], uv[1]))
-        return 0;
+        !is_regular(&fs->s->nurbs, uv[0], uv[1]) ||
+        in_thin_span(g->breaks_u, g->spans_u, uv[0]) || in_thin_span(g->breaks_v, g->spans_v, uv[1]))
+        return 0; /* a thin span's "foot points" are its derivatives' (FEET_MIN_SPAN) */
     if (!push_foot(fs, uv[0], uv[1]))
         return 1;
     const int inside = uv[0] >= sp->u0 - 0.5 * hu && uv[0] <= sp->u1 + 0.5 * hu &&
@@ -182,10 +202,20 @@ static int enter_node(void *user, size_t node_index)
     return pc_tangent_boxes_may_hold_foot(&fs->s->tangents, &fs->s->bvh, node_index, fs->p);
 }
 
+/* 1 when the patch has the extent FEET_MIN_SPAN asks for. */
+static int has_extent(const projcurve_surface *s, const pc_bezier_patch *patch)
+{
+    const double *dom = s->nurbs.domain;
+    return patch->u1 - patch->u0 > FEET_MIN_SPAN * (dom[1] - dom[0]) &&
+           patch->v1 - patch->v0 > FEET_MIN_SPAN * (dom[3] - dom[2]);
+}
+
 static int search_patch(void *user, size_t patch_index)
 {
     feet_search *fs = user;
-    pc_subdiv_walk(fs->work, &fs->s->grid.patches[patch_index], decide_feet, fs);
+    const pc_bezier_patch *patch = &fs->s->grid.patches[patch_index];
+    if (has_extent(fs->s, patch))
+        pc_subdiv_walk(fs->work, patch, decide_feet, fs);
     return fs->status != PROJCURVE_OK;
 }
 
@@ -204,7 +234,7 @@ static projcurve_status foot_points(projcurve_context *ctx, const projcurve_surf
     } else {
         const size_t n_patches = s->grid.spans_u * s->grid.spans_v;
         for (size_t k = 0; k < n_patches && fs.status == PROJCURVE_OK; ++k)
-            pc_subdiv_walk(fs.work, &s->grid.patches[k], decide_feet, &fs);
+            search_patch(&fs, k);
     }
     pc_subdiv_work_free(fs.work);
     if (fs.status != PROJCURVE_OK)

@@ -297,42 +297,52 @@ static void iv_include(interval *r, double x)
  * Bernstein coefficients of B, w and of their hodographs; its width shrinks
  * linearly with the sub-patch, so deep sub-patches away from foot points are
  * discarded (a cone of control point differences would not shrink: for
- * rational nets it must include differences across rows). */
-static int may_vanish_rational(const pc_subpatch *sp, int p, int q, pc_vec3 pt, int along_v)
+ * rational nets it must include differences across rows). The boxes of B
+ * and w serve both directions: one pass over the net. */
+static int may_vanish_rational(const pc_subpatch *sp, int p, int q, pc_vec3 pt)
 {
     const size_t n_u = (size_t)p + 1, n = n_u * ((size_t)q + 1);
     const double pp[3] = {pt.x, pt.y, pt.z};
-    interval b[3], bd[3], w = {INFINITY, -INFINITY}, wd = {INFINITY, -INFINITY};
+    interval b[3], bd[2][3], w = {INFINITY, -INFINITY}, wd[2];
     for (int k = 0; k < 3; ++k)
-        b[k] = bd[k] = (interval){INFINITY, -INFINITY};
+        b[k] = bd[0][k] = bd[1][k] = (interval){INFINITY, -INFINITY};
+    wd[0] = wd[1] = w;
     for (size_t i = 0; i < n; ++i) {
         const double *h = sp->cw + 4 * i;
+        const double bi[3] = {h[0] - pp[0] * h[3], h[1] - pp[1] * h[3], h[2] - pp[2] * h[3]};
         for (int k = 0; k < 3; ++k)
-            iv_include(&b[k], h[k] - pp[k] * h[3]);
+            iv_include(&b[k], bi[k]);
         iv_include(&w, h[3]);
         const size_t col = i % n_u, row = i / n_u;
-        if (along_v ? row == (size_t)q : col == (size_t)p)
-            continue;
-        const double *h1 = h + 4 * (along_v ? n_u : 1); /* next point along dir */
-        for (int k = 0; k < 3; ++k)
-            iv_include(&bd[k], (h1[k] - pp[k] * h1[3]) - (h[k] - pp[k] * h[3]));
-        iv_include(&wd, h1[3] - h[3]);
+        for (int dir = 0; dir < 2; ++dir) {
+            if (dir ? row == (size_t)q : col == (size_t)p)
+                continue;
+            const double *h1 = h + 4 * (dir ? n_u : 1); /* next point along dir */
+            for (int k = 0; k < 3; ++k)
+                iv_include(&bd[dir][k], (h1[k] - pp[k] * h1[3]) - bi[k]);
+            iv_include(&wd[dir], h1[3] - h[3]);
+        }
     }
     /* The hodograph's degree factor is a positive constant: signs only. */
-    interval dot = {0.0, 0.0}, norm2 = {0.0, 0.0};
-    for (int k = 0; k < 3; ++k) {
-        dot = iv_add(dot, iv_mul(b[k], bd[k]));
+    interval norm2 = {0.0, 0.0};
+    for (int k = 0; k < 3; ++k)
         norm2 = iv_add(norm2, iv_sq(b[k]));
+    for (int dir = 0; dir < 2; ++dir) {
+        interval dot = {0.0, 0.0};
+        for (int k = 0; k < 3; ++k)
+            dot = iv_add(dot, iv_mul(b[k], bd[dir][k]));
+        const interval first = iv_mul(w, dot), second = iv_mul(wd[dir], norm2);
+        const interval num = {first.lo - second.hi, first.hi - second.lo};
+        if (num.lo > 0.0 || num.hi < 0.0)
+            return 0;
     }
-    const interval first = iv_mul(w, dot), second = iv_mul(wd, norm2);
-    const interval num = {first.lo - second.hi, first.hi - second.lo};
-    return !(num.lo > 0.0 || num.hi < 0.0);
+    return 1;
 }
 
 int pc_subpatch_may_hold_foot(const pc_subpatch *sp, int p, int q, int rational, pc_vec3 pt)
 {
     if (rational)
-        return may_vanish_rational(sp, p, q, pt, 0) && may_vanish_rational(sp, p, q, pt, 1);
+        return may_vanish_rational(sp, p, q, pt);
     const double lo[3] = {sp->box[0] - pt.x, sp->box[1] - pt.y, sp->box[2] - pt.z};
     const double hi[3] = {sp->box[3] - pt.x, sp->box[4] - pt.y, sp->box[5] - pt.z};
     return may_vanish_polynomial(sp, p, q, lo, hi, 0) && may_vanish_polynomial(sp, p, q, lo, hi, 1);
