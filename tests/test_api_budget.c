@@ -469,6 +469,36 @@ static void test_crossings_bounded_by_pieces(void)
     projcurve_surface_destroy(plane);
 }
 
+/* The implicit fit allocated pieces past MAX_PIECES (it checked only the
+ * point limit): now it stops at the limit like the parametric projections,
+ * with the pieces made kept and the branch ending with END_LIMIT. */
+static void test_implicit_piece_limit(const fixture *f)
+{
+    projcurve_options *o = base_options(CALL_IMPLICIT);
+    projcurve_result *full = NULL, *cut = NULL;
+    CHECK_OK(run(f, CALL_IMPLICIT, o, NULL, &full));
+    double pieces = 0.0;
+    CHECK_OK(projcurve_result_stat(NULL, full, PROJCURVE_STAT_PIECES, &pieces));
+    CHECK(pieces > 3.0);
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_PIECES, 3));
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    CHECK_STATUS(run(f, CALL_IMPLICIT, o, ctx, &cut), PROJCURVE_ERR_LIMIT_REACHED);
+    CHECK(strstr(projcurve_context_message(ctx), "piece limit 3") != NULL);
+    CHECK(cut != NULL);
+    if (cut != NULL) {
+        size_t n_pieces = 0;
+        projcurve_branch_end end;
+        CHECK_OK(projcurve_result_branch_info(NULL, cut, 0, NULL, NULL, &end, NULL, &n_pieces));
+        CHECK(n_pieces == 3 && end == PROJCURVE_END_LIMIT);
+        check_readable(cut, 0.0, 1.0);
+    }
+    projcurve_result_destroy(full);
+    projcurve_result_destroy(cut);
+    projcurve_context_destroy(ctx);
+    projcurve_options_destroy(o);
+}
+
 /* ---- real data: calls that ran for seconds to minutes ----------------- */
 
 /* linkrods.step, curve 7: onto surface 1 along -z the jump sweep's step
@@ -569,6 +599,7 @@ int main(void)
         check_work_limit(&f, (call_kind)kind);
         check_time_limit(&f, (call_kind)kind);
     }
+    test_implicit_piece_limit(&f);
     projcurve_curve_destroy(f.wave);
     projcurve_surface_destroy(f.surface);
     return pc_test_finish("test_api_budget");

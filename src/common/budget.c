@@ -75,6 +75,8 @@ static projcurve_status stop(pc_budget *b, projcurve_status status, int why)
 
 projcurve_status pc_budget_poll(pc_budget *b, double stage_fraction)
 {
+    if (b->status != PROJCURVE_OK)
+        return b->status;
     b->next_poll = b->work + PC_BUDGET_POLL_EVERY;
     if (b->max_work > 0) {
         if (b->work > b->max_work)

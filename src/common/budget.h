@@ -74,9 +74,18 @@ void pc_budget_init_clock(pc_budget *b, double time_limit, unsigned long long ma
 /* The next stage owns the fractions [lo, hi] of the call (0 <= lo <= hi <= 1). */
 void pc_budget_stage(pc_budget *b, double lo, double hi);
 
-/* The full poll behind pc_budget_check: the work limit, the clock, the
- * callback. */
+/* The full poll behind pc_budget_check: the status of a stopped budget,
+ * else the work limit, the clock, the callback. */
 projcurve_status pc_budget_poll(pc_budget *b, double stage_fraction);
+
+/* Counts one unit of work done; 1 when pc_budget_poll is due (a full
+ * poll, or the budget has stopped). The hottest loops (the tracer's) call
+ * this and compute the fraction for pc_budget_poll only then. b may be
+ * NULL: no budget, never due. */
+static inline int pc_budget_tick(pc_budget *b)
+{
+    return b != NULL && (b->status != PROJCURVE_OK || ++b->work >= b->next_poll);
+}
 
 /* One unit of work done; stage_fraction in [0, 1] is how far the current
  * stage is (clamped; values below an earlier one are ignored). Returns OK
@@ -85,13 +94,7 @@ projcurve_status pc_budget_poll(pc_budget *b, double stage_fraction);
  * b may be NULL: no budget, always OK. */
 static inline projcurve_status pc_budget_check(pc_budget *b, double stage_fraction)
 {
-    if (b == NULL)
-        return PROJCURVE_OK;
-    if (b->status != PROJCURVE_OK)
-        return b->status;
-    if (++b->work < b->next_poll)
-        return PROJCURVE_OK;
-    return pc_budget_poll(b, stage_fraction);
+    return pc_budget_tick(b) ? pc_budget_poll(b, stage_fraction) : PROJCURVE_OK;
 }
 
 /* The status the budget stopped with (OK while it has not). */

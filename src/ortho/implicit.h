@@ -85,15 +85,19 @@ projcurve_status pc_implicit_point_at(projcurve_context *ctx, const pc_implicit 
 
 /* Traces one branch from the foot point of P(t0) found from P(t0) itself
  * into r (points (t, x, y, z)), and sets imp->grad_floor relative to the
- * gradient at that seed (for the fit that follows). Statuses: OK, LIMIT_REACHED, CALLBACK,
- * SINGULAR, NOT_CONVERGED (no foot point found for P(t0)), NO_MEMORY. */
+ * gradient at that seed (for the fit that follows). opts->budget (may be
+ * NULL) is polled once per step. Statuses: OK, LIMIT_REACHED (max_points
+ * or the budget), CANCELLED (the budget's callback), CALLBACK, SINGULAR,
+ * NOT_CONVERGED (no foot point found for P(t0)), NO_MEMORY. */
 projcurve_status pc_implicit_trace(projcurve_context *ctx, pc_implicit *imp,
                                    const struct projcurve_options *opts, projcurve_result *r);
 
 /* Replaces the pieces of every branch of r by cubic Bezier pieces (C1
  * Hermite in t) within eps_D of the exact foot-point curve, inserting exact
- * vertices where needed. Statuses: OK, LIMIT_REACHED, CALLBACK, SINGULAR,
- * NO_MEMORY. */
+ * vertices where needed; opts->budget (may be NULL) is polled once per
+ * segment tried, and pieces stop at opts->max_pieces. Statuses: OK,
+ * LIMIT_REACHED (max_points, max_pieces or the budget; the branch cut ends
+ * with PROJCURVE_END_LIMIT), CANCELLED, CALLBACK, SINGULAR, NO_MEMORY. */
 projcurve_status pc_implicit_fit(projcurve_context *ctx, const pc_implicit *imp, double eps_d,
                                  const struct projcurve_options *opts, projcurve_result *r);
 

@@ -15,8 +15,10 @@
  * projection and every joint is within eps_T, splits segments at the knot
  * lines of S, and composes each segment with its Bezier patch (compose/).
  * eps_D and eps_T come from opts (automatic eps_D = 1e-4 model size).
- * Statuses: OK, LIMIT_REACHED (opts->max_pieces; the pieces made so far stay),
- * NO_MEMORY. */
+ * opts->budget (may be NULL) is polled once per output vertex.
+ * Statuses: OK, LIMIT_REACHED (opts->max_pieces, or the budget's time or
+ * work limit; the pieces made so far stay), CANCELLED (the budget's
+ * progress callback; the same), NO_MEMORY. */
 projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projector *proj,
                                        const struct projcurve_options *opts,
                                        projcurve_result *r);

@@ -90,8 +90,11 @@ typedef struct pc_trace_config {
  * mid-curve. opts->method selects the predictor, opts->param_step the
  * constant parameter step (0 = arc-length step), opts->max_points bounds
  * the total number of vertices.
- * Statuses: OK; LIMIT_REACHED (max_points: the branches traced so far are
- * kept, the one cut ends with PROJCURVE_END_LIMIT); NO_MEMORY; CALLBACK. */
+ * opts->budget (may be NULL) is polled once per step and per sweep check.
+ * Statuses: OK; LIMIT_REACHED (max_points, or the budget's time or work
+ * limit: the branches traced so far are kept, the one cut ends with
+ * PROJCURVE_END_LIMIT); CANCELLED (the budget's progress callback, the
+ * same partial result); NO_MEMORY; CALLBACK. */
 projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *proj,
                                    const struct projcurve_options *opts,
                                    pc_seed_finder *finder, const pc_trace_config *config,

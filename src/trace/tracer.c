@@ -67,12 +67,12 @@ static projcurve_status add_vertex(pc_tracer *tr, pc_branch *b, double t, double
     return PROJCURVE_OK;
 }
 
-int pc_tracer_budget_spent(pc_tracer *tr, double t)
+int pc_tracer_budget_poll(pc_tracer *tr, double t)
 {
     const double span = tr->t_end - tr->t_begin;
     const double at = span > 0.0 ? (t - tr->t_begin) / span : 0.0;
     const double f = tr->progress_lo + (tr->progress_hi - tr->progress_lo) * at;
-    if (pc_budget_check(tr->budget, f) == PROJCURVE_OK)
+    if (pc_budget_poll(tr->budget, f) == PROJCURVE_OK)
         return 0;
     tr->limit_hit = 1;
     return 1;

@@ -61,9 +61,17 @@ typedef struct pc_tracer {
     double lambda_tol, behind_tol;
 } pc_tracer;
 
-/* Polls the call's budget for one unit of tracing work at curve parameter
- * t; 1 (and limit_hit set) when the budget stops the call. */
-int pc_tracer_budget_spent(pc_tracer *tr, double t);
+/* Polls the call's budget in full at curve parameter t (after
+ * pc_budget_tick said it is due); 1 (and limit_hit set) when the budget
+ * stops the call. */
+int pc_tracer_budget_poll(pc_tracer *tr, double t);
+
+/* One unit of tracing work done at curve parameter t: 1 (and limit_hit
+ * set) when the budget stops the call. */
+static inline int pc_tracer_budget_spent(pc_tracer *tr, double t)
+{
+    return pc_budget_tick(tr->budget) && pc_tracer_budget_poll(tr, t);
+}
 
 /* Traces one branch from the seed (a corrected point) towards t_stop
  * (direction +1: forward, -1: backward), appending vertices (t, u, v) to b;
