@@ -508,14 +508,8 @@ static void test_implicit_piece_limit(const fixture *f)
  * depends on the machine's speed but the generous hang guard). */
 static void test_real_calls(void)
 {
-    FILE *probe = fopen(pc_test_shared_path("data/real/linkrods.step"), "r");
-    if (probe == NULL) {
-        printf("../shared/data/real/linkrods.step not found: real-data part skipped\n");
-        return;
-    }
-    fclose(probe);
     projcurve_model *m = NULL;
-    CHECK_OK(projcurve_model_read_file(NULL, pc_test_shared_path("data/real/linkrods.step"), &m));
+    CHECK_OK(projcurve_model_read_file(NULL, pc_test_data_path("real/linkrods.step"), &m));
     if (m == NULL)
         return;
     const projcurve_curve *c = projcurve_model_curve(m, 7);

@@ -127,10 +127,9 @@ static void test_circle_on_planes(void)
 static void test_pipe_circle(void)
 {
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path("data/real/test_pipe_out_true.step"),
+    if (projcurve_model_read_file(NULL, pc_test_data_path("real/test_pipe_out_true.step"),
                                   &m) != PROJCURVE_OK) {
-        printf("test_pipe_out_true.step: not readable, skipped\n");
-        return;
+        pc_test_missing_data("real/test_pipe_out_true.step");
     }
     const projcurve_surface *s = projcurve_model_surface(m, 1);
     const projcurve_curve *c = projcurve_model_curve(m, 1);

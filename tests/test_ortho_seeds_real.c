@@ -237,10 +237,9 @@ static projcurve_curve *lifted_diagonal(const projcurve_surface *s, double lift)
 static void test_hammer(void)
 {
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path("data/real/hammer.iges"), &m) !=
+    if (projcurve_model_read_file(NULL, pc_test_data_path("real/hammer.iges"), &m) !=
         PROJCURVE_OK) {
-        printf("hammer.iges: not readable, skipped\n");
-        return;
+        pc_test_missing_data("real/hammer.iges");
     }
     const projcurve_surface *s = projcurve_model_surface(m, 9);
     CHECK(s != NULL);
@@ -256,9 +255,9 @@ int main(void)
 {
     test_hammer();
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path("data/real/linkrods.step"), &m) !=
+    if (projcurve_model_read_file(NULL, pc_test_data_path("real/linkrods.step"), &m) !=
         PROJCURVE_OK)
-        pc_test_skip("linkrods.step not readable");
+        pc_test_missing_data("real/linkrods.step");
     const projcurve_surface *tube = projcurve_model_surface(m, 11);
     const projcurve_surface *thin = projcurve_model_surface(m, 16);
     CHECK(tube != NULL && thin != NULL);

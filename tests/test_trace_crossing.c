@@ -291,11 +291,10 @@ static void curve_near_plane(const double d[3])
 static projcurve_model *read_real(const char *file)
 {
     char rel[256];
-    snprintf(rel, sizeof rel, "data/real/%s", file);
+    snprintf(rel, sizeof rel, "real/%s", file);
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path(rel), &m) != PROJCURVE_OK) {
-        printf("%s: not readable, skipped\n", file);
-        return NULL;
+    if (projcurve_model_read_file(NULL, pc_test_data_path(rel), &m) != PROJCURVE_OK) {
+        pc_test_missing_data(rel);
     }
     return m;
 }
