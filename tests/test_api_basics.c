@@ -133,7 +133,7 @@ static void test_option_info(void)
     }
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    const int unknown[] = {0, -1, 14, 1000};
+    const int unknown[] = {0, -1, 16, 1000};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         double untouched = 42.0;
         CHECK_STATUS(projcurve_option_info(ctx, (projcurve_option)unknown[i], NULL, NULL, NULL,
@@ -281,7 +281,7 @@ static void test_options_bad_handles(void)
     CHECK_STATUS(projcurve_options_get_int(ctx, opts, k_i, NULL), PROJCURVE_ERR_NULL_ARGUMENT);
     CHECK(v == 3.0 && iv == 3);
 
-    const int unknown[] = {0, -5, 14, 77};
+    const int unknown[] = {0, -5, 16, 77};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         const projcurve_option k = (projcurve_option)unknown[i];
         CHECK_STATUS(projcurve_options_set_double(ctx, opts, k, 1.0), PROJCURVE_ERR_UNKNOWN_OPTION);
