@@ -288,6 +288,37 @@ static void curve_near_plane(const double d[3])
     projcurve_surface_destroy(s);
 }
 
+/* A closed surface: a cubic that dives through a sphere of radius 30 and
+ * out again, along a tilted -z. Rays meet the near and the far side; where
+ * the curve passes through the sphere the branch on the side it crosses
+ * ends (or starts) there, the other goes on. No vertex may lie behind,
+ * there must be crossings, and brute force must find nothing uncovered. */
+static void curve_through_sphere(void)
+{
+    projcurve_surface *s = shape_sphere(30.0);
+    const double pts[15] = {-50, 5, 40, -20, -5, 10, 0, 8, -45, 25, -3, 5, 55, 6, 45};
+    projcurve_curve *c = shape_bspline_curve(3, 5, pts);
+    const double d[3] = {0.2, 0.1, -1.0};
+    projcurve_result *r = project(s, c, d, 0);
+    check_vertices("curve through a sphere", s, c, d, r, 104.0);
+    size_t crossings = 0;
+    for (size_t i = 0; i < projcurve_result_branch_count(r); ++i) {
+        double t[2];
+        projcurve_branch_start st;
+        projcurve_branch_end en;
+        branch(r, i, t, &st, &en);
+        crossings += (st == PROJCURVE_START_CURVE_CROSSING) + (en == PROJCURVE_END_CURVE_CROSSING);
+    }
+    CHECK(crossings >= 2); /* in and out, at least */
+    trace_oracle_report rep;
+    trace_oracle_check(s, c, d, r, 3000, &rep);
+    trace_oracle_print("curve through a sphere", &rep);
+    CHECK(rep.uncovered_far == 0);
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+}
+
 static projcurve_model *read_real(const char *file)
 {
     char rel[256];
@@ -380,6 +411,7 @@ int main(void)
     curve_on_plane(31, tilted);
     curve_near_plane(normal);
     curve_near_plane(tilted);
+    curve_through_sphere();
     egg_lifted();
     pipe_behind();
     return pc_test_finish("test_trace_crossing");

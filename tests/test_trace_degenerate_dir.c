@@ -86,6 +86,38 @@ static void line_along_dir(void)
     projcurve_surface_destroy(s);
 }
 
+/* Cubics over the plane z = 0 whose tangent is parallel to Dir = -z at one
+ * point: x = 40 (2s - 1)^3 (the projection stops for an instant) and x =
+ * 40 (2s - 1)^2 (it turns back: a cusp). One branch over the whole curve,
+ * bounded, covering what brute force finds. */
+static void tangent_along_dir(void)
+{
+    const double o[3] = {-100, -100, 0}, a[3] = {200, 0, 0}, b[3] = {0, 200, 0};
+    projcurve_surface *s = shape_plane(o, a, b);
+    const double d[3] = {0, 0, -1};
+    /* Bezier coefficients of (2s - 1)^3 and (2s - 1)^2 */
+    const double xs[2][4] = {{-1, 1, -1, 1}, {1, -1.0 / 3.0, -1.0 / 3.0, 1}};
+    for (int k = 0; k < 2; ++k) {
+        double pts[12];
+        for (int i = 0; i < 4; ++i) {
+            pts[3 * i] = 40.0 * xs[k][i];
+            pts[3 * i + 1] = 10.0 + 5.0 * i;
+            pts[3 * i + 2] = 30.0 + 40.0 * i / 3.0;
+        }
+        projcurve_curve *c = shape_bspline_curve(3, 4, pts);
+        projcurve_result *r = project(k == 0 ? "tangent along Dir at one point"
+                                             : "tangent along Dir at a cusp",
+                                      s, c, d, 1, 1000, 2000);
+        CHECK(projcurve_result_branch_count(r) == 1);
+        trace_oracle_report rep;
+        trace_oracle_check(s, c, d, r, 3000, &rep);
+        CHECK(rep.uncovered_far == 0);
+        projcurve_result_destroy(r);
+        projcurve_curve_destroy(c);
+    }
+    projcurve_surface_destroy(s);
+}
+
 /* The plane x = 50 seen edge-on along -z: every ray from a curve in the
  * plane x = 50 above it lies in S; a curve across x = 50 meets it only at
  * one t. Dir is tangent to S everywhere: no branch, at once. */
@@ -150,6 +182,7 @@ int main(void)
 {
     alarm(HANG_GUARD_SECONDS);
     line_along_dir();
+    tangent_along_dir();
     plane_edge_on();
     const real_pair linkrods[2] = {{7, 1, 0}, {44, 13, 0}};
     real_pairs("linkrods.step", linkrods, 2);
