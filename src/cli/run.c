@@ -2,6 +2,7 @@
 #include <stdlib.h>
 
 #include "cli.h"
+#include "residual.h"
 
 int cli_run(projcurve_context *ctx, cli_job *job)
 {
@@ -60,75 +61,8 @@ static void cross3(const double a[3], const double b[3], double out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* A derivative below this fraction of the other marks a collapsed edge
- * (a pole, an apex, a horn's tip), as in the library (ortho/collapsed.h). */
-#define CLI_COLLAPSED_RATIO 1e-6
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-/* Length of the part of d tangent to the plane with normal n. */
-static double tangential(const double d[3], const double n[3])
-{
-    const double nn = dot3(n, n);
-    const double dn = dot3(d, n) / nn;
-    const double t[3] = {d[0] - dn * n[0], d[1] - dn * n[1], d[2] - dn * n[2]};
-    return norm3(t);
-}
-
-/* The orthogonal residual: the tangential part of d = S - P. At a point of
- * a collapsed edge Su x Sv is rounding (|Sv| ~ 1e-15 at the horn's tip)
- * and the normal is its limit: with Sv ~ e Suv at a distance e from the
- * edge u = const, Su x Sv ~ e Su x Suv (Suv x Sv for Su ~ 0). Where that
- * limit vanishes too (a cone's apex has no tangent plane) only the regular
- * direction's condition is left: the component of d along it. */
-static double orthogonal_residual(const double *s, const double d[3])
-{
-    const double *su = s + 3, *sv = s + 6, *suv = s + 12;
-    const double lu = norm3(su), lv = norm3(sv);
-    double n[3];
-    if (lv < CLI_COLLAPSED_RATIO * lu || lu < CLI_COLLAPSED_RATIO * lv) {
-        const int v_collapsed = lv < lu;
-        const double *regular = v_collapsed ? su : sv;
-        if (v_collapsed)
-            cross3(su, suv, n);
-        else
-            cross3(suv, sv, n);
-        if (norm3(n) > CLI_COLLAPSED_RATIO * norm3(regular) * norm3(suv))
-            return tangential(d, n);
-        return fabs(dot3(d, regular)) / norm3(regular);
-    }
-    cross3(su, sv, n);
-    if (!(norm3(n) > 0.0))
-        return INFINITY;
-    return tangential(d, n);
-}
-
-/* Parameter nudge, as a fraction of the domain's width, that moves an
- * evaluation off a knot line to the patch on one side of it (S moves by
- * ~1e-12 of the model size). */
-#define CLI_SIDE_NUDGE 1e-12
-
-/* The orthogonal residual at (u, v), INFINITY where S cannot be evaluated. */
-static double orthogonal_at(projcurve_context *ctx, const projcurve_surface *surface,
-                            const double p[3], double u, double v)
-{
-    double s[18];
-    if (projcurve_surface_eval(ctx, surface, u, v, 2, s) != PROJCURVE_OK)
-        return INFINITY;
-    const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
-    return orthogonal_residual(s, d);
-}
-
-/* The violation of the projection condition at one traced point. For the
- * orthogonal kind, the smallest of the residuals at (u, v) and just beside
- * it on either side in u and in v: on a knot line where S is only C0 (a
- * crease of a faceted surface, as every knot of a degree-1 surface) the
- * derivatives are those of one patch, and a foot point of the patch on the
- * other side measured with them showed residuals of 3,400
- * (test_pipe_out_true.step surface 0) while it is exact on its own side. */
+/* The violation of the projection condition at one traced point (for the
+ * orthogonal kind, residual.h). */
 static double residual_at(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
                           const double tuv[3])
 {
@@ -136,24 +70,15 @@ static double residual_at(projcurve_context *ctx, const cli_job *job, const cli_
     double s[3], p[3];
     if (projcurve_curve_eval(ctx, job->curves[pair->curve], tuv[0], 0, p) != PROJCURVE_OK)
         return INFINITY;
-    if (!job->orthogonal) {
-        if (projcurve_surface_eval(ctx, surface, tuv[1], tuv[2], 0, s) != PROJCURVE_OK)
-            return INFINITY;
-        /* distance of S from the line P + lambda Dir */
-        const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
-        double c[3];
-        cross3(d, job->dir, c);
-        return norm3(c) / norm3(job->dir);
-    }
-    double dom[4];
-    projcurve_surface_domain(ctx, surface, dom);
-    const double hu = CLI_SIDE_NUDGE * (dom[1] - dom[0]), hv = CLI_SIDE_NUDGE * (dom[3] - dom[2]);
-    const double u = tuv[1], v = tuv[2];
-    double r = orthogonal_at(ctx, surface, p, u, v);
-    r = fmin(r, orthogonal_at(ctx, surface, p, fmax(dom[0], u - hu), v));
-    r = fmin(r, orthogonal_at(ctx, surface, p, fmin(dom[1], u + hu), v));
-    r = fmin(r, orthogonal_at(ctx, surface, p, u, fmax(dom[2], v - hv)));
-    return fmin(r, orthogonal_at(ctx, surface, p, u, fmin(dom[3], v + hv)));
+    if (job->orthogonal)
+        return cli_orthogonal_residual(ctx, surface, p, tuv[1], tuv[2]);
+    if (projcurve_surface_eval(ctx, surface, tuv[1], tuv[2], 0, s) != PROJCURVE_OK)
+        return INFINITY;
+    /* distance of S from the line P + lambda Dir */
+    const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
+    double c[3];
+    cross3(d, job->dir, c);
+    return norm3(c) / norm3(job->dir);
 }
 
 void cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,

@@ -1,0 +1,18 @@
+/*
+ * The orthogonal residual the command reports for a traced point: how far
+ * S(u, v) is from being a foot point of p, in model units. Public API only,
+ * so that a test can link it alone (tests/test_cli_residual.c).
+ */
+#ifndef PROJCURVE_CLI_RESIDUAL_H
+#define PROJCURVE_CLI_RESIDUAL_H
+
+#include "projcurve.h"
+
+/* The tangential part of S - p (with the limit normal at a collapsed
+ * edge), the smallest of those at (u, v) and just beside it on either side
+ * in u and in v (a crease of a C0 surface has the derivatives of one patch
+ * on the knot line); INFINITY where S cannot be evaluated. */
+double cli_orthogonal_residual(projcurve_context *ctx, const projcurve_surface *surface,
+                               const double p[3], double u, double v);
+
+#endif /* PROJCURVE_CLI_RESIDUAL_H */
