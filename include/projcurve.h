@@ -277,10 +277,10 @@ typedef int (*projcurve_progress_fn)(void *user, double fraction_done);
  * thread: once after its first unit of work (see PROJCURVE_OPT_MAX_WORK),
  * then every 256 units (see PROJCURVE_OPT_TIME_LIMIT for how far apart
  * in time), and last with 1 when the work is complete (that call's return
- * value is ignored); a call
- * stopped by a limit or by fn does not report 1. Calls made with the same
- * options on several threads call fn from each of them: fn must then be
- * thread-safe. fn must not modify opts. Statuses: OK, NULL_ARGUMENT. */
+ * value is ignored); a call stopped by a limit or by fn does not report 1.
+ * Calls made with the same options on several threads call fn from each
+ * of them: fn must then be thread-safe. fn must not modify opts.
+ * Statuses: OK, NULL_ARGUMENT. */
 PROJCURVE_API projcurve_status projcurve_options_set_progress(projcurve_context *ctx,
                                                               projcurve_options *opts,
                                                               projcurve_progress_fn fn,
