@@ -30,7 +30,9 @@
  * crashes, or its result fails the verifier: a wrong point, a missed hit or
  * foot, a branch with no pieces, a FAILED branch end the result does not
  * report. Times are CPU times of the child (the machine may be shared);
- * the hang guard is CPU time too, with a wall-clock backstop.
+ * the hang guard is CPU time too, with a wall-clock backstop. Under ASan
+ * no address-space limit is set and the memory limit is four times higher
+ * (shadow memory and the quarantine of freed blocks count as resident).
  *
  * Environment: PC_REALDATA_STRIDE=k runs every k-th case only (a
  * stratified subset: cases are enumerated file by file, kind by kind);
@@ -433,6 +435,13 @@ static void keep_slowest(sweep *sw, const outcome_row *row)
     }
 }
 
+/* The memory limit of a call. Under ASan, whose shadow memory and 256 MiB
+ * quarantine of freed blocks count in the resident set, four times it. */
+static long memory_limit_kib(void)
+{
+    return MEMORY_LIMIT_MIB * 1024L * (pc_bounded_limits_memory() ? 1 : 4);
+}
+
 /* Classifies one ended child. */
 static void collect(sweep *sw, const job *j, const reply *rp, const pc_bounded_outcome *o)
 {
@@ -451,7 +460,7 @@ static void collect(sweep *sw, const job *j, const reply *rp, const pc_bounded_o
         row.cpu = rp->call.cpu;
         if (rp->call.cpu > TIME_LIMIT * sw->slow)
             row.classes |= 1u << F_TIME;
-        if (growth > MEMORY_LIMIT_MIB * 1024L || rp->call.status == PROJCURVE_ERR_NO_MEMORY)
+        if (growth > memory_limit_kib() || rp->call.status == PROJCURVE_ERR_NO_MEMORY)
             row.classes |= 1u << F_MEMORY;
         else if (rp->call.status != PROJCURVE_OK)
             row.classes |= 1u << F_STATUS;
@@ -640,8 +649,8 @@ int main(void)
     sw.list_only = env_double("PC_REALDATA_LIST", 0.0) != 0.0;
     if (sw.model_path && !sw.model_path[0])
         sw.model_path = NULL;
-    printf("real-data sweep: stride %ld, %ld jobs, limits %.1f s CPU (hang %.1f s), %d MiB%s\n",
-           sw.stride, sw.jobs, TIME_LIMIT * sw.slow, HANG_CPU * sw.slow, MEMORY_LIMIT_MIB,
+    printf("real-data sweep: stride %ld, %ld jobs, limits %.1f s CPU (hang %.1f s), %ld MiB%s\n",
+           sw.stride, sw.jobs, TIME_LIMIT * sw.slow, HANG_CPU * sw.slow, memory_limit_kib() / 1024,
            pc_bounded_limits_memory() ? "" : " (measured only: no address-space limit here)");
     if (projcurve_option_info(NULL, (projcurve_option)13, NULL, NULL, NULL, NULL) ==
         PROJCURVE_OK)
