@@ -231,6 +231,75 @@ static int mesh_cells(size_t spans)
     return c < CELLS_MIN ? CELLS_MIN : (c > CELLS_MAX ? CELLS_MAX : (int)c);
 }
 
+/* The average unit normal over a 5 x 5 grid of the domain, or the centre's
+ * where the normals cancel (closed surfaces), or +z at a collapsed centre. */
+static void average_normal(const projcurve_surface *s, const double dom[4], double out[3])
+{
+    const double du = dom[1] - dom[0], dv = dom[3] - dom[2];
+    double sum[3] = {0, 0, 0}, n[3];
+    int count = 0;
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j)
+            if (unit_normal(s, dom[0] + du * (0.1 + 0.2 * i), dom[2] + dv * (0.1 + 0.2 * j), n)) {
+                for (int c = 0; c < 3; ++c)
+                    sum[c] += n[c];
+                ++count;
+            }
+    if (norm3(sum) > 0.2 * count) {
+        for (int c = 0; c < 3; ++c)
+            out[c] = sum[c] / norm3(sum);
+    } else if (!unit_normal(s, dom[0] + 0.5 * du, dom[2] + 0.5 * dv, out)) {
+        out[0] = out[1] = 0.0, out[2] = 1.0;
+    }
+}
+
+/* A cubic B-spline whose control points are the image of the domain's
+ * diagonal (2 % to 98 %) moved by h along n. */
+static projcurve_curve *lifted_diagonal(const projcurve_surface *s, const double dom[4],
+                                        const double n[3], double h)
+{
+    double poles[3 * DIAGONAL_POLES], knots[DIAGONAL_POLES + 4];
+    for (int k = 0; k < DIAGONAL_POLES; ++k) {
+        const double a = 0.02 + 0.96 * k / (DIAGONAL_POLES - 1);
+        double p[3] = {0, 0, 0};
+        projcurve_surface_eval(NULL, s, dom[0] + a * (dom[1] - dom[0]),
+                               dom[2] + a * (dom[3] - dom[2]), 0, p);
+        for (int c = 0; c < 3; ++c)
+            poles[3 * k + c] = p[c] + h * n[c];
+    }
+    for (int k = 0; k < DIAGONAL_POLES + 4; ++k) {
+        const int inner = k - 3;
+        knots[k] = inner <= 0 ? 0.0
+                   : inner >= DIAGONAL_POLES - 3 ? 1.0
+                                                  : (double)inner / (DIAGONAL_POLES - 3);
+    }
+    projcurve_curve *c = NULL;
+    projcurve_curve_create_nurbs(NULL, 3, DIAGONAL_POLES, poles, NULL, knots, &c);
+    return c;
+}
+
+/* A tangent direction at the domain's centre (along Sv, else Su, made
+ * normal to n), tipped GRAZE_DEG towards the surface. */
+static void grazing_direction(const projcurve_surface *s, const double dom[4], const double n[3],
+                              double out[3])
+{
+    double f[9] = {0};
+    projcurve_surface_eval(NULL, s, 0.5 * (dom[0] + dom[1]), 0.5 * (dom[2] + dom[3]), 1, f);
+    const double *axis = norm3(f + 6) > 0.0 ? f + 6 : f + 3;
+    const double along = axis[0] * n[0] + axis[1] * n[1] + axis[2] * n[2];
+    double t[3];
+    for (int c = 0; c < 3; ++c)
+        t[c] = axis[c] - along * n[c];
+    const double tl = norm3(t);
+    if (tl > 0.0)
+        t[0] /= tl, t[1] /= tl, t[2] /= tl;
+    else
+        t[0] = 1.0, t[1] = t[2] = 0.0;
+    const double g = GRAZE_DEG * PI / 180.0;
+    for (int c = 0; c < 3; ++c)
+        out[c] = cos(g) * t[c] - sin(g) * n[c];
+}
+
 /* The frame, the synthesised curves and the oracle mesh of surface s. */
 static void prepare_surface(const projcurve_surface *s, surface_data *sd)
 {
@@ -244,60 +313,16 @@ static void prepare_surface(const projcurve_surface *s, surface_data *sd)
     sd->size = norm3(ext);
     sd->have_mesh = pc_oracle_mesh_build(&sd->mesh, oracle_eval, (void *)s, dom,
                                          mesh_cells(spans_u), mesh_cells(spans_v));
-    const double du = dom[1] - dom[0], dv = dom[3] - dom[2];
-    double sum[3] = {0, 0, 0}, n[3];
-    int count = 0;
-    for (int i = 0; i < 5; ++i)
-        for (int j = 0; j < 5; ++j)
-            if (unit_normal(s, dom[0] + du * (0.1 + 0.2 * i), dom[2] + dv * (0.1 + 0.2 * j), n)) {
-                for (int c = 0; c < 3; ++c)
-                    sum[c] += n[c];
-                ++count;
-            }
-    const double cu = dom[0] + 0.5 * du, cv = dom[2] + 0.5 * dv;
-    if (norm3(sum) > 0.2 * count) {
-        for (int c = 0; c < 3; ++c)
-            sd->normal[c] = sum[c] / norm3(sum);
-    } else if (!unit_normal(s, cu, cv, sd->normal)) {
-        sd->normal[2] = 1.0; /* a collapsed centre: any direction will do */
-    }
-    /* The lifted diagonal: its control points over the domain's diagonal. */
-    const double h = LIFT_REL * sd->size;
-    double poles[3 * DIAGONAL_POLES], knots[DIAGONAL_POLES + 4];
-    for (int k = 0; k < DIAGONAL_POLES; ++k) {
-        const double a = 0.02 + 0.96 * k / (DIAGONAL_POLES - 1);
-        double p[3] = {0, 0, 0};
-        projcurve_surface_eval(NULL, s, dom[0] + a * du, dom[2] + a * dv, 0, p);
-        for (int c = 0; c < 3; ++c)
-            poles[3 * k + c] = p[c] + h * sd->normal[c];
-    }
-    for (int k = 0; k < DIAGONAL_POLES + 4; ++k) {
-        const int inner = k - 3;
-        knots[k] = inner <= 0 ? 0.0
-                   : inner >= DIAGONAL_POLES - 3 ? 1.0
-                                                  : (double)inner / (DIAGONAL_POLES - 3);
-    }
-    projcurve_curve_create_nurbs(NULL, 3, DIAGONAL_POLES, poles, NULL, knots, &sd->lifted);
+    average_normal(s, dom, sd->normal);
+    sd->lifted = lifted_diagonal(s, dom, sd->normal, LIFT_REL * sd->size);
     /* The curve on S: the anti-diagonal (5% to 95% in u, 90% to 15% in v). */
     on_surface_curve *oc = &sd->on_surface_user;
+    const double du = dom[1] - dom[0], dv = dom[3] - dom[2];
     oc->s = s;
     oc->a[0] = dom[0] + 0.05 * du, oc->a[1] = dom[2] + 0.9 * dv;
     oc->b[0] = 0.9 * du, oc->b[1] = -0.75 * dv;
     projcurve_curve_create_callback(NULL, on_surface_fn, oc, 0.0, 1.0, &sd->on_surface);
-    /* Grazing: a tangent direction at the centre tipped GRAZE_DEG towards S. */
-    double f[9] = {0};
-    projcurve_surface_eval(NULL, s, cu, cv, 1, f);
-    double t[3];
-    const double *axis = norm3(f + 6) > 0.0 ? f + 6 : f + 3;
-    const double along = axis[0] * sd->normal[0] + axis[1] * sd->normal[1] + axis[2] * sd->normal[2];
-    for (int c = 0; c < 3; ++c)
-        t[c] = axis[c] - along * sd->normal[c];
-    const double tl = norm3(t);
-    if (!(tl > 0.0))
-        t[0] = 1.0, t[1] = t[2] = 0.0;
-    const double g = GRAZE_DEG * PI / 180.0;
-    for (int c = 0; c < 3; ++c)
-        sd->graze[c] = cos(g) * (tl > 0.0 ? t[c] / tl : t[c]) - sin(g) * sd->normal[c];
+    grazing_direction(s, dom, sd->normal, sd->graze);
 }
 
 static void release_surface(surface_data *sd)
