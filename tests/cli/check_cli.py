@@ -67,8 +67,8 @@ def check_svg(path, n_branches, n_surfaces, n_curves, what):
           f"{what}: {len(others)} iso-parameter lines and curves")
 
 
-def part_usage(exe, data_dir, work):
-    case = os.path.join(data_dir, "cases", "song_yong_example1.igs")
+def part_usage(exe, shared, work):
+    case = os.path.join(shared, "cases", "song_yong_example1.igs")
     run([exe], 2, "no command")
     run([exe, "frobnicate"], 2, "unknown command")
     for cmd in ([], ["demo"], ["info"], ["project"]):
@@ -103,27 +103,27 @@ def part_usage(exe, data_dir, work):
     check("curve 0 onto surface 0" in proc.stderr and "time limit" in proc.stderr,
           f"timeout hit: no message naming the pair and the limit: {proc.stderr.strip()}")
     run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "1000"], 0, "a generous timeout")
-    teapot = os.path.join(data_dir, "real", "teapot_newell_spd.txt")
+    teapot = os.path.join(shared, "real", "teapot_newell_spd.txt")
     run([exe, "project", teapot, "--dir", "0,0,-1"], 2, "surfaces without curves")
 
 
-def info_files(data_dir):
+def info_files(shared):
     """Every file of real/ (SOURCES.md and the LICENSES folder aside)
     and every case."""
-    real = os.path.join(data_dir, "real")
-    cases = os.path.join(data_dir, "cases")
+    real = os.path.join(shared, "real")
+    cases = os.path.join(shared, "cases")
     return ([os.path.join(real, n) for n in sorted(os.listdir(real))
              if os.path.isfile(os.path.join(real, n)) and not n.endswith(".md")] +
             [os.path.join(cases, n) for n in sorted(os.listdir(cases)) if n.endswith(".igs")])
 
 
-def part_info(exe, data_dir, work):
+def part_info(exe, shared, work):
     """The counts SOURCES.md gives, and for every file the degrees and knot
     spans of each surface, in order, against model_summary's reading of the
     file; for the cases also the degree of the input curve (126). Curves of
     the real files are not re-derived: they come from lines, arcs,
     composites and trims that the reader converts to B-splines."""
-    files = info_files(data_dir)
+    files = info_files(shared)
     check(len([f for f in files if os.sep + "real" + os.sep in f]) == 13,
           f"13 files in real/, found {[os.path.basename(f) for f in files]}")
     for path in files:
@@ -145,13 +145,13 @@ def part_info(exe, data_dir, work):
     expect = {"sunglasses_lens.igs": 9, "hammer.iges": 45, "linkrods.step": 18,
               "car_shell1.xml": 8, "teapot_newell_spd.txt": 32}
     for name, n in expect.items():
-        out = run([exe, "info", os.path.join(data_dir, "real", name)], 0, name).stdout
+        out = run([exe, "info", os.path.join(shared, "real", name)], 0, name).stdout
         check(f": {n} surface(s)" in out, f"info {name} reports {n} surfaces:\n{out[:300]}")
-    out = run([exe, "info", os.path.join(data_dir, "real", "hammer.iges")], 0, "").stdout
+    out = run([exe, "info", os.path.join(shared, "real", "hammer.iges")], 0, "").stdout
     check("skipped" in out and "IGES entity 144" in out, "info lists skipped trimmed surfaces")
 
 
-def part_demo(exe, data_dir, work):
+def part_demo(exe, shared, work):
     os.makedirs(work, exist_ok=True)
     out = run([exe, "demo", "-o", work], 0, "demo").stdout
     check("Example 1" in out and "branch" in out, f"demo summary:\n{out}")
@@ -171,9 +171,9 @@ def part_demo(exe, data_dir, work):
         check("1 surface(s), 2 curve(s)" in info, f"{name}.igs read back:\n{info}")
 
 
-def manifest(data_dir):
+def manifest(shared):
     rows = []
-    with open(os.path.join(data_dir, "cases", "MANIFEST.tsv")) as f:
+    with open(os.path.join(shared, "cases", "MANIFEST.tsv")) as f:
         header = None
         for line in f:
             fields = line.rstrip("\n").split("\t")
@@ -418,11 +418,11 @@ def check_branch_geometry(name, case, b, written, curve):
             check(gap <= tol, f"{name}: '{kind}' at t = {t} is {gap:.3g} from the curve")
 
 
-def part_cases(exe, data_dir, work):
+def part_cases(exe, shared, work):
     os.makedirs(work, exist_ok=True)
-    for case in manifest(data_dir):
+    for case in manifest(shared):
         name = case["name"]
-        igs = os.path.join(data_dir, "cases", name + ".igs")
+        igs = os.path.join(shared, "cases", name + ".igs")
         out_json = os.path.join(work, name + ".json")
         out_svg = os.path.join(work, name + ".svg")
         args = [exe, "project", igs, "--tol", case["tol_dist"], "--angle", case["tol_angle_deg"],
@@ -453,17 +453,17 @@ def part_cases(exe, data_dir, work):
             check(b["deviation"] is not None and b["deviation"] <= tol,
                   f"{name}: deviation {b['deviation']} > eps_D {tol}")
         check_svg(out_svg, got, 1, 1, name)
-    check_several_inputs(exe, data_dir, work)
+    check_several_inputs(exe, shared, work)
 
 
-def check_several_inputs(exe, data_dir, work):
+def check_several_inputs(exe, shared, work):
     """Two files: every curve is projected onto every surface, indices in
     file order. Both cases' surfaces span the same square in (x, y) and
     both curves lie inside it, so each of the 4 pairs gives one whole
     branch."""
     names = ("bumpy_bicubic_8x8_down", "deg5_quintic_9x8_down")
     out_json = os.path.join(work, "two_inputs.json")
-    args = [exe, "project"] + [os.path.join(data_dir, "cases", n + ".igs") for n in names]
+    args = [exe, "project"] + [os.path.join(shared, "cases", n + ".igs") for n in names]
     if run(args + ["--dir", "0,0,-1", "--json", out_json], 0, "two inputs").returncode != 0:
         return
     with open(out_json) as f:
@@ -475,7 +475,7 @@ def check_several_inputs(exe, data_dir, work):
           "two inputs: every branch covers its curve")
 
 
-def part_svg(exe, data_dir, work):
+def part_svg(exe, shared, work):
     """Every SVG the command writes (the demo's two and one per case)
     passes xmllint --noout. Without xmllint this part is skipped (77)."""
     if shutil.which("xmllint") is None:
@@ -484,9 +484,9 @@ def part_svg(exe, data_dir, work):
     os.makedirs(work, exist_ok=True)
     run([exe, "demo", "-o", work], 0, "demo")
     svgs = [os.path.join(work, n + ".svg") for n in ("example1", "freeform")]
-    for case in manifest(data_dir):
+    for case in manifest(shared):
         out_svg = os.path.join(work, case["name"] + ".svg")
-        args = [exe, "project", os.path.join(data_dir, "cases", case["name"] + ".igs"),
+        args = [exe, "project", os.path.join(shared, "cases", case["name"] + ".igs"),
                 "--tol", case["tol_dist"], "--svg", out_svg]
         if case["mode"] == "orthogonal":
             args.append("--orthogonal")
@@ -505,14 +505,14 @@ def main():
     if len(sys.argv) != 5:
         print(__doc__)
         return 2
-    part, exe, data_dir, work = sys.argv[1:]
-    if part in ("info", "cases", "usage", "svg") and not os.path.isdir(os.path.join(data_dir, "cases")):
-        # the data is part of the repository: its absence is a failure
-        print(f"FAIL: test data {data_dir}/cases not found")
+    part, exe, shared, work = sys.argv[1:]
+    # shared: the test data, tests/data (its absence is a failure)
+    if part in ("info", "cases", "usage", "svg") and not os.path.isdir(os.path.join(shared, "cases")):
+        print(f"FAIL: test data {shared}/cases not found")
         return 1
     parts = {"usage": part_usage, "info": part_info, "demo": part_demo, "cases": part_cases,
              "svg": part_svg}
-    if parts[part](exe, data_dir, work) == 77:
+    if parts[part](exe, shared, work) == 77:
         return 77
     for f in failures:
         print("FAIL:", f)
