@@ -60,6 +60,26 @@ static double orthogonal_residual(const double *s, const double d[3])
     return tangential(d, n);
 }
 
+/* The length in space of Newton's step -K^-1 F on the foot-point equations
+ * F = [d.Su, d.Sv] = 0, K_ij = Si.Sj + d.Sij: the distance from S to the
+ * foot point, to first order; INFINITY where K is singular (a centre of
+ * curvature, a collapsed edge), where the tangential measure holds. */
+static double newton_step_length(const double *s, const double d[3])
+{
+    const double *su = s + 3, *sv = s + 6, *suu = s + 9, *suv = s + 12, *svv = s + 15;
+    const double f0 = dot3(d, su), f1 = dot3(d, sv);
+    const double k00 = dot3(su, su) + dot3(d, suu), k01 = dot3(su, sv) + dot3(d, suv);
+    const double k11 = dot3(sv, sv) + dot3(d, svv);
+    const double det = k00 * k11 - k01 * k01;
+    const double scale = fabs(k00) + 2.0 * fabs(k01) + fabs(k11);
+    if (!(fabs(det) > 1e-15 * scale * scale))
+        return INFINITY;
+    const double du = -(k11 * f0 - k01 * f1) / det, dv = -(k00 * f1 - k01 * f0) / det;
+    const double step[3] = {su[0] * du + sv[0] * dv, su[1] * du + sv[1] * dv,
+                            su[2] * du + sv[2] * dv};
+    return norm3(step);
+}
+
 /* Parameter nudge, as a fraction of the domain's width, that moves an
  * evaluation off a knot line to the patch on one side of it (S moves by
  * ~1e-12 of the model size). */
@@ -73,7 +93,7 @@ static double orthogonal_at(projcurve_context *ctx, const projcurve_surface *sur
     if (projcurve_surface_eval(ctx, surface, u, v, 2, s) != PROJCURVE_OK)
         return INFINITY;
     const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
-    return orthogonal_residual(s, d);
+    return fmin(orthogonal_residual(s, d), newton_step_length(s, d));
 }
 
 double cli_orthogonal_residual(projcurve_context *ctx, const projcurve_surface *surface,

@@ -8,10 +8,15 @@
 
 #include "projcurve.h"
 
-/* The tangential part of S - p (with the limit normal at a collapsed
- * edge), the smallest of those at (u, v) and just beside it on either side
- * in u and in v (a crease of a C0 surface has the derivatives of one patch
- * on the knot line); INFINITY where S cannot be evaluated. */
+/* The smaller of two distances, at (u, v) and just beside it on either
+ * side in u and in v (a crease of a C0 surface has the derivatives of one
+ * patch on the knot line); INFINITY where S cannot be evaluated:
+ * - backward: the tangential part of S - p, the distance from p to the
+ *   normal line at S (with the limit normal at a collapsed edge);
+ * - forward: the length in space of the Newton step -K^-1 F, the distance
+ *   from S(u, v) to the exact foot point to first order. It stays right
+ *   where the parametrisation is singular (Su nearly parallel to Sv), where
+ *   the normal Su x Sv, and the backward measure with it, is rounding. */
 double cli_orthogonal_residual(projcurve_context *ctx, const projcurve_surface *surface,
                                const double p[3], double u, double v);
 

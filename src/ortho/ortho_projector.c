@@ -79,6 +79,37 @@ static double residual_noise(const pc_vec3 *s, pc_vec3 p, double size)
     return vec3_dist(s[PC_D3_S], p) * ORTHO_DIRECTION_NOISE * size / shortest;
 }
 
+/* Length in space of the Newton step delta = -K^-1 F (delta written to
+ * step_uv): the distance from S(u, v) to the foot point it converges to, to
+ * first order. +inf (and a NaN step) where K is singular. */
+static double step_distance(const pc_vec3 *s, const double k[4], const double f[2],
+                            double step_uv[2])
+{
+    const double minus_f[2] = {-f[0], -f[1]};
+    if (!mat2_solve(k[0], k[1], k[2], k[3], minus_f, step_uv)) {
+        step_uv[0] = step_uv[1] = NAN;
+        return INFINITY;
+    }
+    return vec3_norm(vec3_axpy(vec3_scale(s[PC_D3_U], step_uv[0]), step_uv[1], s[PC_D3_V]));
+}
+
+/* How far (u, v) is from being a foot point, in model units, where the
+ * parametrisation is not collapsed: the smaller of the tangential distance
+ * (backward: how far P is from the normal line at S) and the Newton step's
+ * length (forward: how far S is from the foot point). Where Su is nearly
+ * parallel to Sv (a fold of the parameter lines inside S: linkrods.step
+ * surfaces 9 and 16, sin(Su, Sv) ~ 1e-5) the normal Su x Sv is rounding
+ * and the tangential part with it (2e-5 at a point 5e-15 from its foot),
+ * while K, which also holds the second derivatives, is not singular and the
+ * step is exact; near a centre of curvature it is the other way round.
+ * delta receives Newton's step. */
+static double foot_residual(const pc_vec3 *s, const double k[4], const double f[2],
+                            double delta[2])
+{
+    const double forward = step_distance(s, k, f, delta);
+    return fmin(tangential_distance(s[PC_D3_U], s[PC_D3_V], f), forward);
+}
+
 /* Where the parametrisation is collapsed (collapsed.h), S - P split into its
  * component along the regular direction r (exact: S_r is not small) and
  * across it, along the tangent m perpendicular to S_r, with the allowance
@@ -172,7 +203,7 @@ static int ortho_correct(const pc_projector *self, double t, double uv[2], int *
         double residual;
         int close_enough;
         if (c == PC_COLLAPSE_NONE) {
-            residual = tangential_distance(sd[PC_D3_U], sd[PC_D3_V], f);
+            residual = foot_residual(sd, k, f, delta);
             close_enough = residual <= tol + residual_noise(sd, p, self->model_size);
         } else {
             pc_surface_eval_d3(s, uv[0], uv[1], &cache->hint_u, &cache->hint_v, sd);
@@ -187,9 +218,8 @@ static int ortho_correct(const pc_projector *self, double t, double uv[2], int *
         else if (residual > ORTHO_DIVERGENCE_FACTOR * first_residual + tol)
             break;
         if (c == PC_COLLAPSE_NONE) {
-            const double minus_f[2] = {-f[0], -f[1]};
-            if (!mat2_solve(k[0], k[1], k[2], k[3], minus_f, delta))
-                break;
+            if (!isfinite(delta[0]) || !isfinite(delta[1]))
+                break;   /* K singular: foot_residual found no step */
         } else {
             const int r = c == PC_COLLAPSE_U ? 1 : 0;   /* the regular direction */
             const double krr = k[3 * r];
@@ -390,7 +420,8 @@ static double ortho_residual(const pc_projector *self, double t, double u, doubl
         return hypot(z.regular, z.across);
     }
     tensor_and_residual(sd, p, k, f);
-    return tangential_distance(sd[PC_D3_U], sd[PC_D3_V], f);
+    double delta[2];
+    return foot_residual(sd, k, f, delta);
 }
 
 int pc_ortho_morse_index(const pc_projector *proj, double t, double u, double v, int *index)
