@@ -122,9 +122,9 @@ static void check_pair(const projcurve_model *m, size_t si, size_t ci)
 int main(void)
 {
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path("data/real/linkrods.step"), &m) !=
+    if (projcurve_model_read_file(NULL, pc_test_data_path("real/linkrods.step"), &m) !=
         PROJCURVE_OK)
-        pc_test_skip("linkrods.step not readable");
+        pc_test_missing_data("real/linkrods.step");
     check_pair(m, 9, 89);
     check_pair(m, 16, 96);
     projcurve_model_destroy(m);
