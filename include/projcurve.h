@@ -498,8 +498,11 @@ typedef enum projcurve_branch_start {
     PROJCURVE_START_CURVE_START = 0, /* seeded at the start of the curve */
     PROJCURVE_START_JUMP = 1,        /* born in mid-curve (jump detection) */
     PROJCURVE_START_BOUNDARY = 2,    /* enters through the boundary of S */
-    PROJCURVE_START_SILHOUETTE = 3   /* born at a fold where Dir is tangent to S
+    PROJCURVE_START_SILHOUETTE = 3,  /* born at a fold where Dir is tangent to S
                                         (orthogonal: at a centre of curvature) */
+    PROJCURVE_START_FAILED = 4       /* resumes after a stretch the library could
+                                        not follow or not verify (the branch
+                                        before it ends PROJCURVE_END_FAILED) */
 } projcurve_branch_start;
 
 /* Why a branch ends. */
@@ -509,7 +512,8 @@ typedef enum projcurve_branch_end {
     PROJCURVE_END_SILHOUETTE = 2,    /* met a fold (det J = 0) */
     PROJCURVE_END_CURVATURE_CENTRE = 3, /* orthogonal: P(t) at a centre of curvature */
     PROJCURVE_END_LIMIT = 4,         /* a size limit stopped it */
-    PROJCURVE_END_FAILED = 5         /* the corrector could not continue */
+    PROJCURVE_END_FAILED = 5         /* the corrector could not continue, or what
+                                        follows could not be verified */
 } projcurve_branch_end;
 
 /* Statistics keys for projcurve_result_stat. */
@@ -589,6 +593,21 @@ PROJCURVE_API projcurve_status projcurve_result_piece_pcurve(projcurve_context *
                                                              const projcurve_result *result,
                                                              size_t branch, size_t piece,
                                                              int *degree, double *uv_ctrl);
+
+/* The number of places where the library could not continue or could not
+ * verify the projection: branches that start with PROJCURVE_START_FAILED or
+ * end with PROJCURVE_END_FAILED (one that does both counts once), plus
+ * traced stretches of which nothing could be verified (they are not
+ * returned). Every branch returned is verified (each vertex satisfies the
+ * projection condition to the corrector's tolerance, each composed piece is
+ * within eps_D of the exact projection), so a count of 0 means the result
+ * is the whole projection as far as the seeds found it; otherwise parts of
+ * it are missing between the FAILED ends. A caller that needs the whole
+ * projection should treat a non-zero count as an error (the projcurve
+ * command exits 1), or retry with other options (a looser eps_D or eps_T,
+ * PROJCURVE_OPT_PCURVE_DEGREE 1). 0 for NULL. Thread-safe (the result is
+ * only read). */
+PROJCURVE_API size_t projcurve_result_failure_count(const projcurve_result *result);
 
 /* The whole branch as one NURBS curve handle (pieces joined, knots at the
  * joins), usable with the curve functions; release with

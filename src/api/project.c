@@ -14,6 +14,7 @@
 #include "trace/line_seeds.h"
 #include "trace/result.h"
 #include "trace/trace.h"
+#include "verify/verify.h"
 
 /* Names of the option keys for messages, indexed by key. */
 static const char *const pc_option_names[] = {
@@ -128,6 +129,12 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
         const projcurve_status cs = pc_refine_and_compose(ctx, &proj, &o, r);
         if (cs != PROJCURVE_OK)
             st = cs;
+    }
+    /* only verified branches are returned, also from a partial result */
+    if (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED) {
+        const projcurve_status vs = pc_verify_result(ctx, &proj, &o, r);
+        if (vs != PROJCURVE_OK)
+            st = vs;
     }
     if (cache.callback_failed && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");

@@ -15,6 +15,7 @@
 #include "refine/refine.h"
 #include "trace/result.h"
 #include "trace/trace.h"
+#include "verify/verify.h"
 
 /* A det K = 0 end (or start) is what the engine calls a fold; for the
  * orthogonal projection that is a centre of curvature (corollary 2.1). */
@@ -63,6 +64,12 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
         r->stats.tol_distance = o.tol_distance;
         if (o.compose)
             status = pc_refine_and_compose(ctx, &proj, &o, r);
+    }
+    /* only verified branches are returned, also from a partial result */
+    if (status == PROJCURVE_OK || status == PROJCURVE_ERR_LIMIT_REACHED) {
+        const projcurve_status vs = pc_verify_result(ctx, &proj, &o, r);
+        if (vs != PROJCURVE_OK)
+            status = vs;
     }
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */

@@ -130,6 +130,7 @@ const char *cli_start_name(projcurve_branch_start s)
     case PROJCURVE_START_JUMP: return "jump";
     case PROJCURVE_START_BOUNDARY: return "boundary";
     case PROJCURVE_START_SILHOUETTE: return "silhouette";
+    case PROJCURVE_START_FAILED: return "failed";
     }
     return "unknown";
 }
