@@ -61,6 +61,11 @@ projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_o
     if (st == PROJCURVE_OK)
         st = pc_options_distance_tolerance(ctx, out, model_size > 0.0 ? model_size : 1.0,
                                            &eps_d);
+    if (st == PROJCURVE_OK && out->compose && out->tol_angle_deg < PC_REFINE_MIN_ANGLE_DEG)
+        st = pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                     "option TOL_ANGLE_DEG: %g is below %g, the smallest joint angle the "
+                     "refinement can resolve (the exact tangents are known to ~1e-6 relative)",
+                     out->tol_angle_deg, PC_REFINE_MIN_ANGLE_DEG);
     if (st == PROJCURVE_OK)
         out->tol_distance = eps_d;
     return st;
