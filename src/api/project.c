@@ -71,6 +71,51 @@ projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_o
     return st;
 }
 
+/* Parameters sampled on a callback curve to tell a point curve. */
+#define PC_POINT_CURVE_SAMPLES 33
+
+int pc_curve_is_point(const projcurve_curve *c, double tol)
+{
+    if (c->kind == PC_CURVE_NURBS) {
+        const double *cw = c->nurbs.cw;
+        const pc_vec3 first = vec3(cw[0] / cw[3], cw[1] / cw[3], cw[2] / cw[3]);
+        for (size_t k = 1; k < c->nurbs.n_ctrl; ++k) {
+            const double *q = cw + 4 * k;
+            if (!(vec3_dist(vec3(q[0] / q[3], q[1] / q[3], q[2] / q[3]), first) <= tol))
+                return 0;
+        }
+        return 1;
+    }
+    const double span = c->t1 - c->t0;
+    pc_vec3 first = vec3(0.0, 0.0, 0.0);
+    for (int k = 0; k < PC_POINT_CURVE_SAMPLES; ++k) {
+        pc_vec3 p[2];
+        const double t = c->t0 + span * (double)k / (double)(PC_POINT_CURVE_SAMPLES - 1);
+        if (pc_curve_eval(c, t, 1, NULL, p) != PROJCURVE_OK)
+            return 0; /* the projection reports the failing callback */
+        if (k == 0)
+            first = p[0];
+        if (!(vec3_dist(p[0], first) <= tol && vec3_norm(p[1]) * fabs(span) <= tol))
+            return 0;
+    }
+    return 1;
+}
+
+projcurve_status pc_refuse_point_curve(projcurve_context *ctx, const projcurve_curve *curve,
+                                       const struct projcurve_options *o, double model_size)
+{
+    const double tol = fmax(o->newton_tol, PC_MIN_TOL_DISTANCE) * model_size;
+    if (!pc_curve_is_point(curve, tol))
+        return PROJCURVE_OK;
+    pc_vec3 p;
+    pc_curve_eval(curve, curve->t0, 0, NULL, &p);
+    return pc_fail(ctx, PROJCURVE_ERR_SINGULAR,
+                   "the curve is the point (%.17g, %.17g, %.17g) to %g (the model's precision): "
+                   "project it as a point (projcurve_surface_intersect_line, "
+                   "projcurve_surface_foot_points)",
+                   p.x, p.y, p.z, tol);
+}
+
 /* Unit direction from dir; statuses NOT_FINITE, ZERO_DIRECTION. Scaling by
  * the largest component first keeps tiny and huge vectors normalisable. */
 static projcurve_status unit_direction(projcurve_context *ctx, const double dir[3],
@@ -103,6 +148,8 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     projcurve_status st = unit_direction(ctx, dir, &unit);
     if (st == PROJCURVE_OK)
         st = pc_projection_options(ctx, opts, surface->size, &o);
+    if (st == PROJCURVE_OK)
+        st = pc_refuse_point_curve(ctx, curve, &o, surface->size);
     if (st != PROJCURVE_OK)
         return st;
 

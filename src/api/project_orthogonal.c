@@ -36,7 +36,9 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     PC_REQUIRE(ctx, curve, "curve");
     PC_REQUIRE(ctx, out, "out");
     struct projcurve_options o;
-    const projcurve_status st = pc_projection_options(ctx, opts, surface->size, &o);
+    projcurve_status st = pc_projection_options(ctx, opts, surface->size, &o);
+    if (st == PROJCURVE_OK)
+        st = pc_refuse_point_curve(ctx, curve, &o, surface->size);
     if (st != PROJCURVE_OK)
         return st;
 
@@ -99,7 +101,9 @@ projcurve_status projcurve_project_orthogonal_implicit(
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "model size must be positive (got %.17g)", model_size);
     struct projcurve_options o;
-    const projcurve_status st = pc_projection_options(ctx, opts, model_size, &o);
+    projcurve_status st = pc_projection_options(ctx, opts, model_size, &o);
+    if (st == PROJCURVE_OK)
+        st = pc_refuse_point_curve(ctx, curve, &o, model_size);
     if (st != PROJCURVE_OK)
         return st;
     const double eps_d = o.tol_distance;
