@@ -33,6 +33,16 @@ int cli_run(projcurve_context *ctx, cli_job *job)
                     p->result = NULL;
                 ++job->failures;
             }
+            /* places where the projection could not be followed or
+             * verified: the result is incomplete there */
+            const size_t failed = projcurve_result_failure_count(p->result);
+            if (failed > 0)
+                fprintf(stderr,
+                        "projcurve: curve %zu onto surface %zu: %zu place(s) where the "
+                        "projection could not be followed or verified (branches ending or "
+                        "starting 'failed')\n",
+                        c, s, failed);
+            job->failures += failed;
         }
     return 1;
 }
