@@ -438,8 +438,14 @@ typedef struct projcurve_result projcurve_result;
  * is dropped — and its t range ends with its last piece; every later branch
  * has no pieces and keeps its traced polyline.
  * A curve that misses the surface gives OK and a result with no branches.
+ * Every branch returned is verified (see projcurve_result_failure_count):
+ * where the projection could not be followed or verified a branch ends
+ * with PROJCURVE_END_FAILED and what follows starts with
+ * PROJCURVE_START_FAILED.
  * Statuses: OK, LIMIT_REACHED, NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION,
- * OUT_OF_RANGE (tolerances), CALLBACK, NO_MEMORY. Thread-safe for distinct
+ * OUT_OF_RANGE (tolerances: eps_D below the model's precision, eps_T below
+ * 1e-3 degrees while composing), SINGULAR (the curve is a point to the
+ * model's precision), CALLBACK, NO_MEMORY. Thread-safe for distinct
  * contexts; the inputs are only read. */
 PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *ctx,
                                                              const projcurve_surface *surface,
