@@ -530,9 +530,15 @@ typedef struct projcurve_result projcurve_result;
  * along Dir its projection is a point: a branch whose image lies within
  * eps_D of one point is not returned. Where Dir is tangent to S along a
  * region (a plane seen edge-on) no branch is traced.
+ * Every branch returned is verified (see projcurve_result_failure_count):
+ * where the projection could not be followed or verified a branch ends
+ * with PROJCURVE_END_FAILED and what follows starts with
+ * PROJCURVE_START_FAILED.
  * Statuses: OK, LIMIT_REACHED, CANCELLED, NULL_ARGUMENT, NOT_FINITE,
- * ZERO_DIRECTION, OUT_OF_RANGE (tolerances), CALLBACK, NO_MEMORY.
- * Thread-safe for distinct contexts; the inputs are only read. */
+ * ZERO_DIRECTION, OUT_OF_RANGE (tolerances: eps_D below the model's
+ * precision, eps_T below 1e-3 degrees while composing), SINGULAR (the curve
+ * is a point to the model's precision), CALLBACK, NO_MEMORY. Thread-safe for
+ * distinct contexts; the inputs are only read. */
 PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *ctx,
                                                              const projcurve_surface *surface,
                                                              const projcurve_curve *curve,
@@ -594,9 +600,12 @@ typedef enum projcurve_branch_start {
     PROJCURVE_START_BOUNDARY = 2,    /* enters through the boundary of S */
     PROJCURVE_START_SILHOUETTE = 3,  /* born at a fold where Dir is tangent to S
                                         (orthogonal: at a centre of curvature) */
-    PROJCURVE_START_CURVE_CROSSING = 4 /* directional: the curve meets S here;
-                                        before it the surface lies behind the
-                                        curve ((q - p).Dir < 0) */
+    PROJCURVE_START_CURVE_CROSSING = 4, /* directional: the curve meets S here;
+                                         before it the surface lies behind the
+                                         curve ((q - p).Dir < 0) */
+    PROJCURVE_START_FAILED = 5       /* resumes after a stretch the library could
+                                        not follow or not verify (the branch
+                                        before it ends PROJCURVE_END_FAILED) */
 } projcurve_branch_start;
 
 /* Why a branch ends. */
@@ -606,7 +615,8 @@ typedef enum projcurve_branch_end {
     PROJCURVE_END_SILHOUETTE = 2,    /* met a fold (det J = 0) */
     PROJCURVE_END_CURVATURE_CENTRE = 3, /* orthogonal: P(t) at a centre of curvature */
     PROJCURVE_END_LIMIT = 4,         /* a size limit stopped it */
-    PROJCURVE_END_FAILED = 5,        /* the corrector could not continue */
+    PROJCURVE_END_FAILED = 5,        /* the corrector could not continue, or what
+                                        follows could not be verified */
     PROJCURVE_END_CURVE_CROSSING = 6 /* directional: the curve meets S here;
                                         beyond it the surface lies behind the
                                         curve ((q - p).Dir < 0) */
@@ -689,6 +699,21 @@ PROJCURVE_API projcurve_status projcurve_result_piece_pcurve(projcurve_context *
                                                              const projcurve_result *result,
                                                              size_t branch, size_t piece,
                                                              int *degree, double *uv_ctrl);
+
+/* The number of places where the library could not continue or could not
+ * verify the projection: branches that start with PROJCURVE_START_FAILED or
+ * end with PROJCURVE_END_FAILED (one that does both counts once), plus
+ * traced stretches of which nothing could be verified (they are not
+ * returned). Every branch returned is verified (each vertex satisfies the
+ * projection condition to the corrector's tolerance, each composed piece is
+ * within eps_D of the exact projection), so a count of 0 means the result
+ * is the whole projection as far as the seeds found it; otherwise parts of
+ * it are missing between the FAILED ends. A caller that needs the whole
+ * projection should treat a non-zero count as an error (the projcurve
+ * command exits 1), or retry with other options (a looser eps_D or eps_T,
+ * PROJCURVE_OPT_PCURVE_DEGREE 1). 0 for NULL. Thread-safe (the result is
+ * only read). */
+PROJCURVE_API size_t projcurve_result_failure_count(const projcurve_result *result);
 
 /* The whole branch as one NURBS curve handle (pieces joined, knots at the
  * joins), usable with the curve functions; release with

@@ -14,6 +14,7 @@
 #include "trace/line_seeds.h"
 #include "trace/result.h"
 #include "trace/trace.h"
+#include "verify/verify.h"
 
 /* Names of the option keys for messages, indexed by key (NULL: no such
  * key; the loop below skips it). */
@@ -75,6 +76,11 @@ projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_o
     if (st == PROJCURVE_OK)
         st = pc_options_distance_tolerance(ctx, out, model_size > 0.0 ? model_size : 1.0,
                                            &eps_d);
+    if (st == PROJCURVE_OK && out->compose && out->tol_angle_deg < PC_REFINE_MIN_ANGLE_DEG)
+        st = pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                     "option TOL_ANGLE_DEG: %g is below %g, the smallest joint angle the "
+                     "refinement can resolve (the exact tangents are known to ~1e-6 relative)",
+                     out->tol_angle_deg, PC_REFINE_MIN_ANGLE_DEG);
     if (st == PROJCURVE_OK)
         out->tol_distance = eps_d;
     return st;
@@ -85,6 +91,51 @@ void pc_projection_budget(pc_budget *b, struct projcurve_options *o)
     pc_budget_init(b, o->time_limit, (unsigned long long)o->max_work, o->progress,
                    o->progress_user);
     o->budget = b;
+}
+
+/* Parameters sampled on a callback curve to tell a point curve. */
+#define PC_POINT_CURVE_SAMPLES 33
+
+int pc_curve_is_point(const projcurve_curve *c, double tol)
+{
+    if (c->kind == PC_CURVE_NURBS) {
+        const double *cw = c->nurbs.cw;
+        const pc_vec3 first = vec3(cw[0] / cw[3], cw[1] / cw[3], cw[2] / cw[3]);
+        for (size_t k = 1; k < c->nurbs.n_ctrl; ++k) {
+            const double *q = cw + 4 * k;
+            if (!(vec3_dist(vec3(q[0] / q[3], q[1] / q[3], q[2] / q[3]), first) <= tol))
+                return 0;
+        }
+        return 1;
+    }
+    const double span = c->t1 - c->t0;
+    pc_vec3 first = vec3(0.0, 0.0, 0.0);
+    for (int k = 0; k < PC_POINT_CURVE_SAMPLES; ++k) {
+        pc_vec3 p[2];
+        const double t = c->t0 + span * (double)k / (double)(PC_POINT_CURVE_SAMPLES - 1);
+        if (pc_curve_eval(c, t, 1, NULL, p) != PROJCURVE_OK)
+            return 0; /* the projection reports the failing callback */
+        if (k == 0)
+            first = p[0];
+        if (!(vec3_dist(p[0], first) <= tol && vec3_norm(p[1]) * fabs(span) <= tol))
+            return 0;
+    }
+    return 1;
+}
+
+projcurve_status pc_refuse_point_curve(projcurve_context *ctx, const projcurve_curve *curve,
+                                       const struct projcurve_options *o, double model_size)
+{
+    const double tol = fmax(o->newton_tol, PC_MIN_TOL_DISTANCE) * model_size;
+    if (!pc_curve_is_point(curve, tol))
+        return PROJCURVE_OK;
+    pc_vec3 p;
+    pc_curve_eval(curve, curve->t0, 0, NULL, &p);
+    return pc_fail(ctx, PROJCURVE_ERR_SINGULAR,
+                   "the curve is the point (%.17g, %.17g, %.17g) to %g (the model's precision): "
+                   "project it as a point (projcurve_surface_intersect_line, "
+                   "projcurve_surface_foot_points)",
+                   p.x, p.y, p.z, tol);
 }
 
 /* Unit direction from dir; statuses NOT_FINITE, ZERO_DIRECTION. Scaling by
@@ -119,6 +170,8 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     projcurve_status st = unit_direction(ctx, dir, &unit);
     if (st == PROJCURVE_OK)
         st = pc_projection_options(ctx, opts, surface->size, &o);
+    if (st == PROJCURVE_OK)
+        st = pc_refuse_point_curve(ctx, curve, &o, surface->size);
     if (st != PROJCURVE_OK)
         return st;
 
@@ -157,6 +210,12 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
         const projcurve_status cs = pc_refine_and_compose(ctx, &proj, &o, r);
         if (cs != PROJCURVE_OK)
             st = cs;
+    }
+    /* only verified branches are returned, also from a partial result */
+    if (pc_status_keeps_result(st)) {
+        const projcurve_status vs = pc_verify_result(ctx, &proj, &o, r);
+        if (vs != PROJCURVE_OK)
+            st = vs;
     }
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");

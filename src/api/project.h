@@ -31,4 +31,18 @@ static inline int pc_status_keeps_result(projcurve_status st)
            st == PROJCURVE_ERR_CANCELLED;
 }
 
+/* A curve whose image is one point within tol (model units): every
+ * control point of a NURBS curve within tol of the first (the curve lies in
+ * their convex hull), or for a callback curve P and (t1 - t0) P' at 33
+ * evenly spread parameters. Such a curve is refused by the projections
+ * with PROJCURVE_ERR_SINGULAR (its projection is that of a point, and the
+ * tracer's arc-length steps are undefined on it): pc_refuse_point_curve. */
+int pc_curve_is_point(const projcurve_curve *c, double tol);
+
+/* SINGULAR with a message naming the point and the functions that project
+ * it when curve is a point to the precision of a model of size model_size
+ * (max(NEWTON_TOL, PC_MIN_TOL_DISTANCE) of it); OK otherwise. */
+projcurve_status pc_refuse_point_curve(projcurve_context *ctx, const projcurve_curve *curve,
+                                       const struct projcurve_options *o, double model_size);
+
 #endif /* PC_API_PROJECT_H */

@@ -16,6 +16,7 @@
 #include "refine/refine.h"
 #include "trace/result.h"
 #include "trace/trace.h"
+#include "verify/verify.h"
 
 /* A det K = 0 end (or start) is what the engine calls a fold; for the
  * orthogonal projection that is a centre of curvature (corollary 2.1). */
@@ -36,7 +37,9 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
     PC_REQUIRE(ctx, curve, "curve");
     PC_REQUIRE(ctx, out, "out");
     struct projcurve_options o;
-    const projcurve_status st = pc_projection_options(ctx, opts, surface->size, &o);
+    projcurve_status st = pc_projection_options(ctx, opts, surface->size, &o);
+    if (st == PROJCURVE_OK)
+        st = pc_refuse_point_curve(ctx, curve, &o, surface->size);
     if (st != PROJCURVE_OK)
         return st;
     pc_budget budget;
@@ -75,6 +78,12 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
             status = pc_refine_and_compose(ctx, &proj, &o, r);
         }
     }
+    /* only verified branches are returned, also from a partial result */
+    if (pc_status_keeps_result(status)) {
+        const projcurve_status vs = pc_verify_result(ctx, &proj, &o, r);
+        if (vs != PROJCURVE_OK)
+            status = vs;
+    }
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */
     if (cache.callback_failed && pc_status_keeps_result(status))
@@ -105,7 +114,9 @@ projcurve_status projcurve_project_orthogonal_implicit(
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "model size must be positive (got %.17g)", model_size);
     struct projcurve_options o;
-    const projcurve_status st = pc_projection_options(ctx, opts, model_size, &o);
+    projcurve_status st = pc_projection_options(ctx, opts, model_size, &o);
+    if (st == PROJCURVE_OK)
+        st = pc_refuse_point_curve(ctx, curve, &o, model_size);
     if (st != PROJCURVE_OK)
         return st;
     const double eps_d = o.tol_distance;

@@ -24,6 +24,17 @@ size_t projcurve_result_branch_count(const projcurve_result *result)
     return result ? result->n_branches : 0;
 }
 
+size_t projcurve_result_failure_count(const projcurve_result *result)
+{
+    if (result == NULL)
+        return 0;
+    size_t n = result->failures_dropped;
+    for (size_t i = 0; i < result->n_branches; ++i)
+        n += result->branches[i].start == PROJCURVE_START_FAILED ||
+             result->branches[i].end == PROJCURVE_END_FAILED;
+    return n;
+}
+
 int projcurve_result_point_dim(const projcurve_result *result)
 {
     return result ? result->point_dim : 0;
@@ -196,12 +207,23 @@ projcurve_status projcurve_result_branch_curve(projcurve_context *ctx,
         return st;
     PC_REQUIRE(ctx, out, "out");
     if (b->n_pieces == 0)
-        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT, "branch %zu has no composed pieces",
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       b->end == PROJCURVE_END_LIMIT
+                           ? "branch %zu has no composed pieces: the piece limit "
+                             "(PROJCURVE_OPT_MAX_PIECES) was reached before it"
+                           : "branch %zu has no composed pieces: the projection was made "
+                             "with PROJCURVE_OPT_COMPOSE 0",
                        branch);
     int deg = 1;
     for (size_t i = 0; i < b->n_pieces; ++i)
         if (b->pieces[i].degree > deg)
             deg = b->pieces[i].degree;
+    if (deg > PROJCURVE_MAX_DEGREE)
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "branch %zu: its pieces have degree %d, above the %d of a NURBS curve "
+                       "(cubic pcurves on a surface of degrees p, q give 3 (p + q)); read "
+                       "them one by one with projcurve_result_piece",
+                       branch, deg, PROJCURVE_MAX_DEGREE);
     const size_t d = (size_t)deg, np = b->n_pieces;
     if (np > (SIZE_MAX / (3 * sizeof(double)) - 2 * d - 2) / d)
         return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "branch %zu: %zu pieces of degree %zu overflow",

@@ -64,7 +64,8 @@ typedef struct cli_job {
     cli_pair *pairs; /* n_surfaces * n_curves after cli_run */
     size_t n_pairs;
     double time_ms;  /* total projection time */
-    size_t failures; /* calls that failed */
+    size_t failures; /* calls that failed, plus the failure places of their
+                        results (projcurve_result_failure_count) */
 } cli_job;
 
 /* Projects every curve onto every surface; failures are reported on stderr

@@ -36,6 +36,16 @@ int cli_run(projcurve_context *ctx, cli_job *job)
                     p->result = NULL;
                 ++job->failures;
             }
+            /* places where the projection could not be followed or
+             * verified: the result is incomplete there */
+            const size_t failed = projcurve_result_failure_count(p->result);
+            if (failed > 0)
+                fprintf(stderr,
+                        "projcurve: curve %zu onto surface %zu: %zu place(s) where the "
+                        "projection could not be followed or verified (branches ending or "
+                        "starting 'failed')\n",
+                        c, s, failed);
+            job->failures += failed;
         }
     return 1;
 }
@@ -127,6 +137,7 @@ const char *cli_start_name(projcurve_branch_start s)
     case PROJCURVE_START_BOUNDARY: return "boundary";
     case PROJCURVE_START_SILHOUETTE: return "silhouette";
     case PROJCURVE_START_CURVE_CROSSING: return "curve_crossing";
+    case PROJCURVE_START_FAILED: return "failed";
     }
     return "unknown";
 }

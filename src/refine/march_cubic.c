@@ -107,8 +107,14 @@ static cubic_verdict try_cubic(pc_refiner *r, cubic_march *m, const pc_bezier_pa
     if (!m->d0_ok || !pc_refine_uv_tangent(r, cand, patch, d1) ||
         !pc_refine_hermite(r, patch, &m->cur, cand, m->d0, d1, uv))
         return CUBIC_INVALID;
+    /* uv[2..5] hold h q' / 3. The allowance min_move keeps a stationary
+     * projection (a point curve, q' = 0 up to rounding, chord 0) from
+     * failing the test for ever: a cubic within min_move of its chord cannot
+     * overshoot by more. Without it every candidate there was invalid, and
+     * the straight march behind it made one rounding-sized piece after
+     * another, to the piece limit. */
     const double chord = hypot(cand->u - m->cur.u, cand->v - m->cur.v);
-    const double reach = PC_CUBIC_MAX_TANGENT_RATIO * chord / 3.0; /* uv[2..5] hold h q' / 3 */
+    const double reach = PC_CUBIC_MAX_TANGENT_RATIO * chord / 3.0 + r->min_move;
     if (hypot(uv[2] - uv[0], uv[3] - uv[1]) > reach || hypot(uv[6] - uv[4], uv[7] - uv[5]) > reach)
         return CUBIC_INVALID;
     const int n = pc_compose_poly(patch, 3, uv, cw);

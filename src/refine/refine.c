@@ -254,30 +254,59 @@ static int next_run(const pc_refiner *r, const pc_vertex_list *out, int descendi
     return 0;
 }
 
+/* 1 when every vertex of out in [lo, hi] is within half of eps_D (3D) of
+ * vertex `anchor`: a stretch of gaps at a branch end this short is the end
+ * reached to the tolerance (typically an end on a seam or a centre that the
+ * corrector resolves to rounding only), not a failure. */
+static int gap_stretch_short(pc_refiner *r, const pc_vertex_list *out, size_t lo, size_t hi,
+                             size_t anchor)
+{
+    const pc_rvertex *a = &out->items[anchor];
+    const pc_vec3 x = pc_refine_surface_point(r, a->u, a->v);
+    for (size_t k = lo; k <= hi; ++k) {
+        const pc_rvertex *v = &out->items[k];
+        if (!(vec3_dist(pc_refine_surface_point(r, v->u, v->v), x) <= 0.5 * r->eps_d))
+            return 0;
+    }
+    return 1;
+}
+
 /* Step 4, and the refined polyline as the branch's points. Where out has
  * gaps, the branch is split: each run of composed segments becomes a
  * branch (the first keeps index i, the others are appended to res); the
- * ends at a gap say END_FAILED and START_JUMP (born in mid-curve), or
- * END_SILHOUETTE and START_SILHOUETTE at a silhouette. *pieces gets the
+ * ends at a gap say END_FAILED and START_FAILED (the projection could not
+ * be followed there), or END_SILHOUETTE and START_SILHOUETTE at a
+ * silhouette — also where gaps come before the first run or after the last
+ * (the branch's own start and end are then not reached), unless those gaps
+ * stay within eps_D / 2 of the run (gap_stretch_short). *pieces gets the
  * pieces made. */
 static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_t i,
                                      const pc_vertex_list *out, int descending, size_t *pieces)
 {
     const projcurve_branch_end last_end = res->branches[i].end;
+    const size_t n = out->count;
     size_t pos = 0, lo, hi, runs = 0, index = i;
     *pieces = 0;
     int silhouette = 0; /* the kind of the gaps before the current run */
+    int at_end = 0;     /* the last run reaches the branch's end */
     while (next_run(r, out, descending, &pos, &lo, &hi, &silhouette)) {
         pc_branch *b = &res->branches[index];
+        /* later runs start after a gap; the first one may after a few */
+        const int at_start =
+            runs == 0 && (descending ? hi + 1 == n || gap_stretch_short(r, out, hi + 1, n - 1, hi)
+                                     : lo == 0 || gap_stretch_short(r, out, 0, lo - 1, lo));
         if (runs > 0) {
             projcurve_status st = pc_result_add_branch(r->ctx, res, &b);
             if (st != PROJCURVE_OK)
                 return st;
             res->branches[index].end =
                 silhouette ? PROJCURVE_END_SILHOUETTE : PROJCURVE_END_FAILED;
-            b->start = silhouette ? PROJCURVE_START_SILHOUETTE : PROJCURVE_START_JUMP;
             index = res->n_branches - 1;
         }
+        if (!at_start)
+            b->start = silhouette ? PROJCURVE_START_SILHOUETTE : PROJCURVE_START_FAILED;
+        at_end = descending ? lo == 0 || gap_stretch_short(r, out, 0, lo - 1, lo)
+                            : hi + 1 == n || gap_stretch_short(r, out, hi + 1, n - 1, hi);
         b->end = last_end;
         const projcurve_status st = store_run(r, b, out, lo, hi, descending);
         *pieces += b->n_pieces;
@@ -288,6 +317,8 @@ static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_
     if (runs == 0 && last_end != PROJCURVE_END_LIMIT) /* nothing could be composed:
                                                          the traced polyline stays */
         res->branches[i].end = PROJCURVE_END_FAILED;
+    else if (!at_end) /* gaps after the last run: silhouette set by next_run */
+        res->branches[index].end = silhouette ? PROJCURVE_END_SILHOUETTE : PROJCURVE_END_FAILED;
     return PROJCURVE_OK;
 }
 

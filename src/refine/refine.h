@@ -10,6 +10,17 @@
 #include "trace/projector.h"
 #include "trace/result.h"
 
+/* The smallest eps_T (degrees) a composing projection accepts. At 1e-3
+ * degrees straight pieces already number ~57,000 per radian the curve
+ * turns; below, their end tangents would have to be known better than the
+ * refinement knows the exact ones — q' from the projector to ~1e-9, and at
+ * knot lines a one-sided difference over 1e-6 of the branch, ~1e-6 of its
+ * turning — and cos(eps_T) rounds to 1 near 1e-6 degrees. Below this,
+ * the march met the angle nowhere and left gaps (eps_T = 1e-6: 0.1 % of
+ * the projection kept, status OK). Refused by the projection with
+ * OUT_OF_RANGE (pc_projection_options). */
+#define PC_REFINE_MIN_ANGLE_DEG 1e-3
+
 /* For every branch of r (points (t, u, v)): inserts vertices until each
  * segment's image on S is within eps_D (Hausdorff, 3D) of the exact
  * projection and every joint is within eps_T, splits segments at the knot

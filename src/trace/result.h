@@ -47,6 +47,9 @@ struct projcurve_result {
     pc_branch *branches;
     size_t n_branches, cap_branches;
     pc_stats stats;
+    /* Branches the verification pass (verify/) dropped because nothing of
+     * them could be verified: failures without a branch to show them. */
+    size_t failures_dropped;
 };
 
 /* Allocation helpers; every function returns OK or NO_MEMORY. */

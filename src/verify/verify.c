@@ -1,0 +1,208 @@
+/*
+ * The verification pass (verify.h): the driver. Each branch is checked item
+ * by item — its pieces when it has them, else the segments of its polyline —
+ * and where an item fails the branch is cut there: every run of verified
+ * items becomes a branch, the ends at a cut saying END_FAILED and
+ * START_FAILED. The checks themselves are in verify_piece.c.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "common/error.h"
+#include "verify/verify.h"
+#include "verify/verify_internal.h"
+
+/* A branch whose image on S stays within this fraction of the model size of
+ * its first point, over a curve-parameter range below this fraction of the
+ * curve's domain, is below the precision the library places points to (the
+ * knot-line crossings are put on their line to 1e-9 of the domain, and a
+ * parameter step below 1e-12 of a range is not resolved): it is the trace
+ * of a seed met twice by rounding at a boundary or fold, not a curve, and
+ * is dropped. (A point curve, whose image is one point over its whole
+ * domain, is not noise: its projection is a point branch.) */
+#define PC_VERIFY_NOISE_REL 1e-9
+
+static pc_vec3 surface_point(const pc_projector *proj, double u, double v)
+{
+    size_t hu = 0, hv = 0;
+    pc_vec3 s;
+    pc_nurbs_surface_eval(&proj->surface->nurbs, u, v, 0, &hu, &hv, &s);
+    return s;
+}
+
+/* 1 when every point of b maps to within the noise length of the first. */
+static int is_noise(const pc_projector *proj, const pc_branch *b)
+{
+    if (b->n_points == 0)
+        return 1;
+    const double domain = proj->curve->t1 - proj->curve->t0;
+    if (!(fabs(b->points[3 * (b->n_points - 1)] - b->points[0]) <= PC_VERIFY_NOISE_REL * domain))
+        return 0;
+    const double noise = PC_VERIFY_NOISE_REL * proj->model_size;
+    const pc_vec3 first = surface_point(proj, b->points[1], b->points[2]);
+    for (size_t k = 1; k < b->n_points; ++k)
+        if (!(vec3_dist(surface_point(proj, b->points[3 * k + 1], b->points[3 * k + 2]), first) <=
+              noise))
+            return 0;
+    for (size_t k = 0; k < b->n_pieces; ++k) { /* a piece may bulge between its ends */
+        const pc_piece *p = &b->pieces[k];
+        for (int j = 0; j <= p->degree; ++j) {
+            const double *c = p->ctrl + 3 * j;
+            if (!(vec3_dist(vec3(c[0], c[1], c[2]), first) <= noise))
+                return 0;
+        }
+    }
+    return 1;
+}
+
+/* Marks in keep[k] whether item k of b passes: piece k, with both its end
+ * vertices, or polyline segment k with both its vertices. *n_items gets the
+ * item count; returns 1 when every item passes. ok is scratch for the
+ * items + 1 vertices. */
+static int check_branch(pc_verifier *v, const pc_branch *b, unsigned char *keep,
+                        unsigned char *ok, size_t *n_items)
+{
+    const int pieces = b->n_pieces > 0;
+    const size_t n = pieces ? b->n_pieces : b->n_points - 1;
+    *n_items = n;
+    for (size_t k = 0; k <= n; ++k) {
+        double t, u, w;
+        if (pieces) {
+            const pc_piece *p = &b->pieces[k < n ? k : n - 1];
+            t = k < n ? p->t0 : p->t1;
+            u = p->uv[k < n ? 0 : 2];
+            w = p->uv[k < n ? 1 : 3];
+        } else {
+            t = b->points[3 * k];
+            u = b->points[3 * k + 1];
+            w = b->points[3 * k + 2];
+        }
+        ok[k] = (unsigned char)pc_verify_vertex(v, t, u, w);
+    }
+    int all = 1;
+    for (size_t k = 0; k < n; ++k) {
+        keep[k] = ok[k] && ok[k + 1] &&
+                  (!pieces || pc_verify_piece(v, &b->pieces[k], k > 0 ? &b->pieces[k - 1] : NULL));
+        all &= keep[k];
+    }
+    return all;
+}
+
+/* Appends to r a branch made of items [lo, hi] of branch i. */
+static projcurve_status copy_run(projcurve_context *ctx, projcurve_result *r, size_t i,
+                                 size_t lo, size_t hi, projcurve_branch_start start,
+                                 projcurve_branch_end end)
+{
+    pc_branch *nb = NULL;
+    projcurve_status st = pc_result_add_branch(ctx, r, &nb);
+    if (st != PROJCURVE_OK)
+        return st;
+    const pc_branch *b = &r->branches[i]; /* after the append: it may have moved */
+    nb->start = start;
+    nb->end = end;
+    if (b->n_pieces == 0) {
+        for (size_t k = lo; k <= hi + 1 && st == PROJCURVE_OK; ++k)
+            st = pc_branch_add_point(ctx, nb, 3, b->points + 3 * k);
+        return st;
+    }
+    for (size_t k = lo; k <= hi && st == PROJCURVE_OK; ++k) {
+        const pc_piece *p = &b->pieces[k];
+        const double vertex[3] = {p->t0, p->uv[0], p->uv[1]};
+        st = pc_branch_add_point(ctx, nb, 3, vertex);
+        if (st == PROJCURVE_OK)
+            st = pc_branch_add_piece(ctx, nb, p->degree, p->t0, p->t1, p->uv, p->ctrl,
+                                     p->weights);
+        if (st == PROJCURVE_OK)
+            pc_branch_set_last_pcurve(nb, p->uv_degree, p->uv_ctrl);
+    }
+    const pc_piece *last = &b->pieces[hi];
+    const double vertex[3] = {last->t1, last->uv[2], last->uv[3]};
+    return st == PROJCURVE_OK ? pc_branch_add_point(ctx, nb, 3, vertex) : st;
+}
+
+/* Replaces branch i by its runs of kept items (appended to r), the cuts
+ * ending FAILED and starting FAILED; a branch with no run is dropped and
+ * counted as a failure. The original is removed. */
+static projcurve_status cut_branch(projcurve_context *ctx, projcurve_result *r, size_t i,
+                                   const unsigned char *keep, size_t n)
+{
+    projcurve_status st = PROJCURVE_OK;
+    size_t runs = 0;
+    for (size_t lo = 0; lo < n && st == PROJCURVE_OK;) {
+        if (!keep[lo]) {
+            ++lo;
+            continue;
+        }
+        size_t hi = lo;
+        while (hi + 1 < n && keep[hi + 1])
+            ++hi;
+        const projcurve_branch_start start =
+            lo == 0 ? r->branches[i].start : PROJCURVE_START_FAILED;
+        const projcurve_branch_end end = hi + 1 == n ? r->branches[i].end : PROJCURVE_END_FAILED;
+        st = copy_run(ctx, r, i, lo, hi, start, end);
+        ++runs;
+        lo = hi + 1;
+    }
+    if (st == PROJCURVE_OK && runs == 0)
+        ++r->failures_dropped;
+    pc_result_remove_branch(r, i);
+    return st;
+}
+
+projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *proj,
+                                  const struct projcurve_options *o, projcurve_result *r)
+{
+    PC_REQUIRE(ctx, proj, "projector");
+    PC_REQUIRE(ctx, r, "result");
+    if (r->point_dim != 3)
+        return PROJCURVE_OK;
+    const double *dom = proj->surface->nurbs.domain;
+    const double diag = hypot(dom[1] - dom[0], dom[3] - dom[2]);
+    /* the exact points measured against are placed to the corrector's
+     * tolerance: the distance is known to that, and no better */
+    pc_verifier v = {proj, o->tol_distance + proj->newton_tol, pc_verify_vertex_tolerance(proj),
+                     1e-10 * diag, 1e-13 * diag, 0, 0.0, 0.0};
+    unsigned char *keep = NULL, *ok = NULL;
+    size_t cap = 0;
+    projcurve_status st = PROJCURVE_OK;
+    size_t n_checked = r->n_branches; /* runs of cut branches are appended, verified */
+    for (size_t i = 0; i < n_checked && st == PROJCURVE_OK;) {
+        const pc_branch *b = &r->branches[i];
+        const int limited = b->end == PROJCURVE_END_LIMIT;
+        const int noise = is_noise(proj, b);
+        if (noise || b->n_points < 2 || (o->compose && b->n_pieces == 0 && !limited)) {
+            if (!noise)
+                ++r->failures_dropped; /* nothing verifiable: a failure */
+            pc_result_remove_branch(r, i);
+            --n_checked;
+            continue;
+        }
+        const size_t need = (b->n_pieces > 0 ? b->n_pieces : b->n_points) + 1;
+        if (need > cap) {
+            unsigned char *k2 = realloc(keep, need), *o2 = realloc(ok, need);
+            keep = k2 ? k2 : keep;
+            ok = o2 ? o2 : ok;
+            if (!k2 || !o2) {
+                st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory verifying a branch");
+                break;
+            }
+            cap = need;
+        }
+        size_t n = 0;
+        if (check_branch(&v, b, keep, ok, &n)) {
+            ++i;
+            continue;
+        }
+        st = cut_branch(ctx, r, i, keep, n);
+        --n_checked;
+    }
+    free(keep);
+    free(ok);
+    if (o->compose) {
+        double pieces = 0.0;
+        for (size_t i = 0; i < r->n_branches; ++i)
+            pieces += (double)r->branches[i].n_pieces;
+        r->stats.pieces = pieces;
+    }
+    return st;
+}
