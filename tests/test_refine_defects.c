@@ -58,10 +58,9 @@ static size_t failed_ends(const projcurve_result *r)
 static void test_joinsurf(void)
 {
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path("data/real/test-joinsurf_01.stp"),
+    if (projcurve_model_read_file(NULL, pc_test_data_path("real/test-joinsurf_01.stp"),
                                   &m) != PROJCURVE_OK) {
-        printf("test-joinsurf_01.stp not readable, skipped\n");
-        return;
+        pc_test_missing_data("real/test-joinsurf_01.stp");
     }
     const double down[3] = {0, 0, -1};
     size_t dir_failures = 0, ortho_failures = 0, ortho_failed_ends = 0;
