@@ -131,7 +131,7 @@ typedef struct call_record {
 } call_record;
 
 typedef struct verdict {
-    pc_verify_report rep;
+    pc_sweep_report rep;
     long reported_failures; /* FAILED ends the result itself reports */
 } verdict;
 
@@ -405,10 +405,10 @@ static void child_run(void *user, int fd)
         return;
     }
     pc_bounded_cpu_guard(VERIFY_CPU * sw->slow);
-    const pc_verify_input in = {s, c, j->orthogonal, {j->dir[0], j->dir[1], j->dir[2]},
+    const pc_sweep_input in = {s, c, j->orthogonal, {j->dir[0], j->dir[1], j->dir[2]},
                                 &sd->mesh, rp.call.eps_d, sd->size, 2.0 * rp.call.eps_d,
                                 COMPLETENESS_T, MAX_PIECE_SAMPLES};
-    pc_verify_result(&in, r, &rp.verify.rep);
+    pc_sweep_verify(&in, r, &rp.verify.rep);
 #ifdef PC_HAVE_RESULT_FAILURE_COUNT
     rp.verify.reported_failures = (long)projcurve_result_failure_count(r);
 #else
@@ -496,7 +496,7 @@ static void collect(sweep *sw, const job *j, const reply *rp, const pc_bounded_o
                  rp->call.branches);
     }
     if (have_verify) {
-        const pc_verify_report *v = &rp->verify.rep;
+        const pc_sweep_report *v = &rp->verify.rep;
         const size_t wrong = v->off_surface + v->off_projection + v->behind + v->far_from_exact;
         if (wrong > 0 || v->accessor_failures > 0)
             row.classes |= 1u << F_WRONG;

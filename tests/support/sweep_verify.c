@@ -87,8 +87,8 @@ typedef struct piece {
 } piece;
 
 typedef struct verifier {
-    const pc_verify_input *in;
-    pc_verify_report *rep;
+    const pc_sweep_input *in;
+    pc_sweep_report *rep;
     double t0, t1;
     double dir_unit[3];
     piece *pieces;
@@ -245,7 +245,7 @@ static void bezier_uv(int degree, const double *uv, double s, double out[2])
  * lambda there (a diagnosis for the failure list). */
 static void note_wrong(const verifier *vf, const double x[3], const double axis[3], double t)
 {
-    pc_verify_report *rep = vf->rep;
+    pc_sweep_report *rep = vf->rep;
     if (!isnan(rep->wrong_t))
         return;
     rep->wrong_t = t;
@@ -302,8 +302,8 @@ static double nearest_exact(const verifier *vf, const double x[3], const double 
 static int sample_frame(verifier *vf, const double x[3], const double uv[2],
                         const double range[2], double n[3])
 {
-    const pc_verify_input *in = vf->in;
-    pc_verify_report *rep = vf->rep;
+    const pc_sweep_input *in = vf->in;
+    pc_sweep_report *rep = vf->rep;
     double f[9];
     if (projcurve_surface_eval(NULL, in->surface, uv[0], uv[1], 1, f) != PROJCURVE_OK) {
         ++rep->accessor_failures;
@@ -341,8 +341,8 @@ static int sample_frame(verifier *vf, const double x[3], const double uv[2],
 static int find_t_star(verifier *vf, const double x[3], const double axis[3],
                        const double range[2], double *t)
 {
-    const pc_verify_input *in = vf->in;
-    pc_verify_report *rep = vf->rep;
+    const pc_sweep_input *in = vf->in;
+    pc_sweep_report *rep = vf->rep;
     const double gap_tol = in->eps_d * (1.0 + 1e-6) + ROUND_REL * in->size;
     const double pad = fmax(0.5 * (range[1] - range[0]), 1e-6 * (vf->t1 - vf->t0));
     const double lo = fmax(vf->t0, range[0] - pad), hi = fmin(vf->t1, range[1] + pad);
@@ -377,8 +377,8 @@ static int find_t_star(verifier *vf, const double x[3], const double axis[3],
 static void check_sample(verifier *vf, const double x[3], const double uv[2],
                          const double range[2])
 {
-    const pc_verify_input *in = vf->in;
-    pc_verify_report *rep = vf->rep;
+    const pc_sweep_input *in = vf->in;
+    pc_sweep_report *rep = vf->rep;
     ++rep->samples;
     double n[3], t;
     if (!sample_frame(vf, x, uv, range, n))
@@ -463,7 +463,7 @@ static double cover_distance(const verifier *vf, const double y[3])
 
 static void note_missed(verifier *vf, double t, double d)
 {
-    pc_verify_report *rep = vf->rep;
+    pc_sweep_report *rep = vf->rep;
     ++rep->missed;
     if (isnan(rep->missed_t))
         rep->missed_t = t;
@@ -472,7 +472,7 @@ static void note_missed(verifier *vf, double t, double d)
 
 static void complete_directional(verifier *vf, double t, const double p[3])
 {
-    const pc_verify_input *in = vf->in;
+    const pc_sweep_input *in = vf->in;
     pc_oracle_hit hits[MAX_HITS];
     const size_t n = pc_oracle_line_hits(in->mesh, p, vf->dir_unit, 1, hits, MAX_HITS);
     const double tol = HAUSDORFF_SLACK * in->eps_d + ROUND_REL * in->size;
@@ -502,7 +502,7 @@ static double grid_d2(const pc_oracle_mesh *m, int i, int j, const double p[3])
 
 static void complete_orthogonal(verifier *vf, double t, const double p[3])
 {
-    const pc_verify_input *in = vf->in;
+    const pc_sweep_input *in = vf->in;
     const pc_oracle_mesh *m = in->mesh;
     const double tol = HAUSDORFF_SLACK * in->eps_d + ROUND_REL * in->size;
     double feet[2 * MAX_FEET];
@@ -541,7 +541,7 @@ static void complete_orthogonal(verifier *vf, double t, const double p[3])
 static void sample_branch(verifier *vf, const projcurve_result *r, size_t b, size_t n_pieces,
                           size_t stride)
 {
-    pc_verify_report *rep = vf->rep;
+    pc_sweep_report *rep = vf->rep;
     for (size_t k = 0; k < n_pieces; ++k) {
         if (k % stride != 0) {
             ++rep->pieces_skipped;
@@ -570,8 +570,8 @@ static void sample_branch(verifier *vf, const projcurve_result *r, size_t b, siz
     }
 }
 
-void pc_verify_result(const pc_verify_input *in, const projcurve_result *r,
-                      pc_verify_report *rep)
+void pc_sweep_verify(const pc_sweep_input *in, const projcurve_result *r,
+                      pc_sweep_report *rep)
 {
     memset(rep, 0, sizeof *rep);
     rep->wrong_t = rep->missed_t = rep->wrong_gap = rep->wrong_lambda = NAN;

@@ -36,7 +36,7 @@
 /* Angle between Dir and the tangent plane below which a point is grazing. */
 #define PC_VERIFY_GRAZING_DEG 2.0
 
-typedef struct pc_verify_input {
+typedef struct pc_sweep_input {
     const projcurve_surface *surface;
     const projcurve_curve *curve;
     int orthogonal;
@@ -47,9 +47,9 @@ typedef struct pc_verify_input {
     double lambda_min;           /* ray hits nearer than this are not required */
     int completeness_samples;    /* t values of the completeness check */
     size_t max_piece_samples;    /* work bound of the soundness check */
-} pc_verify_input;
+} pc_sweep_input;
 
-typedef struct pc_verify_report {
+typedef struct pc_sweep_report {
     size_t branches, pieces, samples;
     size_t pieces_skipped;       /* not sampled: beyond max_piece_samples */
     /* soundness */
@@ -69,9 +69,9 @@ typedef struct pc_verify_report {
     /* signals */
     size_t zero_piece_branches, failed_ends;
     int accessor_failures;       /* result accessors that failed */
-} pc_verify_report;
+} pc_sweep_report;
 
-void pc_verify_result(const pc_verify_input *in, const projcurve_result *r,
-                      pc_verify_report *rep);
+void pc_sweep_verify(const pc_sweep_input *in, const projcurve_result *r,
+                      pc_sweep_report *rep);
 
 #endif /* PC_TEST_SWEEP_VERIFY_H */
