@@ -508,7 +508,7 @@ def part_failures(exe, shared, work):
     below the model's precision and dropped: exit 0, no failed branch.
     Orthogonally a branch really ends "failed": exit 1, and "failures"
     counts every branch that starts or ends "failed"."""
-    path = os.path.join(shared, "data", "real", "test-joinsurf_01.stp")
+    path = os.path.join(shared, "real", "test-joinsurf_01.stp")
     if not os.path.isfile(path):
         print(f"SKIP: {path} not found")
         return 77
