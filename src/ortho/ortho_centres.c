@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 #include "nurbs/nurbs.h"
+#include "ortho/ortho_creases.h"
 #include "ortho/ortho_projector.h"
 
 /* Bisection of a crossing stops when its t-interval is this fraction of the
@@ -228,5 +229,8 @@ projcurve_status pc_ortho_split_at_centres(projcurve_context *ctx, const pc_proj
             prev_probe = cur_probe;
         }
     }
+    /* The other singular places where the tracer stops, creases (C0 knot
+     * lines), get their names in the same pass over the traced branches. */
+    pc_ortho_name_crease_ends(proj, r);
     return PROJCURVE_OK;
 }
