@@ -3,6 +3,8 @@
 #include <math.h>
 
 #include "common/error.h"
+#include "nurbs/nurbs.h"
+#include "ortho/ortho_creases.h"
 #include "ortho/ortho_projector.h"
 
 /* Bisection of a crossing stops when its t-interval is this fraction of the
@@ -71,23 +73,60 @@ static int well_conditioned(const pc_projector *proj, const vertex *x)
     return proj->derivatives(proj, x->t, x->u, x->v, &d) && fabs(d.det) >= CENTRE_MIN_DET;
 }
 
+/* A corrected point of the bisection is on the branch when it lies within
+ * this multiple of the chord |S(a) - S(b)| (plus newton_tol) of its guess.
+ * At an umbilic centre (P at a sphere's centre) every point of S is a foot
+ * point and the corrector, from any guess, converges anywhere (to the pole,
+ * on the NURBS sphere): such a point is no point of the branch. */
+#define CENTRE_MOVE_FACTOR 2.0
+
+static pc_vec3 point_on(const pc_projector *proj, double u, double v)
+{
+    size_t hu = 0, hv = 0;
+    pc_vec3 x;
+    pc_nurbs_surface_eval(&proj->surface->nurbs, u, v, 0, &hu, &hv, &x);
+    return x;
+}
+
+/* The corrected point at the fraction w of [a, b], from the interpolated
+ * guess; 0 where the corrector fails or leaves the branch (above). */
+static int corrected_between(const pc_projector *proj, const vertex *a, const vertex *b, double w,
+                             double chord, vertex *m)
+{
+    m->t = a->t + w * (b->t - a->t);
+    m->u = a->u + w * (b->u - a->u);
+    m->v = a->v + w * (b->v - a->v);
+    double uv[2] = {m->u, m->v};
+    if (!proj->correct(proj, m->t, uv, NULL))
+        return 0;
+    const double moved = vec3_dist(point_on(proj, uv[0], uv[1]), point_on(proj, m->u, m->v));
+    m->u = uv[0];
+    m->v = uv[1];
+    return moved <= CENTRE_MOVE_FACTOR * chord + proj->newton_tol;
+}
+
 /* Narrows [a, b] (different indices) around the crossing with corrected
  * points; stops early where the corrector fails (the crossing is then
- * known only to the current interval). keep_a / keep_b get the points
- * nearest the crossing on each side that are still well conditioned
- * (a and b themselves when none is). */
+ * known only to the current interval). The bisection's midpoints are
+ * dyadic, like the engine's steps, and so is the centre of a curve crossing
+ * a centre at such a parameter (t = 0.5 on [0, 1]): where the midpoint
+ * fails, the points at 3/8 and 5/8 are tried before giving up. keep_a /
+ * keep_b get the points nearest the crossing on each side that are still
+ * well conditioned (a and b themselves when none is). */
 static projcurve_status bisect(projcurve_context *ctx, const pc_projector *proj, double t_tol,
                                vertex a, vertex b, vertex *keep_a, vertex *keep_b)
 {
+    static const double fractions[3] = {0.5, 0.375, 0.625};
     *keep_a = a;
     *keep_b = b;
     for (int it = 0; it < CENTRE_MAX_BISECTIONS && b.t - a.t > t_tol; ++it) {
-        vertex m = {0.5 * (a.t + b.t), 0.5 * (a.u + b.u), 0.5 * (a.v + b.v), 0};
-        double uv[2] = {m.u, m.v};
-        if (!proj->correct(proj, m.t, uv, NULL))
+        const double chord = vec3_dist(point_on(proj, a.u, a.v), point_on(proj, b.u, b.v));
+        vertex m = {0, 0, 0, 0};
+        int found = 0;
+        for (int k = 0; k < 3 && !found; ++k)
+            found = corrected_between(proj, &a, &b, fractions[k], chord, &m);
+        if (!found)
             return PROJCURVE_OK;
-        m.u = uv[0];
-        m.v = uv[1];
         const projcurve_status status = index_at(ctx, proj, &m);
         if (status != PROJCURVE_OK)
             return status;
@@ -190,5 +229,8 @@ projcurve_status pc_ortho_split_at_centres(projcurve_context *ctx, const pc_proj
             prev_probe = cur_probe;
         }
     }
+    /* The other singular places where the tracer stops, creases (C0 knot
+     * lines), get their names in the same pass over the traced branches. */
+    pc_ortho_name_crease_ends(proj, r);
     return PROJCURVE_OK;
 }

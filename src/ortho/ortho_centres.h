@@ -21,7 +21,8 @@
  * parameter gap: the tracer landed on another foot point, typically where
  * two foot points annihilate at a fold); such a split ends the first part
  * at a centre of curvature (|det| < 1e-2 there) or as FAILED, and starts the
- * second with START_SILHOUETTE (|det| < 1e-2) or START_JUMP.
+ * second with START_SILHOUETTE (|det| < 1e-2) or START_JUMP. Then names
+ * the ends on creases (ortho_creases.h).
  * Statuses: OK, NO_MEMORY, CALLBACK. */
 projcurve_status pc_ortho_split_at_centres(projcurve_context *ctx, const pc_projector *proj,
                                            projcurve_result *r);

@@ -1,77 +1,11 @@
 #include "ortho/surface_d3.h"
 
 #include "nurbs/span_poly.h"
-#include "projcurve.h"
 
-/* Derivative order evaluated here. */
+/* Derivative order evaluated here (pc_basis_ders computes up to
+ * PC_MAX_DERIV). */
 #define D3_ORDER 3
-#define D3_MAX_P1 (PROJCURVE_MAX_DEGREE + 1)
-
-/* Non-zero basis functions N_{span-p+j, p}(t), j = 0..p, and their
- * derivatives up to order n at t: ders[k][j]; orders above p are zero.
- * Piegl & Tiller, The NURBS Book, algorithm A2.3. The span must be
- * non-empty (knots[span] < knots[span + 1]), which pc_knot_span guarantees,
- * so no denominator below is zero. */
-static void basis_derivatives(const double *knots, size_t span, int p, double t, int n,
-                              double ders[D3_ORDER + 1][D3_MAX_P1])
-{
-    double ndu[D3_MAX_P1][D3_MAX_P1];
-    double left[D3_MAX_P1], right[D3_MAX_P1];
-    double a[2][D3_MAX_P1];
-
-    ndu[0][0] = 1.0;
-    for (int j = 1; j <= p; ++j) {
-        left[j] = t - knots[span + 1 - (size_t)j];
-        right[j] = knots[span + (size_t)j] - t;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            ndu[j][r] = right[r + 1] + left[j - r];
-            const double temp = ndu[r][j - 1] / ndu[j][r];
-            ndu[r][j] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        ndu[j][j] = saved;
-    }
-    for (int j = 0; j <= p; ++j)
-        ders[0][j] = ndu[j][p];
-
-    const int n_eff = n < p ? n : p;
-    for (int r = 0; r <= p; ++r) {
-        int s1 = 0, s2 = 1;
-        a[0][0] = 1.0;
-        for (int k = 1; k <= n_eff; ++k) {
-            double d = 0.0;
-            const int rk = r - k, pk = p - k;
-            if (r >= k) {
-                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-                d = a[s2][0] * ndu[rk][pk];
-            }
-            const int j1 = rk >= -1 ? 1 : -rk;
-            const int j2 = r - 1 <= pk ? k - 1 : p - r;
-            for (int j = j1; j <= j2; ++j) {
-                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-                d += a[s2][j] * ndu[rk + j][pk];
-            }
-            if (r <= pk) {
-                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-                d += a[s2][k] * ndu[r][pk];
-            }
-            ders[k][r] = d;
-            const int swap = s1;
-            s1 = s2;
-            s2 = swap;
-        }
-    }
-    double factor = (double)p;
-    for (int k = 1; k <= n_eff; ++k) {
-        for (int j = 0; j <= p; ++j)
-            ders[k][j] *= factor;
-        factor *= (double)(p - k);
-    }
-    for (int k = n_eff + 1; k <= n; ++k)
-        for (int j = 0; j <= p; ++j)
-            ders[k][j] = 0.0;
-}
+_Static_assert(D3_ORDER <= PC_MAX_DERIV, "nurbs/ basis derivatives must reach order 3");
 
 static double clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
@@ -97,8 +31,7 @@ static double binomial3(int n, int k)
 /* Derivatives of the homogeneous surface A(u, v) = sum N_i N_j Pw_ij:
  * aw[k][l] (4 doubles) for k + l <= 3. */
 static void homogeneous_derivatives(const pc_nurbs_surface *s, size_t span_u, size_t span_v,
-                                    double nu[D3_ORDER + 1][D3_MAX_P1],
-                                    double nv[D3_ORDER + 1][D3_MAX_P1],
+                                    const pc_basis *nu, const pc_basis *nv,
                                     double aw[D3_ORDER + 1][D3_ORDER + 1][4])
 {
     for (int k = 0; k <= D3_ORDER; ++k)
@@ -114,12 +47,12 @@ static void homogeneous_derivatives(const pc_nurbs_surface *s, size_t span_u, si
             const double *pw = s->cw + 4 * ((j0 + (size_t)j) * s->n_u + i0 + (size_t)i);
             for (int l = 0; l <= D3_ORDER; ++l)
                 for (int c = 0; c < 4; ++c)
-                    tmp[l][c] += nv[l][j] * pw[c];
+                    tmp[l][c] += nv->d[l][j] * pw[c];
         }
         for (int k = 0; k <= D3_ORDER; ++k)
             for (int l = 0; k + l <= D3_ORDER; ++l)
                 for (int c = 0; c < 4; ++c)
-                    aw[k][l][c] += nu[k][i] * tmp[l][c];
+                    aw[k][l][c] += nu->d[k][i] * tmp[l][c];
     }
 }
 
@@ -208,10 +141,11 @@ void pc_surface_eval_d3(const pc_nurbs_surface *s, double u, double v, size_t *h
         monomial_derivatives(s->poly + index * pc_span_poly_len(p, q), p, q,
                              u - s->knots_u[span_u], v - s->knots_v[span_v], aw);
     } else {
-        double nu[D3_ORDER + 1][D3_MAX_P1], nv[D3_ORDER + 1][D3_MAX_P1];
-        basis_derivatives(s->knots_u, span_u, p, u, D3_ORDER, nu);
-        basis_derivatives(s->knots_v, span_v, q, v, D3_ORDER, nv);
-        homogeneous_derivatives(s, span_u, span_v, nu, nv, aw);
+        /* degrees above 5: the basis functions' derivatives (nurbs/) */
+        pc_basis nu, nv;
+        pc_basis_ders(s->knots_u, span_u, p, u, D3_ORDER, &nu);
+        pc_basis_ders(s->knots_v, span_v, q, v, D3_ORDER, &nv);
+        homogeneous_derivatives(s, span_u, span_v, &nu, &nv, aw);
     }
     if (s->rational) {
         rational_derivatives(aw, out);
