@@ -32,9 +32,9 @@ static int on_line(double x)
 int main(void)
 {
     projcurve_model *m = NULL;
-    if (projcurve_model_read_file(NULL, pc_test_shared_path("data/real/test_pipe_out_true.step"),
+    if (projcurve_model_read_file(NULL, pc_test_data_path("real/test_pipe_out_true.step"),
                                   &m) != PROJCURVE_OK)
-        pc_test_skip("test_pipe_out_true.step not readable");
+        pc_test_missing_data("real/test_pipe_out_true.step");
     const projcurve_surface *s = projcurve_model_surface(m, 0);
     CHECK(s != NULL);
     double dom[4] = {0, 0, 0, 0};
