@@ -52,7 +52,13 @@ projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, 
     c->rational = rational;
     c->t0 = b.knots[degree];
     c->t1 = b.knots[b.n_ctrl];
-    c->poly = pc_curve_polys_build(c); /* optional: NULL only costs speed */
+    /* Built when the degree allows: evaluation must not depend on memory. */
+    int no_memory;
+    c->poly = pc_curve_polys_build(c, &no_memory);
+    if (no_memory) {
+        pc_nurbs_curve_free(c);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for the span polynomials");
+    }
     return PROJCURVE_OK;
 }
 

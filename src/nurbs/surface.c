@@ -95,7 +95,13 @@ projcurve_status pc_nurbs_surface_init(projcurve_context *ctx, pc_nurbs_surface 
         pc_nurbs_surface_free(s);
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for knot tables");
     }
-    s->poly = pc_span_polys_build(s); /* optional: NULL only costs speed */
+    /* Built whenever its size allows: evaluation must not depend on memory. */
+    int no_memory;
+    s->poly = pc_span_polys_build(s, &no_memory);
+    if (no_memory) {
+        pc_nurbs_surface_free(s);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for the span polynomials");
+    }
     pc_nurbs_surface_bind(s);
     return PROJCURVE_OK;
 
