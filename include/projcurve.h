@@ -319,8 +319,14 @@ typedef struct projcurve_curve projcurve_curve;
  * weights and n_ctrl + degree + 1 knots. The domain is
  * [knots[degree], knots[n_ctrl]]; unclamped and periodic knot vectors are
  * converted exactly to clamped form over that domain.
+ * Limits (OUT_OF_RANGE, the message names the limit): parameters at most
+ * 1e30 in magnitude; a domain at least 1e-30 wide and at least 2^-32 times
+ * its largest end in magnitude; coordinates at most 1e30 in magnitude and,
+ * unless all control points coincide, spanning at least 1e-30. Beyond them
+ * squared derivatives and distances leave the double range or the domain
+ * holds too few doubles for the tracer's steps.
  * Statuses: OK, NULL_ARGUMENT, BAD_DEGREE, BAD_COUNT, BAD_KNOTS, NOT_FINITE,
- * BAD_WEIGHT, OVERFLOW, NO_MEMORY. */
+ * BAD_WEIGHT, OVERFLOW, OUT_OF_RANGE, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_curve_create_nurbs(projcurve_context *ctx,
                                                             int degree,
                                                             size_t n_ctrl,
@@ -335,8 +341,10 @@ PROJCURVE_API projcurve_status projcurve_curve_create_nurbs(projcurve_context *c
 typedef int (*projcurve_curve_fn)(void *user, double t, double out[9]);
 
 /* Creates a curve from a callback over [t0, t1] (t0 < t1, both finite).
- * The callback is not called here. user must outlive the curve.
- * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, INVALID_ARGUMENT, NO_MEMORY. */
+ * The callback is not called here. user must outlive the curve. The domain
+ * limits of projcurve_curve_create_nurbs apply (OUT_OF_RANGE).
+ * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, INVALID_ARGUMENT, OUT_OF_RANGE,
+ * NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_curve_create_callback(projcurve_context *ctx,
                                                                projcurve_curve_fn fn,
                                                                void *user,
@@ -384,9 +392,10 @@ typedef struct projcurve_surface projcurve_surface;
  * (deg_u, deg_v) from an n_u x n_v control net (u fastest), n_u * n_v weights
  * and the knot vectors (n_u + deg_u + 1 and n_v + deg_v + 1 knots). Domain and
  * clamping as for curves. The Bezier patch decomposition and the patch
- * bounding-volume hierarchy are built here, once.
+ * bounding-volume hierarchy are built here, once. The domain (in u and in
+ * v) and coordinate limits of projcurve_curve_create_nurbs apply.
  * Statuses: OK, NULL_ARGUMENT, BAD_DEGREE, BAD_COUNT, BAD_KNOTS, NOT_FINITE,
- * BAD_WEIGHT, OVERFLOW, NO_MEMORY. */
+ * BAD_WEIGHT, OVERFLOW, OUT_OF_RANGE, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_surface_create_nurbs(projcurve_context *ctx,
                                                               int deg_u, int deg_v,
                                                               size_t n_u, size_t n_v,

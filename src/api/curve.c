@@ -7,6 +7,7 @@
 
 #include "api/handles.h"
 #include "common/error.h"
+#include "nurbs/input.h"
 
 projcurve_status projcurve_curve_create_nurbs(projcurve_context *ctx, int degree, size_t n_ctrl,
                                               const double *ctrl, const double *weights,
@@ -44,6 +45,9 @@ projcurve_status projcurve_curve_create_callback(projcurve_context *ctx, projcur
     if (!(t0 < t1))
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "curve domain [%.17g, %.17g] is empty (need t0 < t1)", t0, t1);
+    const projcurve_status st = pc_input_check_domain(ctx, "curve domain", t0, t1);
+    if (st != PROJCURVE_OK)
+        return st;
     projcurve_curve *c = calloc(1, sizeof *c);
     if (c == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a curve");

@@ -219,6 +219,8 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     }
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
+    if (finder.no_memory && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))
+        st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for the control-polygon hits");
     pc_line_finder_free(&finder);
     free(bound_table);
     if (st == PROJCURVE_OK)

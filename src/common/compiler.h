@@ -29,8 +29,10 @@
  * FMA (which implies AVX: one 4-wide multiply-add per homogeneous point
  * instead of four SSE2 operations), the loader picking the clone the CPU
  * runs (GNU ifunc, dispatched on the CPU's feature bits). Other targets and
- * compilers get one version. */
-#if defined(__x86_64__) && defined(__ELF__) && defined(__has_attribute)
+ * compilers get one version, and so does a build with PC_NO_CLONES (CMake
+ * PROJCURVE_CLONES=OFF, forced by PROJCURVE_SANITIZE_THREAD: the ifunc
+ * resolvers run before ThreadSanitizer's runtime is ready). */
+#if defined(__x86_64__) && defined(__ELF__) && defined(__has_attribute) && !defined(PC_NO_CLONES)
 #if __has_attribute(target_clones)
 #define PC_HOT_CLONES __attribute__((target_clones("fma", "default")))
 #endif

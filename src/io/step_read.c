@@ -25,6 +25,13 @@
 #define PC_STEP_WORK_FACTOR 16
 #define PC_STEP_WORK_MIN ((size_t)1 << 20)
 
+/* The largest |PARAMETER_VALUE| accepted on a trimmed circle, in radians
+ * (about 1,600 turns; real files stay within a few). At 1e4 one ulp of the
+ * angle is 1.8e-12 rad, so reducing it modulo 2 pi keeps the trim point
+ * well inside any model tolerance; larger values are refused rather than
+ * rounded to an arbitrary point of the circle. */
+#define PC_STEP_MAX_ANGLE 1e4
+
 typedef struct reader {
     pc_step_file *f;
     projcurve_model *model;
@@ -442,6 +449,8 @@ static projcurve_status trim_of(const reader *r, const pc_step_instance *at,
         return bad(r, at, "a trim is not a list");
     for (const pc_step_node *c = list->first; c != NULL; c = c->next) {
         if (pc_step_is(c, "PARAMETER_VALUE") && c->first && c->first->kind == PC_STEP_NUMBER) {
+            if (!isfinite(c->first->number))
+                return bad(r, at, "a PARAMETER_VALUE is not finite");
             *has_param = 1;
             *t = c->first->number;
         } else if (c->kind == PC_STEP_REF) {
@@ -520,11 +529,16 @@ static projcurve_status trimmed_curve(const reader *r, const located *tc, pc_io_
                 t[k] = atan2(d[0] * y[0] + d[1] * y[1] + d[2] * y[2],
                              d[0] * x[0] + d[1] * x[1] + d[2] * x[2]);
             }
-        double a0 = forward ? t[0] : t[1], a1 = forward ? t[1] : t[0];
-        while (a1 <= a0)
-            a1 += 2.0 * M_PI;
-        while (a1 - a0 > 2.0 * M_PI)
-            a1 -= 2.0 * M_PI;
+        for (size_t k = 0; k < 2; ++k)
+            if (!(fabs(t[k]) <= PC_STEP_MAX_ANGLE))
+                return bad(r, tc->inst, "a trim angle of a CIRCLE exceeds 1e4 rad in magnitude");
+        /* The arc runs from a0 through a sweep in (0, 2 pi], reduced in one
+         * step (fmod is exact) instead of by adding turns. */
+        const double a0 = forward ? t[0] : t[1];
+        double sweep = fmod((forward ? t[1] : t[0]) - (forward ? t[0] : t[1]), 2.0 * M_PI);
+        if (sweep <= 0.0)
+            sweep += 2.0 * M_PI;
+        const double a1 = a0 + sweep;
         st = pc_io_arc_curve(r->f->ctx, r->arena, o, x, y, radius, a0, a1, out);
         if (st == PROJCURVE_OK && !forward)
             reverse_curve(out);

@@ -18,12 +18,18 @@ projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, 
         st = pc_input_check_sizes(ctx, degree, n_ctrl, 0, 1);
     if (st == PROJCURVE_OK)
         st = pc_knots_validate(ctx, "knot vector", degree, n_ctrl, knots);
+    if (st == PROJCURVE_OK)
+        st = pc_input_check_domain(ctx, "curve domain", knots[degree], knots[n_ctrl]);
     pc_spline_batch b = {degree, n_ctrl, 4, 1, NULL, NULL};
     int rational = 0;
     if (st == PROJCURVE_OK)
         st = pc_input_homogeneous(ctx, n_ctrl, ctrl, weights, &b.pts, &rational);
     if (st != PROJCURVE_OK)
         return st;
+    if ((st = pc_input_check_extent(ctx, n_ctrl, ctrl)) != PROJCURVE_OK) {
+        free(b.pts);
+        return st;
+    }
     const size_t n_knots = n_ctrl + (size_t)degree + 1;
     b.knots = malloc(n_knots * sizeof(double));
     if (b.knots == NULL) {
@@ -46,7 +52,13 @@ projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, 
     c->rational = rational;
     c->t0 = b.knots[degree];
     c->t1 = b.knots[b.n_ctrl];
-    c->poly = pc_curve_polys_build(c); /* optional: NULL only costs speed */
+    /* Built when the degree allows: evaluation must not depend on memory. */
+    int no_memory;
+    c->poly = pc_curve_polys_build(c, &no_memory);
+    if (no_memory) {
+        pc_nurbs_curve_free(c);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for the span polynomials");
+    }
     return PROJCURVE_OK;
 }
 

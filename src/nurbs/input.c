@@ -2,6 +2,7 @@
  * Validation of user control points and weights, and conversion to the
  * homogeneous form (w x, w y, w z, w) every evaluation path works on.
  */
+#include <math.h>
 #include <stdlib.h>
 
 #include "common/error.h"
@@ -76,5 +77,42 @@ projcurve_status pc_input_check_sizes(projcurve_context *ctx, int degree_u, size
         return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW,
                        "a control net of %zu x %zu points overflows the address space", n_u,
                        n_v);
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_input_check_domain(projcurve_context *ctx, const char *name, double t0,
+                                       double t1)
+{
+    const double end = fmax(fabs(t0), fabs(t1)), width = t1 - t0;
+    if (!(end <= PC_INPUT_MAX_PARAM))
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "%s [%.17g, %.17g] exceeds the parameter limit %g", name, t0, t1,
+                       PC_INPUT_MAX_PARAM);
+    if (!(width >= PC_INPUT_MIN_WIDTH) || !(width >= PC_INPUT_MIN_REL_WIDTH * end))
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "%s [%.17g, %.17g] is narrower than the limit max(%g, 2^-32 * %g)", name,
+                       t0, t1, PC_INPUT_MIN_WIDTH, end);
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_input_check_extent(projcurve_context *ctx, size_t n_points,
+                                       const double *ctrl)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < n_points; ++i)
+        for (size_t c = 0; c < 3; ++c) {
+            const double x = ctrl[3 * i + c];
+            if (!(fabs(x) <= PC_INPUT_MAX_COORD))
+                return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                               "control point %zu: coordinate %c = %.17g exceeds the limit %g", i,
+                               "xyz"[c], x, PC_INPUT_MAX_COORD);
+            lo[c] = fmin(lo[c], x);
+            hi[c] = fmax(hi[c], x);
+        }
+    const double extent = fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2]));
+    if (extent > 0.0 && extent < PC_INPUT_MIN_EXTENT)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "control points span %.17g, below the limit %g (scale the model up)",
+                       extent, PC_INPUT_MIN_EXTENT);
     return PROJCURVE_OK;
 }

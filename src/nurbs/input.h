@@ -25,4 +25,28 @@ projcurve_status pc_input_homogeneous(projcurve_context *ctx, size_t n_points,
                                       const double *ctrl, const double *weights, double **cw_out,
                                       int *rational);
 
+/* Limits of what the projections compute reliably in double precision
+ * (squares of derivatives and coordinates must not overflow or underflow,
+ * and a domain must hold enough distinct doubles for the tracer's steps):
+ * parameters at most PC_INPUT_MAX_PARAM in magnitude, a domain at least
+ * PC_INPUT_MIN_WIDTH wide and at least PC_INPUT_MIN_REL_WIDTH times its
+ * largest end; coordinates at most PC_INPUT_MAX_COORD in magnitude and a
+ * control polygon, unless it is a single point, at least
+ * PC_INPUT_MIN_EXTENT across. Outside them creation is refused. */
+#define PC_INPUT_MAX_PARAM 1e30
+#define PC_INPUT_MIN_WIDTH 1e-30
+#define PC_INPUT_MIN_REL_WIDTH 0x1p-32
+#define PC_INPUT_MAX_COORD 1e30
+#define PC_INPUT_MIN_EXTENT 1e-30
+
+/* OUT_OF_RANGE unless [t0, t1] lies within the limits above. `name` is
+ * "curve domain", "surface domain u", ... */
+projcurve_status pc_input_check_domain(projcurve_context *ctx, const char *name, double t0,
+                                       double t1);
+/* OUT_OF_RANGE unless the n_points control points (3 doubles each) lie
+ * within the coordinate limits above (called after pc_input_homogeneous,
+ * which reports non-finite ones). */
+projcurve_status pc_input_check_extent(projcurve_context *ctx, size_t n_points,
+                                       const double *ctrl);
+
 #endif /* PC_NURBS_INPUT_H */

@@ -81,8 +81,9 @@ static void span_coefficients(const pc_nurbs_surface *s, size_t span_u, size_t s
         }
 }
 
-double *pc_span_polys_build(const pc_nurbs_surface *s)
+double *pc_span_polys_build(const pc_nurbs_surface *s, int *no_memory)
 {
+    *no_memory = 0;
     if (s->deg_u > PC_POLY_MAX_DEGREE || s->deg_v > PC_POLY_MAX_DEGREE)
         return NULL;
     const size_t spans_u = s->n_u - (size_t)s->deg_u, spans_v = s->n_v - (size_t)s->deg_v;
@@ -91,8 +92,10 @@ double *pc_span_polys_build(const pc_nurbs_surface *s)
     if (total == 0 || total > PC_POLY_MAX_BYTES / sizeof(double))
         return NULL;
     double *poly = calloc(total, sizeof(double));
-    if (poly == NULL)
+    if (poly == NULL) {
+        *no_memory = 1;
         return NULL;
+    }
     for (size_t kv = 0; kv < spans_v; ++kv) {
         const size_t span_v = kv + (size_t)s->deg_v;
         if (!(s->knots_v[span_v] < s->knots_v[span_v + 1]))
@@ -106,15 +109,18 @@ double *pc_span_polys_build(const pc_nurbs_surface *s)
     return poly;
 }
 
-double *pc_curve_polys_build(const pc_nurbs_curve *c)
+double *pc_curve_polys_build(const pc_nurbs_curve *c, int *no_memory)
 {
+    *no_memory = 0;
     if (c->degree > PC_POLY_MAX_DEGREE)
         return NULL;
     const int p = c->degree;
     const size_t spans = c->n_ctrl - (size_t)p, per_span = 4 * ((size_t)p + 1);
     double *poly = calloc(spans * per_span, sizeof(double));
-    if (poly == NULL)
+    if (poly == NULL) {
+        *no_memory = 1;
         return NULL;
+    }
     for (size_t k = 0; k < spans; ++k) {
         const size_t span = k + (size_t)p;
         if (!(c->knots[span] < c->knots[span + 1]))

@@ -28,14 +28,17 @@ static inline size_t pc_span_poly_len(int p, int q)
 /* The table of s (spans in the order of pc_knot_inverses, u fastest; span
  * pair (k, l) at ((l - q) (n_u - p) + (k - p)) * pc_span_poly_len doubles;
  * coefficient (i, j) of x^i y^j at 4 (j (p + 1) + i) in it). malloc'd;
- * NULL when a degree exceeds PC_POLY_MAX_DEGREE, the table would exceed
- * PC_POLY_MAX_BYTES or memory is short (evaluation then uses B-splines). */
-double *pc_span_polys_build(const pc_nurbs_surface *s);
+ * NULL when a degree exceeds PC_POLY_MAX_DEGREE or the table would exceed
+ * PC_POLY_MAX_BYTES (evaluation then uses B-splines, which round
+ * differently), and NULL with *no_memory = 1 when memory is short: the
+ * caller must fail then, or the same surface would give other results. */
+double *pc_span_polys_build(const pc_nurbs_surface *s, int *no_memory);
 
 /* Monomial form of a curve: per span, (p + 1) homogeneous 4-vectors C_i,
  * coefficients of (t - t_k)^i; span k at (k - p) (p + 1) 4-vectors. NULL
- * when the degree exceeds PC_POLY_MAX_DEGREE or memory is short. */
-double *pc_curve_polys_build(const pc_nurbs_curve *c);
+ * when the degree exceeds PC_POLY_MAX_DEGREE, and NULL with *no_memory = 1
+ * when memory is short (the caller must fail, as for surfaces). */
+double *pc_curve_polys_build(const pc_nurbs_curve *c, int *no_memory);
 
 /* Values and scaled derivatives b[d] = (1/d!) d^d f / dx^d, d <= n, of the
  * degree-P polynomial with 4-vector coefficients c[0], c[stride], ... at x:

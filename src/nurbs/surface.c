@@ -31,6 +31,10 @@ static projcurve_status check_surface_input(projcurve_context *ctx, int deg_u, i
         st = pc_knots_validate(ctx, "knot vector u", deg_u, n_u, knots_u);
     if (st == PROJCURVE_OK)
         st = pc_knots_validate(ctx, "knot vector v", deg_v, n_v, knots_v);
+    if (st == PROJCURVE_OK)
+        st = pc_input_check_domain(ctx, "surface domain u", knots_u[deg_u], knots_u[n_u]);
+    if (st == PROJCURVE_OK)
+        st = pc_input_check_domain(ctx, "surface domain v", knots_v[deg_v], knots_v[n_v]);
     return st;
 }
 
@@ -49,6 +53,10 @@ projcurve_status pc_nurbs_surface_init(projcurve_context *ctx, pc_nurbs_surface 
     st = pc_input_homogeneous(ctx, n_u * n_v, ctrl, weights, &bu.pts, &rational);
     if (st != PROJCURVE_OK)
         return st;
+    if ((st = pc_input_check_extent(ctx, n_u * n_v, ctrl)) != PROJCURVE_OK) {
+        free(bu.pts);
+        return st;
+    }
     bu.knots = copy_knots(knots_u, n_u + (size_t)deg_u + 1);
     bv.knots = copy_knots(knots_v, n_v + (size_t)deg_v + 1);
     if (bu.knots == NULL || bv.knots == NULL) {
@@ -87,7 +95,13 @@ projcurve_status pc_nurbs_surface_init(projcurve_context *ctx, pc_nurbs_surface 
         pc_nurbs_surface_free(s);
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for knot tables");
     }
-    s->poly = pc_span_polys_build(s); /* optional: NULL only costs speed */
+    /* Built whenever its size allows: evaluation must not depend on memory. */
+    int no_memory;
+    s->poly = pc_span_polys_build(s, &no_memory);
+    if (no_memory) {
+        pc_nurbs_surface_free(s);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for the span polynomials");
+    }
     pc_nurbs_surface_bind(s);
     return PROJCURVE_OK;
 

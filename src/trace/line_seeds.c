@@ -116,8 +116,10 @@ int pc_line_polygon_hits(pc_line_finder *f, pc_vec3 origin, pc_polygon_hits *out
     f->patches_incomplete = 0;
     const double pad = PC_POLYGON_BOX_PAD * s->size;
     pc_bvh_query_line(&s->bvh, origin, f->dir, 0.0, INFINITY, pad, collect_patch, f);
-    if (f->patches_incomplete)
+    if (f->patches_incomplete) {
+        f->no_memory = 1;
         return 0;
+    }
     for (size_t k = 0; k < f->n_patches; ++k) {
         pc_vec3 x[PC_MAX_POLYGON_HITS];
         const size_t idx = f->patches[k];
@@ -126,8 +128,10 @@ int pc_line_polygon_hits(pc_line_finder *f, pc_vec3 origin, pc_polygon_hits *out
         if (n > PC_MAX_POLYGON_HITS)
             n = PC_MAX_POLYGON_HITS;
         for (size_t i = 0; i < n; ++i)
-            if (!push_polygon_hit(out, idx, x[i]))
+            if (!push_polygon_hit(out, idx, x[i])) {
+                f->no_memory = 1;
                 return 0;
+            }
     }
     return 1;
 }

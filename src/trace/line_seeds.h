@@ -37,6 +37,10 @@ typedef struct pc_line_finder {
     size_t *patches;
     size_t n_patches, cap_patches;
     int patches_incomplete;    /* memory ran out collecting them */
+    /* Memory ran out for the polygon hits at least once in this run: the
+     * length estimate or a jump decision then differed from the one with
+     * memory, so the caller must fail the run with NO_MEMORY. */
+    int no_memory;
     int have_l1;
 } pc_line_finder;
 
@@ -51,8 +55,8 @@ int pc_line_may_jump(pc_seed_finder *self, double t, const pc_seed *active, size
 void pc_line_jump_reset(pc_seed_finder *self);
 
 /* Every control-polygon hit of the ray origin + lambda dir over the patches
- * whose boxes it meets; clears and fills out. Returns 0 when memory ran
- * out. Also used by the length estimate. */
+ * whose boxes it meets; clears and fills out. Returns 0 (and sets
+ * f->no_memory) when memory ran out. Also used by the length estimate. */
 int pc_line_polygon_hits(pc_line_finder *f, pc_vec3 origin, pc_polygon_hits *out);
 
 /* The projection's arc length estimated as in seed 000 s3.3 (the curve's
