@@ -416,8 +416,13 @@ static double ortho_residual(const pc_projector *self, double t, double u, doubl
     if (c != PC_COLLAPSE_NONE) {
         pc_surface_eval_d3(&self->surface->nurbs, u, v, &cache_of(self)->hint_u,
                            &cache_of(self)->hint_v, sd);
+        /* Across S_r, the part within the allowance is the error of the
+         * tangent m's direction, times |S - P|, not a distance of the point
+         * from its foot: ortho_correct accepts the same (the collapsed
+         * parameter stays there), and a point it accepts must pass here
+         * (horn.xml's tip: across 5.89156e-7, allowance 5.89105e-7). */
         const collapsed_residual z = split_residual(sd, p, c, self->model_size);
-        return hypot(z.regular, z.across);
+        return hypot(z.regular, fmax(0.0, z.across - z.allowed));
     }
     tensor_and_residual(sd, p, k, f);
     double delta[2];
