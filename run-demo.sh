@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Builds libprojcurve (Release, in ./build-demo, without tests and benchmarks)
 # and runs its demonstration: the `demo` target of CMakeLists.txt, which is
 # `projcurve demo` once the command-line tool exists.

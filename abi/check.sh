@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Compares a built libprojcurve.so with the stored baseline abi/libprojcurve.abi
 # using libabigail's abidiff. Fails (exit 1) on
 #   - an incompatible change (abidiff bit 8: a function removed), and

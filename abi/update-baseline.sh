@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Regenerates abi/libprojcurve.abi, the stored description of the public ABI
 # that abi/check.sh compares every build against. Run it after an intended
 # ABI change (see docs/abi.md):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The benchmark cases: every row of tests/data/cases/MANIFEST.tsv (IGES
  * surface + curve + mode + tolerances + expected branch count), and, on

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Runs one projcurve-bench subcommand in quick mode and checks its outputs:
 # exit code 0, JSON that parses and holds the documented members as numbers,
 # and an SVG document that passes `xmllint --noout` where xmllint is

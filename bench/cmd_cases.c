@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve-bench cases: every shared case (tests/data/cases) and the
  * real-surface cases: time of the whole projection, branches, composed
@@ -300,7 +301,7 @@ int pcb_cmd_cases(const pcb_args *args)
                r->methods.rk4_points);
         fflush(stdout);
     }
-    printf("\nTable 2 (seed 000): eps_D x eps_T%s\n",
+    printf("\nTable 2 ([SY13]): eps_D x eps_T%s\n",
            args->quick ? "" : "; real surfaces: eps_D x size/100");
     printf("%-24s %5s %10s %6s %7s %8s %9s %10s %11s %9s\n", "case", "uv", "eps_D", "eps_T",
            "pieces", "ctrl", "joint_deg", "ms", "deviation", "uniform");

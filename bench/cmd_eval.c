@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve-bench eval: nanoseconds per bicubic surface evaluation with
  * second derivatives (the tracer's hot path) and per closest-point query,

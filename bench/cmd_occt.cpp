@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve-bench occt: the shared cases through Open CASCADE, side by side
  * with libprojcurve in the same run.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve-bench rays: microseconds per ray on the same shape at 1, 100
  * and 10,000 patches (knots refined exactly), for rays that meet one patch

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve-bench scaling: time of the whole directional projection against
  * 1/eps_D, against the number of patches (one shape, knots refined exactly:

@@ -1,9 +1,10 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * projcurve-bench table1: the paper's Table 1 (seed 000 s5) on Example 1.
+ * projcurve-bench table1: the paper's Table 1 ([SY13] s5) on Example 1.
  * Both tracers run with the same constant parametric increment dt, with
  * composition and jump detection off, so that the figure is the tracing
  * alone (the initial polyline of the paper): time, mean estimation error
- * (seed 000 eq. 3.8) and points, RK4 first order against second order,
+ * ([SY13] eq. 3.8) and points, RK4 first order against second order,
  * timed pair by pair in one run. The table is made twice: with the paper's
  * Newton tolerances (s5: eps1 = eps2 = 1e-10, NEWTON_TOL = 1e-10, whose
  * sine test is the paper's third), the replication, and with the library's
@@ -20,13 +21,13 @@
 #define TABLE1_REPS 7
 #define TABLE1_MIN_RUN_S 0.05
 #define MAX_ROWS 8
-/* Seed 000 s5: "in all of our experiments eps1 = eps2 = 1e-10". */
+/* [SY13] s5: "in all of our experiments eps1 = eps2 = 1e-10". */
 #define TABLE1_PAPER_NEWTON_TOL 1e-10
 
 static const double full_dts[] = {1e-2, 1e-3, 1e-4, 1e-5, 1e-6};
 static const double quick_dts[] = {1e-2, 1e-3};
 
-/* Seed 000 Table 1, for the printout: RK4 ms, ours ms (2.53 GHz Core 2). */
+/* [SY13] Table 1, for the printout: RK4 ms, ours ms (2.53 GHz Core 2). */
 static const double paper_ms[5][2] = {
     {1.927, 1.486}, {14.443, 9.372}, {151.814, 96.347}, {1698.425, 1076.167},
     {17359.394, 7194.017}};

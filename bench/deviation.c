@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Deviation of a result from the exact projection (see deviation.h).
  */

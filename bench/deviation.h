@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Measured deviation of a projection result from the exact projection,
  * on dense samples, independently of how the result was made.

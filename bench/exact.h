@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * An independent oracle for the exact projection: dense samples of it, and
  * a point-wise corrector that puts any nearby guess exactly on it.
@@ -9,8 +10,8 @@
  * the projection equations written out here from the public evaluation
  * functions:
  *   directional  e1.(S - P) = e2.(S - P) = 0, (e1, e2) an orthonormal pair
- *                perpendicular to Dir (seed 000 s3, written as in DESIGN.md);
- *   orthogonal   (S - P).Su = (S - P).Sv = 0 (seed 003 eq. 5-6).
+ *                perpendicular to Dir ([SY13] s3, written as in DESIGN.md);
+ *   orthogonal   (S - P).Su = (S - P).Sv = 0 ([PW96] eq. 5-6).
  */
 #ifndef PCB_EXACT_H
 #define PCB_EXACT_H

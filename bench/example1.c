@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Example 1 loader (see example1.h).
  */
@@ -26,7 +27,7 @@ int pcb_example1_load(const char *data_dir, pcb_example1 *ex)
         projcurve_context_destroy(ctx);
         return 1;
     }
-    fprintf(stderr, "example 1: %s: %s %s; using the numbers of seed 000 s5\n", path,
+    fprintf(stderr, "example 1: %s: %s %s; using the numbers of [SY13] s5\n", path,
             projcurve_status_string(st), projcurve_context_message(ctx));
     projcurve_context_destroy(ctx);
     projcurve_model_destroy(ex->model);

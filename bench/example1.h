@@ -1,6 +1,7 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The paper's Example 1 for the benchmarks: read from
- * cases/song_yong_example1.igs, or built from the numbers of seed 000 s5
+ * cases/song_yong_example1.igs, or built from the numbers of [SY13] s5
  * when the file cannot be read.
  */
 #ifndef PCB_EXAMPLE1_H

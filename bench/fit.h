@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Least-squares fits used to read growth rates off the scaling curves.
  */

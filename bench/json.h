@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * A small streaming JSON writer for benchmark results. Every value call
  * takes the member name when it is written inside an object (NULL inside an

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve-bench: benchmarks of libprojcurve, one subcommand per question
  * (see bench/README.md).

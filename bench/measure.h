@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * One case measured: the whole projection timed (median after warm-up),
  * its shape (branches, pieces, control points, worst joint angle) and its

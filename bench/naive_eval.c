@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Textbook bicubic evaluation (see naive_eval.h).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The reference for `eval`: a textbook bicubic B-spline evaluation with
  * second derivatives (The NURBS Book, algorithms A2.1 and A2.3, then the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * NURBS data export for the Open CASCADE comparison (see occt_geometry.h).
  * Surfaces are read from the handle's internal storage (homogeneous control

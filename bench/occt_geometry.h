@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The exact NURBS data of our surfaces and curves as plain arrays, so that
  * the Open CASCADE comparison builds the very same geometry

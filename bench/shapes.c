@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Benchmark shapes (see shapes.h).
  */
@@ -145,7 +146,7 @@ projcurve_status pcb_make_refined_patch(projcurve_context *ctx, size_t spans,
 projcurve_status pcb_make_example1(projcurve_context *ctx, projcurve_surface **surface,
                                    projcurve_curve **curve)
 {
-    /* Seed 000 s5: the 6 x 2 net (u fastest: the z = -40 row, then z = 40). */
+    /* [SY13] s5: the 6 x 2 net (u fastest: the z = -40 row, then z = 40). */
     static const double xy[6][2] = {{-98.75, 32.50}, {-91.77, 22.86}, {-81.48, 1.23},
                                     {-86.57, -32.46}, {-93.98, -50.36}, {-97.84, -57.27}};
     double net[2 * 6 * 3];

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Surfaces and curves built in code for the benchmarks: known shapes at a
  * chosen number of patches, and the paper's Example 1.
@@ -29,7 +30,7 @@ projcurve_status pcb_make_bumpy_surface(projcurve_context *ctx, size_t spans,
 projcurve_status pcb_make_refined_patch(projcurve_context *ctx, size_t spans,
                                         projcurve_surface **out);
 
-/* Seed 000 s5, Example 1: the degree 5x1 Bezier sheet and the cubic curve
+/* [SY13] s5, Example 1: the degree 5x1 Bezier sheet and the cubic curve
  * (knots 0.26, 0.68), projected along (-1, 0, 0). */
 projcurve_status pcb_make_example1(projcurve_context *ctx, projcurve_surface **surface,
                                    projcurve_curve **curve);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Line plots as SVG: one or more panels side by side, each with linear or
  * logarithmic axes, several named series, tick labels and a legend.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Timing: medians of repeated runs after a warm-up, and ratios of two
  * workloads measured pair by pair in the same run.

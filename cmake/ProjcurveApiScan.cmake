@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # projcurve_defined_api(<out-var> <source>...)
 # Lists the public functions (projcurve_*) that the given C sources define,
 # recognised by the project's definition style: the return type and the name

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Install rules: the public headers, the shared and static libraries, the
 # projcurve command (once src/cli defines it), a pkg-config file and a CMake
 # package, so that

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Warnings used for every target of the project.
 function(projcurve_warnings target)
   if(CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")

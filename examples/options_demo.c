@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Lists every projection option with its type, bounds and default, as read
  * from the library at run time (projcurve_option_info), and shows how a bad

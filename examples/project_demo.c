@@ -1,7 +1,8 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The main job of libprojcurve in one program: a wavy cubic curve is
  * projected onto a bicubic B-spline surface, first along a direction (seed
- * 000), then orthogonally (seed 003). For each branch the program prints how
+ * 000), then orthogonally ([PW96]). For each branch the program prints how
  * it starts and ends, its size, and how well its traced points satisfy the
  * projection equations, evaluated independently here from the surface and
  * the curve. With a path argument it also writes everything as IGES.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve.h — the public interface of libprojcurve.
  *
@@ -145,7 +146,7 @@ typedef enum projcurve_option {
     PROJCURVE_OPT_TOL_DISTANCE = 1,
     /* double: joint angle tolerance eps_T in degrees, (0, 90]. Default 1. */
     PROJCURVE_OPT_TOL_ANGLE_DEG = 2,
-    /* double: Newton tolerance eps1 = eps2 of seed 000 s3.3, relative to the
+    /* double: Newton tolerance eps1 = eps2 of [SY13] s3.3, relative to the
      * model size. Default 1e-12, bounds [1e-15, 1e-3]. */
     PROJCURVE_OPT_NEWTON_TOL = 3,
     /* integer: Newton iteration cap per correction. Default 20, [1, 200]. */
@@ -183,7 +184,7 @@ typedef enum projcurve_option {
     /* integer: degree of each composed piece's pcurve (u, v)(s), 1 or 3
      * (2 is rejected with OUT_OF_RANGE; projcurve_option_info gives the
      * bounds [1, 3]). 1 (default): straight segments in (u, v), composed
-     * pieces of degree p + q (seed 000 s4). 3: the cubic Hermite through
+     * pieces of degree p + q ([SY13] s4). 3: the cubic Hermite through
      * two exact points of the projection with the exact tangents there,
      * composed pieces of degree 3 (p + q); far fewer pieces at tight eps_D
      * (error O(h^4) instead of O(h^2)) and joints G1 wherever S is smooth.
@@ -438,7 +439,7 @@ PROJCURVE_API projcurve_status projcurve_surface_bounds(projcurve_context *ctx,
                                                         double box[6]);
 
 /* ======================================================================== */
-/* Point projection (seed 004 and its surface analogue)                      */
+/* Point projection ([Ook] and its surface analogue)                      */
 /* ======================================================================== */
 
 /* Closest point of the curve to p: parameter *t, point q (may be NULL) and
@@ -511,7 +512,7 @@ PROJCURVE_API projcurve_status projcurve_surface_intersect_line(projcurve_contex
 
 typedef struct projcurve_result projcurve_result;
 
-/* Directional projection of curve onto surface along dir (seed 000). opts
+/* Directional projection of curve onto surface along dir ([SY13]). opts
  * may be NULL (defaults). On success *out holds every branch.
  * PROJCURVE_ERR_LIMIT_REACHED also sets *out: a partial result, readable
  * with every result function, whose truncated branches end with
@@ -555,7 +556,7 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
                                                              const projcurve_options *opts,
                                                              projcurve_result **out);
 
-/* Orthogonal projection of curve onto surface (seed 003, parametric form):
+/* Orthogonal projection of curve onto surface ([PW96], parametric form):
  * every continuous branch of foot points (minima, saddles and maxima of the
  * distance alike). A branch that reaches a centre of curvature of S ends
  * there with PROJCURVE_END_CURVATURE_CENTRE; one born there starts with
@@ -575,7 +576,7 @@ PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *c
 typedef int (*projcurve_implicit_fn)(void *user, const double x[3], double *value,
                                      double grad[3], double hess[9]);
 
-/* Orthogonal projection onto an implicit surface (seed 003, eq. 32): traces the
+/* Orthogonal projection onto an implicit surface ([PW96], eq. 32): traces the
  * foot point curve in 3-space starting from the foot point of P(t0) nearest
  * to it. One branch only: the other foot points of P(t0) and branches born
  * in mid-curve are not traced (the callback gives no global view of the
@@ -636,7 +637,7 @@ typedef enum projcurve_stat {
     PROJCURVE_STAT_POINTS = 0,        /* traced points, all branches */
     PROJCURVE_STAT_STEPS = 1,         /* predictor steps attempted */
     PROJCURVE_STAT_NEWTON_ITERATIONS = 2,
-    PROJCURVE_STAT_AVG_ERROR = 3,     /* seed 000 eq. (3.8): mean estimation error of the
+    PROJCURVE_STAT_AVG_ERROR = 3,     /* [SY13] eq. (3.8): mean estimation error of the
                                          predicted points, |Dir x (S - P)| / |S - P| */
     PROJCURVE_STAT_JUMPS = 4,         /* branches found in mid-curve */
     PROJCURVE_STAT_PIECES = 5,        /* composed pieces, all branches */

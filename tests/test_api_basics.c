@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Status strings, version query, contexts and options: every documented
  * status of these functions, including each bad input (NULL handles and

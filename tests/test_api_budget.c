@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The work budget of a projection call (common/budget.h, projcurve.h):
  * TIME_LIMIT, MAX_WORK and the progress / cancel callback.

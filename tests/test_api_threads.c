@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Contexts hold all error state: threads that each use their own context see
  * only their own failures, and read-only options are shared safely. Each

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bezier decomposition and the patch BVH: the patches reproduce the surface,
  * their boxes contain it, the grid knows its neighbours, curve segments

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The blossoming composer (compose/): a segment of the parameter box composed
  * with a (rational) Bezier patch must be S(u(s), v(s)) exactly.

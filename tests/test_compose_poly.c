@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Composition of a polynomial pcurve with a Bezier patch (compose_poly.c):
  * S(u(s), v(s)) for a cubic (u, v)(s) inside a patch is a Bezier curve of

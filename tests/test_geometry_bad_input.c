@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Every bad input of curve and surface creation, evaluation and point
  * projection gets its own status and a message, and leaves *out untouched.

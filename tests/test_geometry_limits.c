@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Parameter domains and coordinate scales outside what double precision
  * carries through a projection are refused at creation with OUT_OF_RANGE

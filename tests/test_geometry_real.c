@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The geometry module on the real CAD surfaces of tests/data/real:
  * evaluation routes agree (de Boor on the clamped data, basis functions,

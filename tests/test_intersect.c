@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Line / surface intersection on whole NURBS surfaces (BVH, clipping,
  * merging), through pc_intersect_line and the public

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Line / surface intersection on every surface of every real CAD model in
  * tests/data/real (a file that does not load fails the test; the

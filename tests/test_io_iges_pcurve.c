@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The IGES writer's curve on surface (142) with cubic pcurves: its 2D curve
  * (the 126 in z = 0 it points to) is the pieces' pcurves, so S at the 2D

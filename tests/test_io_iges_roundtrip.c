@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * IGES writer round trips: surfaces, curves and a projection result written
  * and read back give the same knots, weights and control points (17
@@ -265,7 +266,7 @@ static void result_round_trip(void)
     projcurve_surface_destroy(s);
 }
 
-/* Seed 000 Example 1 projected along (-1, 0, 0): the written branch, read
+/* [SY13] Example 1 projected along (-1, 0, 0): the written branch, read
  * back through its 142, is the composed branch curve. */
 static void projected_round_trip(void)
 {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bad input to the readers: truncated files, wrong column layout, bad
  * pointers, absurd counts, non-numeric fields, deep nesting, megabytes of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Every file of tests/data/real loads, with the surface counts, degrees,
  * net sizes and rational flags that tests/data/real/SOURCES.md states

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * STEP entities read from small files written here: the order of control
  * points (STEP lists them u outermost), complex rational forms, implied

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Trim angles of a STEP TRIMMED_CURVE over a CIRCLE: many turns reduce to
  * the arc they name, absurd or non-finite values are refused with

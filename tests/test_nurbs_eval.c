@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * NURBS evaluation: exact analytic shapes, agreement of three independent
  * routes (de Boor on the user data, basis functions, Bezier patches) for

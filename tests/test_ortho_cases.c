@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The orthogonal cases of tests/data/cases (MANIFEST.tsv, mode "orthogonal"):
  * read each IGES file, project its curve onto its surface with the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Orthogonal projection next to a collapsed edge: horn.xml (tests/data/real),
  * whose v lines shrink to its tip (|Sv| -> 0 at u = 0), with the curve of

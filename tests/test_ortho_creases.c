@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Creases of a faceted surface: test_pipe_out_true.step surface 0 is
  * degree 1 x 1 with 30 x 30 uniform spans on [-1500, 1500]^2, so only C0

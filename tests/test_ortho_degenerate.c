@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve_project_orthogonal where the parametrisation is degenerate:
  * lines over the pole of an exact NURBS sphere (the edges v = 0, 1 are each

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Where branches of the orthogonal projection begin and end, against
  * analytic answers: pairs of foot points born and dying at centres of

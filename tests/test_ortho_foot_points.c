@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * PROJCURVE_OPT_FOOT_POINTS: by default the orthogonal projection returns
  * only the feet where the distance to P(t) is locally smallest; with

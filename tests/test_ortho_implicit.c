@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Orthogonal projection onto implicit surfaces (seed 003 s5): sphere, plane,
+ * Orthogonal projection onto implicit surfaces ([PW96] s5): sphere, plane,
  * cylinder and torus given by f, grad f and Hess f, against their analytic
  * foot points; x' and x'' against finite differences of the analytic foot
  * point curve; centres of curvature; the one branch traced (the parametric

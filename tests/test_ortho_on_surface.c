@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Orthogonal projection of a curve lying on S: the answer is the curve
  * itself (every point is its own foot point, at distance 0), the same on a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve_project_orthogonal on exact NURBS spheres, cylinders, tori and
  * planes: branch counts from the analytic foot points, every vertex an

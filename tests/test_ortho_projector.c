@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The orthogonal projector's equations alone (seed 003 s4): third surface
+ * The orthogonal projector's equations alone ([PW96] s4): third surface
  * derivatives against nurbs/ and finite differences; Newton foot points on
  * a sphere against the radial answer; q', q'' against finite differences
  * of Newton-corrected foot points; det K against (1 + rho / R)^2.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Orthogonal projection onto real CAD surfaces (tests/data/real): a
  * wavy cubic curve hovering a little above the surface (along its thinnest

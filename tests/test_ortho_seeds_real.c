@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Seeds of the orthogonal projection on the rational, high-degree surfaces
  * of linkrods.step (issue 14, defects 6 and 11), against independent

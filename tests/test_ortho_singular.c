@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The orthogonal residual where the parametrisation is singular inside the
  * surface: linkrods.step surfaces 9 and 16 (fillets whose v lines fold, Su

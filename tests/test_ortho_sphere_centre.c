@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * A line through the centre of a sphere (R = 1 at the origin), P(t) =
  * (t - 1/2) d on [0, 1]: the foot points are c +- R P / |P|, fixed while P

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The foot-point search skips BVH subtrees by the tangent boxes
  * (bezier/tangent_boxes.h). Two facts are checked on the polynomial

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Point projection: closest points on curves and surfaces against analytic
  * answers (spheres, tori, cylinders, circles) and against brute force

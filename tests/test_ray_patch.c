@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bezier clipping of one line against hand-built Bezier patches
  * (pc_ray_patch_hits), before any surface machinery: a plane with a

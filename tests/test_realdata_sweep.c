@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The real-data acceptance sweep: every (curve, surface) pair of the 13
  * real models in tests/data/real that lie near each other (and, to

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Tolerance control and composition (refine/): the composed pieces must be
  * within eps_D of the exact projection (3D Hausdorff distance), meet at

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * End to end on the shared cases (tests/data/cases/MANIFEST.tsv): every
  * directional and orthogonal case is projected through the public API at

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Cubic pcurves (PROJCURVE_OPT_PCURVE_DEGREE = 3) end to end, on the shapes
  * of the tracing tests (tests/support/trace_shapes) and on every directional

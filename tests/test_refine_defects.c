@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Issue 14, defects 7, 9 and 10, each pinned through the public API (and
  * one white-box check of the refinement's branch ends):

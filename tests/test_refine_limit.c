@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The piece limit (PROJCURVE_OPT_MAX_PIECES) through the public API, with
  * straight pcurves (the default): a tolerance that needs more pieces than

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Tolerance control where the exact projection cannot be followed
  * everywhere: bumpy sheets folded over themselves seen from slanted

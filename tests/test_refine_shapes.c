@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Tolerance control end to end on the shapes of the tracing tests
  * (tests/support/trace_shapes): a plane seen along a slanted direction, the

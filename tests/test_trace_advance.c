@@ -1,6 +1,7 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The tracer's step of the directional projector (pc_projector.advance):
- * from Taylor predictions (seed 000 eq. (3.5)) along Example 1 at the
+ * from Taylor predictions ([SY13] eq. (3.5)) along Example 1 at the
  * paper's coarsest step, each corrected point must lie on the projection
  * (a fresh evaluation's residual within the corrector's tolerance, although
  * the step may end without evaluating S there), and the derivatives it

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * A failed allocation never changes a result: surface and curve creation
  * plus a directional projection (with the length estimate and the jump

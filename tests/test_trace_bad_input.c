@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve_project_directional on bad or awkward input: NULL arguments,
  * zero and non-finite directions, a curve that misses the surface (an empty

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The directional cases of tests/data/cases (MANIFEST.tsv): each IGES file
  * holds one surface and its test curve(s); the projection along the listed

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Where the curve meets S (issue 14, defects 5 and 12). The directional
  * projection holds only in front of the curve, lambda = (S - P).Dir >= 0; a

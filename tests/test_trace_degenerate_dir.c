@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Directions that make the projection degenerate (issue 14, defects 1 and
  * 4): a curve running along Dir (its projection stands still), Dir tangent

@@ -1,7 +1,8 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The directional projector's equations: q' and q'' (DESIGN.md frame form)
  * against central finite differences of the exact projection curve and
- * against the paper's forms (seed 000 eqs. (3.2), (3.3)); the Newton
+ * against the paper's forms ([SY13] eqs. (3.2), (3.3)); the Newton
  * system (3.9) against finite differences; the corrector's convergence.
  */
 #include <math.h>
@@ -28,7 +29,7 @@ static int point_at(const pc_projector *proj, double t, const double guess[2], d
     return proj->correct(proj, t, uv, NULL);
 }
 
-/* seed 000 eq. (3.2) and the derivative of (3.2) in t, written out. */
+/* [SY13] eq. (3.2) and the derivative of (3.2) in t, written out. */
 static void paper_derivatives(const projcurve_surface *s, const projcurve_curve *c, pc_vec3 dir,
                               double t, double u, double v, double q1[2], double q2[2],
                               double printed_q2[2])

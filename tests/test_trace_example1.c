@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Seed 000 s5 Example 1: the cubic curve in the plane x = 0 projected along
+ * [SY13] s5 Example 1: the cubic curve in the plane x = 0 projected along
  * Dir = (-1, 0, 0) onto the degree 5 x 1 sheet near x = -90 (the paper's
  * stated (0, 0, -1) misses the sheet: an empty result). Both methods, with
  * the paper's constant parameter steps (Table 1: 1/dt + 1 points), against

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The boundary exit locator (src/trace/boundary_exit.c, pc_locate_exit)
  * called directly, from points of the projection at distances dt = 3e-2 ...

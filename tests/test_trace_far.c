@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Translation invariance of the directional projection (issue 14, defect 8).
  * The same bumpy bicubic sheet (150 units across, folded to a tilted Dir)

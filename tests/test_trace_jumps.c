@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Branches born and ending in mid-curve (seed 000 s3.4): a C-folded sheet
+ * Branches born and ending in mid-curve ([SY13] s3.4): a C-folded sheet
  * met once, then twice; the same curve past the fold (branches ending on
  * the silhouette) and reversed (born on it); a Z-folded sheet met three
  * times; a curve that runs off the surface and back on; a curve longer than

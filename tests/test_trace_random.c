@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Random configurations: bumpy bicubic surfaces (polynomial and rational)
  * with folds seen from slanted directions, random cubic curves whose rays

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Directional projection onto real CAD surfaces (tests/data/real): a
  * wavy cubic curve held above the surface's bounding box along its thinnest

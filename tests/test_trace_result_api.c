@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The result accessors on a result built by hand: branch info, points with
  * any capacity, pieces, statistics, the errors each gives, and a branch

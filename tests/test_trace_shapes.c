@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Directional projection onto shapes whose projection is known exactly:
  * a plane (an affine map of the curve), a half cylinder and a sphere (exact

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The derivative bounds of a span (trace/span_bound.h), on which the
  * corrector's one-evaluation acceptance rests: checked against central

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The verification pass (src/verify/) on results it must keep and on
  * results corrupted on purpose, white-box: a projection is made through the

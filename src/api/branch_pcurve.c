@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "api/branch_pcurve.h"
 
 #include <math.h>

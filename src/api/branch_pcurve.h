@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The pcurve of a composed branch as one B-spline: the (u, v) curves of its
  * pieces (projcurve_result_piece_pcurve, degree 1 or 3) joined over the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Public curve functions: creation (NURBS or callback), domain, evaluation,
  * NURBS data access; and pc_curve_eval, the internal evaluator of both kinds.

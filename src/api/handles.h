@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The layout behind the public opaque handles. Only the library sees it.
  */
@@ -61,7 +62,7 @@ struct projcurve_options {
      * poll it. NULL in a handle and outside a projection call: no budget. */
     pc_budget *budget;
     /* No option key, not in the public API: 1 makes the jump sweep search
-     * in full only where the criteria of seed 000 s3.4 ask (no periodic
+     * in full only where the criteria of [SY13] s3.4 ask (no periodic
      * full search), so that tests can show what the criteria alone find.
      * 0 (the default) in every projection a caller can ask for. */
     long long sweep_criteria_only;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Public IGES writer: surfaces (128), curves (126) and projection results,
  * each composed branch as its 3D curve (126), its (u, v) pcurve (126 in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve_surface_intersect_line: validation, then pc_intersect_line, then
  * the hits copied out in the public layout.

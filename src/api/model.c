@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Public model functions: read a file or a buffer, recognise the format,
  * hand it to its reader, give access to what was read.

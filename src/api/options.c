@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Options: an opaque handle of typed values, each with bounds and a default.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Public point projection: closest points on curves and surfaces, and the
  * foot points of a point on a surface.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve_project_directional: validation, then the tracing engine with
  * the directional equations and seed finder (trace/), then tolerance

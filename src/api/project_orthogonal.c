@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The two public orthogonal projections (seed 003): onto a NURBS surface
+ * The two public orthogonal projections ([PW96]): onto a NURBS surface
  * through the shared tracing / refining / composing machinery, and onto an
  * implicit surface with the 3-space tracer of ortho/implicit.h.
  */

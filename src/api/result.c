@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The result accessors of projcurve.h: branches, their traced polylines,
  * composed pieces, statistics, and a branch joined into one NURBS curve.

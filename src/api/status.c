@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Names of the status codes. The table is indexed by the enum value, so a
  * new code needs one line here; test_api_basics checks that every code up

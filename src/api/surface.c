@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Public surface functions: creation (the spline, its Bezier patch grid and
  * the patch BVH, built once), shape queries and evaluation.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The version of the library actually loaded: compiled in from the generated
  * projcurve_version.h, so that a program can compare it with the header it

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bezier decomposition of a NURBS surface: one Bezier patch per non-empty
  * knot span pair, with its homogeneous control net, parameter box, grid

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bounding-volume hierarchy over the Bezier patches of a surface.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bounding-volume hierarchy over the Bezier patches of a surface, built once
  * per surface handle. Leaves hold a few patches; boxes are the patches'

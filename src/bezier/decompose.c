@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bezier decomposition of NURBS surfaces (the patch grid) and curves.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bezier extraction: inserting every interior knot up to multiplicity p
  * turns the spline into its Bezier segments. A5.6 does it span by span in

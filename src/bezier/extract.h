@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bezier extraction of a clamped spline (The NURBS Book, A5.6), shared by
  * curve and surface decomposition.

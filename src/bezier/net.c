@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Properties of one Bezier control net that do not depend on any query:
  * its Cartesian points with their box, and its flatness. The patch grid

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Query-independent properties of a Bezier control net (net.c).
  */

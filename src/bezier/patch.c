@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The patch grid: lookup by parameter or grid position, and evaluation of a
  * Bezier patch in Bernstein form (independent of the B-spline basis code,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Tangent-vector boxes over the patch BVH (tangent_boxes.h).
  */

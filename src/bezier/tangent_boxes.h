@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Boxes of the tangent vectors Su and Sv over every node of the patch BVH
  * (bvh.h), built once per surface handle. With the node's box of S they

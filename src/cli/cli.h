@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The projcurve command: shared declarations of its parts.
  *
@@ -101,7 +102,7 @@ int cli_cmd_project(int argc, char **argv);
 int cli_cmd_demo(int argc, char **argv);
 
 /* ---- demo shapes (demo_shapes.c) ---- */
-/* Seed 000 s5, Example 1: a degree (5, 1) sheet and a cubic curve. */
+/* [SY13] s5, Example 1: a degree (5, 1) sheet and a cubic curve. */
 int cli_demo_example1(projcurve_context *ctx, projcurve_surface **s, projcurve_curve **c);
 /* A bicubic wave surface and a cubic curve above it (Dir = -z). */
 int cli_demo_freeform(projcurve_context *ctx, projcurve_surface **s, projcurve_curve **c);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve demo [-o DIR]: the paper's Example 1 and a freeform case,
  * written as DIR/example1.{igs,svg,json} and DIR/freeform.{igs,svg,json}.
@@ -11,7 +12,7 @@ static void demo_usage(FILE *out)
 {
     fputs("usage: projcurve demo [-o DIR]\n"
           "\n"
-          "Projects seed 000's Example 1 (a degree 5x1 sheet, a cubic curve, direction\n"
+          "Projects [SY13]'s Example 1 (a degree 5x1 sheet, a cubic curve, direction\n"
           "(-1,0,0)) and a freeform case (a bicubic wave, an S-shaped cubic, direction\n"
           "(0,0,-1)); writes example1.igs/.svg/.json and freeform.igs/.svg/.json to DIR\n"
           "(default: the current directory) and prints a summary of each.\n",
@@ -86,7 +87,7 @@ int cli_cmd_demo(int argc, char **argv)
     if (projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx) != PROJCURVE_OK)
         return cli_usage_error("cannot create a context");
     static const double example1_dir[3] = {-1.0, 0.0, 0.0}, freeform_dir[3] = {0.0, 0.0, -1.0};
-    int code = run_case(ctx, dir, "example1", "Seed 000 Example 1, Dir (-1,0,0)",
+    int code = run_case(ctx, dir, "example1", "[SY13] Example 1, Dir (-1,0,0)",
                         cli_demo_example1, example1_dir);
     const int code2 = run_case(ctx, dir, "freeform", "Freeform bicubic wave, Dir (0,0,-1)",
                                cli_demo_freeform, freeform_dir);

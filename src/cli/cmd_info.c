@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve info FILE: surfaces (degrees, nets, spans, rational, domain),
  * curves, and the skipped entities summarised by kind.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve project FILE... (--dir X,Y,Z | --orthogonal) [--tol D]
  *   [--angle DEG] [--pcurve-degree 1|3] [--timeout S] [-o OUT.igs] [--svg OUT.svg]

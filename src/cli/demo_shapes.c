@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The demo's shapes, built in code so the demo needs no input file.
  */
@@ -5,7 +6,7 @@
 
 #include "cli.h"
 
-/* Seed 000 s5, Example 1 (as in tests/data/cases/song_yong_example1.igs):
+/* [SY13] s5, Example 1 (as in tests/data/cases/song_yong_example1.igs):
  * a degree (5, 1) Bezier sheet spanning z in [-40, 40] near x = -90 and a
  * cubic B-spline in the plane x = 0 with interior knots 0.26 and 0.68.
  * The paper's stated direction (0, 0, -1) misses the sheet; its figure uses

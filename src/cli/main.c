@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve: project curves onto B-spline/NURBS surfaces from the command
  * line. See docs/cli.md.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "cli.h"
 
 /* Every surface that has a result, then each pair's branches (3D curve,

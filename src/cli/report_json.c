@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * JSON report:
  *   {"time_ms": T, "branches": [{"surface": i, "curve": j, "t_range": [a, b],

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * SVG picture of a projection: on the left a three-quarter view of the
  * surfaces (iso-parameter lines), the input curves, a few projection rays

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The orthogonal residual the command reports for a traced point: how far
  * S(u, v) is from being a foot point of p, in model units. Public API only,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * A bump allocator owned by one call: temporary data of a projection is
  * taken from it and released at once at the end, so error paths cannot leak

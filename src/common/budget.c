@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The work budget of one projection call (budget.h): counting, the clock,
  * the progress callback.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The work budget of one projection call: a wall-time limit
  * (PROJCURVE_OPT_TIME_LIMIT), a deterministic work limit

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Compiler hints for the hot paths: forced inlining (so that a body written
  * once for a runtime degree is specialised for constant degrees), no

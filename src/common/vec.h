@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Small vector helpers, inline so that the formulas in the numerical code
  * read like the papers' equations and cost nothing.

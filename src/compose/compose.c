@@ -1,6 +1,7 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Composition of a parameter-space line segment with a tensor-product Bezier
- * patch by blossoming (seed 000 s4, its refs [6] DeRose 1988 and [7] DeRose,
+ * patch by blossoming ([SY13] s4, its refs [6] DeRose 1988 and [7] DeRose,
  * Goldman, Hagen & Mann 1993). See docs/refine_compose.md for the derivation.
  *
  * With local patch parameters x(s) = (1-s) x0 + s x1, y(s) = (1-s) y0 + s y1

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Blossoming composer: a line segment (u, v)(s) in one Bezier patch's
  * parameter box, composed with the patch, is a Bezier curve of degree

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Composition of a polynomial parameter curve (u, v)(s), s in [0, 1], of
  * degree d (Bezier control points in (u, v)) with a tensor-product Bezier

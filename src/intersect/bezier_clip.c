@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "intersect/bezier_clip.h"
 
 #include <math.h>

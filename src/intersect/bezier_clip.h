@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bezier clipping (Nishita, Sederberg & Kakimoto 1990) of a planar Bezier
  * patch Q(s, t) = (X, Y) against the origin: the patch's net is the ray

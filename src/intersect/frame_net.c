@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "intersect/frame_net.h"
 
 #include <math.h>

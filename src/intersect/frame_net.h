@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * A Bezier patch seen from a ray: its homogeneous control net expressed in
  * the ray frame (see ray_patch.h), evaluated with first derivatives, and the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The hit list: growth, and the final pass that sorts hits by lambda, merges
  * the copies of one hit and flags the ones on the domain's boundary.

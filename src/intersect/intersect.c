@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Line / surface intersection: the BVH picks the patches whose control-net
  * boxes meet the line, each is clipped in the line's frame (ray_patch.c),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Line / surface intersection: every hit of origin + lambda * dir with a
  * NURBS surface. BVH and control-net culling choose candidate patches,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The ray frame: an orthonormal frame (e1, e2, d) on the line, the line's
  * tolerances, and a patch's control net expressed in it.

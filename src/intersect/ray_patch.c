@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "intersect/ray_patch.h"
 
 #include <math.h>
@@ -10,7 +11,7 @@
 
 /* |d . n| below this (n the unit normal) makes a hit a grazing one: there
  * the Jacobian of (d1, d2) is ~this small relative to |Su x Sv| and the
- * hit is a fold of the projection (seed 000 s3.4). */
+ * hit is a fold of the projection ([SY13] s3.4). */
 #define PC_HIT_TANGENT_COS 1e-6
 /* Subdivision stops at this depth; depth d boxes are about 2^(-d/2) wide. */
 #define PC_CLIP_MAX_DEPTH 56

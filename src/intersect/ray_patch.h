@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * One line against one Bezier patch, in the line's frame (ray_frame.h):
  * control-net culling, Bezier clipping (bezier_clip.h), certified Newton,

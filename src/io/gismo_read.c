@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * G+Smo XML geometry: <Geometry type="TensorBSpline2"> (or TensorNurbs2)
  * holding two <KnotVector degree="p"> (u then v), <coefs geoDim="3"> with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * IGES entities 100, 102, 110, 124, 126 and 128 as raw splines.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * IGES reader: sections, directory, then every entity of interest.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Layout of an IGES 5.3 file: fixed 80-column records, fields never split
  * across records, sequence numbers per section, and the terminate record

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * IGES 5.3 writing: a list of entities, each with its parameter text ready,
  * laid out as S, G, D, P and T sections at the end. Entities refer to each

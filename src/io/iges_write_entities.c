@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Parameter text of the entities the writer emits: 126 (B-spline curve) and
  * 128 (B-spline surface), from the clamped homogeneous storage of

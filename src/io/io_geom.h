@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Raw spline geometry as the readers find it in files, before it becomes a
  * surface or curve handle, and the exact conversions the readers need:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The model a reader fills: surface and curve handles plus the list of
  * entities it did not read. Readers add raw geometry (io_geom.h); the model

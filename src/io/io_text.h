@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Small text scanning helpers shared by the text readers: numbers from a
  * NUL-terminated buffer with line tracking.

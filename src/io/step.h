@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * STEP (ISO 10303-21) reading, internal pieces.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * STEP geometry: B-spline surfaces and curves (simple and complex/rational
  * forms, knots given by multiplicities or implied by BEZIER / UNIFORM /

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The Newell teapot text layout: a patch count, one line of 16 one-based
  * vertex indices per bicubic Bezier patch (4 x 4, row-major), a vertex

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * B-spline basis functions and derivatives: the generic instance of
  * basis_impl.h (The NURBS Book A2.2 and eq. 2.7).

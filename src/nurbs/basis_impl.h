@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The basis routine as an always-inlined function, so that hot callers can
  * instantiate it for a constant degree (the compiler then unrolls every loop

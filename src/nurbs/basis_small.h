@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * B-spline basis functions of small degree (<= PC_SMALL_DEGREE) for the hot
  * evaluation paths: tables sized for eight functions instead of

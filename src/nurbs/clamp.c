@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Exact conversion of unclamped (and periodic) knot vectors to clamped form
  * over the same domain, by knot insertion (Boehm; The NURBS Book A5.1).

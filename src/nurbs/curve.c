@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * NURBS curves: creation from user arrays (evaluation: curve_eval.c).
  */

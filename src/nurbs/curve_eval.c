@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * NURBS curve point and derivatives up to order 3, evaluated in the tracing
  * loop for every step. Degrees up to PC_POLY_MAX_DEGREE use the per-span

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Validation of user control points and weights, and conversion to the
  * homogeneous form (w x, w y, w z, w) every evaluation path works on.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Knot vectors: span lookup, validation of user input, size arithmetic.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * NURBS curves and surfaces: storage and evaluation with derivatives.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Per-span monomial form of a surface, for the fast evaluators.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Per-span monomial form of a surface (span_poly.c) and its evaluation by
  * Horner's scheme, the fast path of pc_nurbs_surface_eval.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * NURBS surfaces: creation from user arrays (validation, homogeneous copy,
  * exact clamping in u then in v).

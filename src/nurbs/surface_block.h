@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The tensor contraction behind every surface evaluation, as always-inlined
  * functions of the degrees, the derivative order and the width of the basis

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Surface point and partial derivatives up to order 2: the hot path of
  * tracing and of point projection.
@@ -64,7 +65,7 @@ static PC_ALWAYS_INLINE void eval_poly(const pc_nurbs_surface *s, double u, doub
 
 /* Bicubic and biquadratic are the usual CAD surfaces; bilinear and
  * cubic x linear (ruled and extruded), degree 5 x 5 and the seed paper's
- * 5 x 1 sheet (seed 000, Example 1) come with the test cases. */
+ * 5 x 1 sheet ([SY13], Example 1) come with the test cases. */
 PC_EVAL_DEGREES(3, 3)
 PC_EVAL_DEGREES(2, 2)
 PC_EVAL_DEGREES(1, 1)

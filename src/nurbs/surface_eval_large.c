@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Surface evaluation for degrees above PC_SMALL_DEGREE, and the contraction
  * of a block with given basis tables (shared with Bezier patch evaluation):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Surface evaluation for degrees above PC_SMALL_DEGREE (surface_eval_large.c).
  */

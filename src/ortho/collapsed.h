@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Degenerate points of a parametrisation: where one partial derivative of
  * S(u, v) vanishes although the surface is regular there. An exact NURBS

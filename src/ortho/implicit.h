@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Orthogonal projection onto an implicit surface f(x) = 0 (seed 003 s5),
+ * Orthogonal projection onto an implicit surface f(x) = 0 ([PW96] s5),
  * traced in 3-space.
  *
  * With g = grad f, H its Hessian, n = g / |g| and the signed distance

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include <float.h>
 #include <math.h>
 
@@ -120,7 +121,7 @@ projcurve_status pc_implicit_velocity(projcurve_context *ctx, const pc_implicit 
 
     const double gn = vec3_norm(e.grad);
     const pc_vec3 n = vec3_scale(e.grad, 1.0 / gn);
-    const double rho = vec3_dot(vec3_sub(p[0], x), n);   /* seed 003 eq. (21) */
+    const double rho = vec3_dot(vec3_sub(p[0], x), n);   /* [PW96] eq. (21) */
     const double nv[3] = {n.x, n.y, n.z};
     /* K = I - rho B with B = (n n^T - I) H / |g| (eq. (29), (30)). */
     double k[9];

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
 
 #include "common/error.h"
@@ -184,7 +185,7 @@ static projcurve_status step(projcurve_context *ctx, trace_run *run, pc_implicit
         centre_seen = centre_seen || a.index_changed;
         if (a.accepted) {
             /* Estimation error relative to the model size, as the engine's
-             * statistics (the analogue of seed 000 eq. (3.8)). */
+             * statistics (the analogue of [SY13] eq. (3.8)). */
             const double rel = a.err / run->imp.model_size;
             run->stats->error_sum += rel;
             run->stats->error_count += 1.0;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "ortho/ortho_centres.h"
 
 #include <math.h>

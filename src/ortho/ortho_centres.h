@@ -1,7 +1,8 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Centres of curvature inside traced branches of the parametric orthogonal
  * projection. The tracing engine ends a branch where det K changes sign
- * (seed 003 s6); an even change of the Morse index (an umbilic, e.g. P
+ * ([PW96] s6); an even change of the Morse index (an umbilic, e.g. P
  * crossing the centre of a sphere: det K touches zero without changing
  * sign) can be stepped over. This pass finds such crossings between
  * consecutive vertices, locates them by bisection in t, and splits the

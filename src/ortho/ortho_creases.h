@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Creases of the parametric orthogonal projection: interior knot lines
  * where S is only C0 (a knot of multiplicity >= the degree; every interior

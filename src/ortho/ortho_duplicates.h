@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Branches of the parametric orthogonal projection that carry nothing of
  * their own, removed after tracing and the split at centres of curvature:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "ortho/ortho_minima.h"
 
 #include "ortho/ortho_projector.h"

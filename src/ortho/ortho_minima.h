@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Which foot points the orthogonal projection returns
  * (PROJCURVE_OPT_FOOT_POINTS). By default only the local minima of the

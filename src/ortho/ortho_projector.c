@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "ortho/ortho_projector.h"
 
 #include <float.h>
@@ -38,7 +39,7 @@
 
 static double clamp(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
-/* K of seed 003 eq. (5) and F of eq. (10) from S, Su, Sv, Suu, Suv, Svv. */
+/* K of [PW96] eq. (5) and F of eq. (10) from S, Su, Sv, Suu, Suv, Svv. */
 static void tensor_and_residual(const pc_vec3 *s, pc_vec3 p, double k[4], double f[2])
 {
     const pc_vec3 d = vec3_sub(s[PC_D3_S], p);
@@ -169,9 +170,9 @@ static int eval_curve(const pc_projector *self, double t, int n_deriv, pc_vec3 *
     return 1;
 }
 
-/* Newton on F(., ., t) = 0 with the full Jacobian K (seed 003 eq. (14)):
+/* Newton on F(., ., t) = 0 with the full Jacobian K ([PW96] eq. (14)):
  * delta = -K^-1 F. Converged when the 3D length of the step and the
- * tangential distance are both within newton_tol (seed 000 s3.3 criteria;
+ * tangential distance are both within newton_tol ([SY13] s3.3 criteria;
  * the distance within newton_tol plus its rounding floor, which matters
  * only near a collapsed edge), or when the convergence seen so far is
  * quadratic and predicts that the step just taken leaves an error far
@@ -271,7 +272,7 @@ static void second_derivative_rhs(const pc_vec3 *s, const pc_vec3 p[3], const do
                                   dv * dv, s[PC_D3_VVV]);
     const pc_vec3 accel = vec3_sub(p[2], c);   /* P'' - C */
     const pc_vec3 slip = vec3_sub(p[1], w);    /* P' - w */
-    /* seed 003 eq. (15) differentiated in t; see docs/orthogonal.md. */
+    /* [PW96] eq. (15) differentiated in t; see docs/orthogonal.md. */
     rhs[0] = vec3_dot(s[PC_D3_U], accel) + 2.0 * vec3_dot(a_u, slip) - vec3_dot(d, t_u);
     rhs[1] = vec3_dot(s[PC_D3_V], accel) + 2.0 * vec3_dot(a_v, slip) - vec3_dot(d, t_v);
 }
@@ -385,7 +386,7 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
         return collapsed_derivatives(self, sd, p, k, c, out);
     out->det = normalized_det(sd, k);
 
-    /* seed 003 eq. (16): q' = K^-1 [P'.Su; P'.Sv]. */
+    /* [PW96] eq. (16): q' = K^-1 [P'.Su; P'.Sv]. */
     const double b[2] = {vec3_dot(p[1], sd[PC_D3_U]), vec3_dot(p[1], sd[PC_D3_V])};
     double qd[2], qdd[2];
     if (!(fabs(out->det) > ORTHO_DET_SINGULAR) || !mat2_solve(k[0], k[1], k[2], k[3], b, qd))

@@ -1,9 +1,10 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The equations of the orthogonal projection onto a parametric surface
- * (seed 003 s4), as a pc_projector for the generic tracing machinery.
+ * ([PW96] s4), as a pc_projector for the generic tracing machinery.
  *
  * A foot point q = (u, v) of P(t) solves
- *     F(u, v, t) = [(S - P).Su, (S - P).Sv] = 0            (seed 003 eq. (10))
+ *     F(u, v, t) = [(S - P).Su, (S - P).Sv] = 0            ([PW96] eq. (10))
  * whose Jacobian in (u, v) is the orthogonal projective tensor
  *     K_ij = S_i.S_j + (S - P).S_ij                          (eq. (5), (14))
  * so that K q' = [P'.Su, P'.Sv]                               (eq. (15), (16)).

@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Where branches of the orthogonal projection are (seed 003 s4.2): every
+ * Where branches of the orthogonal projection are ([PW96] s4.2): every
  * local foot point of P(t) on S, as a pc_seed_finder for the tracing
  * engine. At the start of the curve the foot points are the seeds; in
  * mid-curve, branches are born where P(t) crosses the focal surface (two

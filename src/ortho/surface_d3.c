@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "ortho/surface_d3.h"
 
 #include "nurbs/span_poly.h"

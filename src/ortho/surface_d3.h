@@ -1,7 +1,8 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * NURBS surface point with every partial derivative up to total order 3.
  *
- * The orthogonal projection's second-order predictor needs q'' (seed 003
+ * The orthogonal projection's second-order predictor needs q'' ([PW96]
  * eq. (16) differentiated once more), which contains the third partial
  * derivatives of S: the time derivative of the projective tensor
  * K_ij = S_i.S_j + (S - P).S_ij involves (S - P).S_ijk. nurbs/ evaluates up

@@ -1,7 +1,8 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Closest point of a curve to a point (seed 004).
+ * Closest point of a curve to a point ([Ook]).
  *
- * Seed 004 finds the zero of d(t) = C'(t).(C(t) - p) by Newton from one
+ * [Ook] finds the zero of d(t) = C'(t).(C(t) - p) by Newton from one
  * start. To get the global minimum, NURBS curves are cut into Bezier
  * segments visited nearest first; each is subdivided while a piece may
  * still beat the best distance (its control polygon's box is nearer) and

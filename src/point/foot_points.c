@@ -1,6 +1,7 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Every interior foot point of a point on a surface: the seeds of the
- * orthogonal projection (seed 003), which must not miss a branch.
+ * orthogonal projection ([PW96]), which must not miss a branch.
  *
  * Every patch is subdivided (those of BVH nodes where the tangent boxes
  * prove that (S - p).Su or (S - p).Sv keeps one sign are skipped whole,

@@ -1,9 +1,10 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Point projection (seed 004 and its surface analogue): closest points of
+ * Point projection ([Ook] and its surface analogue): closest points of
  * curves and surfaces, and every foot point of a point on a surface.
  *
  * A foot point of p on S is a (u, v) where S - p is normal to S:
- *     G(u, v) = [(S - p).Su, (S - p).Sv] = 0        (seed 004, d(u) = 0, in 2D)
+ *     G(u, v) = [(S - p).Su, (S - p).Sv] = 0        ([Ook], d(u) = 0, in 2D)
  * The closest point is the least distant of the interior foot points and
  * the minima along the boundary. Both searches walk the Bezier patches
  * (near first, through the BVH) and subdivide them, discarding sub-patches

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bezier patch subdivision walk and the culling tests used by point
  * projection.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Recursive subdivision of one Bezier patch without recursion: a depth-first
  * walk over quarter sub-patches kept on a small stack of control nets, with

@@ -1,8 +1,9 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Local solvers for point projection onto a surface: Newton on the foot
  * point equations G = 0, and a bound-constrained minimiser of the distance.
  *
- * With r = S - p, D = |r|^2 / 2 has gradient G = [r.Su, r.Sv] (seed 004:
+ * With r = S - p, D = |r|^2 / 2 has gradient G = [r.Su, r.Sv] ([Ook]:
  * d(u) = R'(u).(R(u) - r), here in two parameters) and Hessian
  *     H = [[Su.Su + r.Suu, Su.Sv + r.Suv], [Su.Sv + r.Suv, Sv.Sv + r.Svv]].
  * Newton solves H delta = -G. H is singular where p is a centre of

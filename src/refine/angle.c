@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Angle control (seed 000 s2 step 4): the pieces meet with eps_T-G1
+ * Angle control ([SY13] s2 step 4): the pieces meet with eps_T-G1
  * continuity, i.e. the end tangents of adjacent composed pieces differ by at
  * most eps_T. Each piece's end tangent deviates from the exact projection's
  * tangent at the joint by about half its turning angle, which halves when the

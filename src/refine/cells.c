@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Knot lines of S (seed 000 s4): a composed piece is exact only inside one
+ * Knot lines of S ([SY13] s4): a composed piece is exact only inside one
  * Bezier patch, so every segment is split where its chord meets a knot line.
  * The split vertex is put on the projection curve and exactly on the knot
  * line, so the two sub-chords lie in closed patch boxes. When the corrector

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Cubic pcurves: the piece between two exact points a, b of the projection
  * q(t) = (u, v)(t) is the cubic Hermite interpolant

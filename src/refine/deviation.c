@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Hausdorff control (seed 000 s2 step 3, s4; the method of its ref. [13]):
+ * Hausdorff control ([SY13] s2 step 3, s4; the method of its ref. [13]):
  * the distance between the composed piece C(s) = S(uv(s)) of a segment and
  * the exact projection Q(t) = S(q(t)) over the same parameter range.
  *

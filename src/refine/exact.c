@@ -1,6 +1,7 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Exact points of the projection curve, reached point by point through the
- * projector's corrector (seed 000 s4: "discrete points are sampled ... on
+ * projector's corrector ([SY13] s4: "discrete points are sampled ... on
  * q(t)"). The corrector converges from a guess close to the curve; the guess
  * is the linear interpolation, in t, of the two closest known exact points
  * around t: the ends of the segment being refined, or the traced vertices
@@ -16,7 +17,7 @@
 #define PC_EXACT_MAX_JUMP 2.0
 
 /* q(t) by the cubic Hermite interpolant of the exact ends a and b with
- * their derivatives q' (seed 000 s3.2 uses the same Taylor data to predict). */
+ * their derivatives q' ([SY13] s3.2 uses the same Taylor data to predict). */
 static void hermite_guess(const pc_rvertex *a, const pc_rvertex *b, double t, double uv[2])
 {
     const pc_rvertex *lo = a->t <= b->t ? a : b, *hi = a->t <= b->t ? b : a;

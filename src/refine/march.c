@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Choosing the vertices: a march along the exact projection with step
  * control, as an adaptive ODE integrator controls its step. From the current
@@ -6,7 +7,7 @@
  *   - its composed image is within eps_D of the exact curve (deviation.c),
  *   - each of its end tangents is within eps_T / 2 of the exact tangent
  *     there, so that at every joint the two pieces' tangents differ by at
- *     most eps_T (triangle inequality on angles: eps_T-G1, seed 000 s2
+ *     most eps_T (triangle inequality on angles: eps_T-G1, [SY13] s2
  *     step 4),
  * and the next h is predicted from how far the candidate was from the
  * bounds: the distance grows as h^2 and the tangent error as h for a smooth

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The march of march.c with cubic Hermite pcurves (cubic.c): from the
  * current vertex, a candidate piece of parameter length h ends at the exact

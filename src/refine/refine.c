@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Tolerance control and composition of traced branches (seed 000 s2 steps
+ * Tolerance control and composition of traced branches ([SY13] s2 steps
  * 3-5, s4). For each branch:
  *   1. the traced polyline gets an exact vertex wherever it crosses a knot
  *      line of S (cells.c, split.c), so that every chord lies in one Bezier

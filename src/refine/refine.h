@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Tolerance control (seed 000 s2 steps 3-5, s4) of traced branches, then
+ * Tolerance control ([SY13] s2 steps 3-5, s4) of traced branches, then
  * composition onto the surface. Independent of the kind of projection: the
  * exact projection curve is reached point by point through the projector.
  */

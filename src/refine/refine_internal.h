@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Shared state of the tolerance control of one branch (refine/). The stages,
  * each in its own file:

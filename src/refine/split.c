@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The subdivision loop shared by every stage: a segment is split at the
  * first knot line its chord crosses (so that each piece lies in one patch),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Growable vertex lists of the refinement. Growth doubles the capacity, so a
  * branch of n vertices costs O(log n) allocations, none per vertex.

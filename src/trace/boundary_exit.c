@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Locating where a branch leaves the surface's domain (seed 000 s3.4, the
+ * Locating where a branch leaves the surface's domain ([SY13] s3.4, the
  * boundary case of jumping). The crossing parameter solves
  * side(q(t)) = boundary value; each iteration predicts it from the
  * second-order Taylor model at the farthest point known inside (so the

@@ -1,6 +1,7 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The driver of the tracing engine (trace.h): seeds at the start of the
- * curve, one traced branch per seed, then the sweep over t of seed 000
+ * curve, one traced branch per seed, then the sweep over t of [SY13]
  * s3.4 that finds the branches born in mid-curve. A branch found by the
  * sweep is traced backwards first, to where it was born (a boundary entry,
  * a fold, or the start of the curve), then forwards to its end.
@@ -324,7 +325,7 @@ static void drop_coincident(const pc_tracer *tr, pc_seed_list *list)
     list->count = kept;
 }
 
-/* Seed 000 s3.4 over the whole curve. */
+/* [SY13] s3.4 over the whole curve. */
 static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
 {
     pc_seed_list active = {0}, found = {0};

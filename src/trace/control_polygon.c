@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Ray / control-polygon hits (Moller-Trumbore on each triangle of the net).
  */

@@ -1,6 +1,7 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Rays against the control polygon of a Bezier patch (its control net split
- * into triangles), used by seed 000 s3.3 (estimating the projection's length)
+ * into triangles), used by [SY13] s3.3 (estimating the projection's length)
  * and s3.4 (the jump criteria count these hits).
  */
 #ifndef PC_TRACE_CONTROL_POLYGON_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Where a branch of a ray projection meets the curve. A point q of the
  * directional projection is one only when it lies on the ray from P(t):

@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Directional projection equations (seed 000 s3.2-s3.3) in the frame form of
+ * Directional projection equations ([SY13] s3.2-s3.3) in the frame form of
  * DESIGN.md: G(u, v, t) = [e1.(S - P); e2.(S - P)] with (e1, e2) an
  * orthonormal pair perpendicular to Dir. G = 0 is the paper's (3.1); its
  * Jacobian J = [e_i.Su, e_i.Sv] has det J = Dir.(Su x Sv), so it is singular
@@ -297,7 +298,7 @@ static int final_step(const pc_projector *self, double h, const double g[2], con
     const double moved2 = vec3_dot(image, image);
     *nu = c->u + step[0];
     *nv = c->v + step[1];
-    if (moved2 <= eps1 * eps1) /* seed 000 s3.3 test 1 */
+    if (moved2 <= eps1 * eps1) /* [SY13] s3.3 test 1 */
         return 1;
     const pc_span_bound_entry *bound = span_bound(self);
     const double *m3 = bound != NULL ? bound->m3 : NULL;
@@ -326,7 +327,7 @@ static int final_step(const pc_projector *self, double h, const double g[2], con
     return moved2 <= regime * regime && vec3_dot(left, left) <= safe * safe;
 }
 
-/* Newton on G = 0 at fixed t (seed 000 s3.3, with the frame form of (3.9)),
+/* Newton on G = 0 at fixed t ([SY13] s3.3, with the frame form of (3.9)),
  * for a guess predicted over the curve step h (0: any other guess).
  * Stops on any of the paper's three tests: the step's image
  * |du Su + dv Sv| <= eps1, |S - P| <= eps1, or the sine
@@ -355,7 +356,7 @@ static int newton(const pc_projector *self, double t, double h, double uv[2], in
         const double g[2] = {vec3_dot(d->e1, diff), vec3_dot(d->e2, diff)};
         const double res2 = g[0] * g[0] + g[1] * g[1]; /* |Dir x (S - P)|^2 */
         const double dist2 = vec3_dot(diff, diff);
-        if (it == 0) /* seed 000 eq. (3.8) */
+        if (it == 0) /* [SY13] eq. (3.8) */
             d->cache->guess_error = dist2 > 0.0 ? sqrt(res2 / dist2) : 0.0;
         if (res2 <= eps1 * eps1 || dist2 <= eps1 * eps1 || res2 * size2 <= eps1 * eps1 * dist2) {
             converged = 1;
@@ -403,7 +404,7 @@ static int dir_correct(const pc_projector *self, double t, double uv[2], int *it
 /* q' and q'' from differentiating G(q(t), t) = 0 once and twice:
  *   J q'  = [e_i.P']
  *   J q'' = [e_i.P''] - [e_i.(Suu u'^2 + 2 Suv u'v' + Svv v'^2)]
- * (DESIGN.md; equal to seed 000 eqs. (3.2), (3.3)). */
+ * (DESIGN.md; equal to [SY13] eqs. (3.2), (3.3)). */
 static int dir_derivatives(const pc_projector *self, double t, double u, double v,
                            pc_proj_point *out)
 {

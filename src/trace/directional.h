@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The equations of the directional projection (seed 000 s3.2-s3.3) as a
+ * The equations of the directional projection ([SY13] s3.2-s3.3) as a
  * pc_projector. With an orthonormal pair (e1, e2) perpendicular to Dir, the
  * projection q(t) = (u, v) solves G(u, v, t) = [e1.(S - P); e2.(S - P)] = 0
  * (equivalent to the paper's (3.1)/(3.9); see docs/tracing.md).
@@ -31,7 +32,7 @@ typedef struct pc_directional_cache {
     int bound_state;
     const pc_span_bound_entry *bound;
     pc_span_bound_table bounds;
-    double guess_error;        /* seed 000 eq. (3.8) of the last guess */
+    double guess_error;        /* [SY13] eq. (3.8) of the last guess */
     int callback_failed;       /* a curve callback failed at some point */
 } pc_directional_cache;
 
@@ -42,7 +43,7 @@ typedef struct pc_directional_data {
 
 /* Fills proj for the projection of curve onto surface along unit_dir (unit
  * length, checked by the caller). data and cache must outlive proj.
- * newton_tol_rel is relative to the surface size (seed 000 s3.3 eps1, eps2). */
+ * newton_tol_rel is relative to the surface size ([SY13] s3.3 eps1, eps2). */
 void pc_directional_init(pc_projector *proj, pc_directional_data *data,
                          pc_directional_cache *cache, const projcurve_surface *surface,
                          const projcurve_curve *curve, pc_vec3 unit_dir,

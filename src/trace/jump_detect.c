@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Jump detection, seed 000 s3.4: deciding cheaply, at each check of the
+ * Jump detection, [SY13] s3.4: deciding cheaply, at each check of the
  * sweep, whether the ray L2 through P(t) may meet S where no traced branch
  * is (a branch born in mid-curve) or may have lost a hit (a branch that left
  * S), and matching the points found by a full search to the active

@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The estimate of the projection's total arc length of seed 000 s3.3: the
+ * The estimate of the projection's total arc length of [SY13] s3.3: the
  * curve's polyline projected along Dir onto the control polygons of the
  * Bezier patches (planar triangles, so each sample is a ray/triangle
  * test). The arc-length step is a fraction of it.

@@ -1,6 +1,7 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Seeds of the directional projection: the hits of the ray P(t) + lambda Dir
- * with S (seed 000 s3.1 steps 1-3: candidate patches by their control
+ * with S ([SY13] s3.1 steps 1-3: candidate patches by their control
  * polygons' boxes, line/surface intersection, lambda > 0), each polished by
  * the tracing corrector so that it satisfies exactly the equations traced.
  */

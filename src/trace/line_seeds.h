@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The seed finder of the directional projection (seed 000 s3.1, s3.4): the
+ * The seed finder of the directional projection ([SY13] s3.1, s3.4): the
  * points of the projection at P(t) are the hits of the ray P(t) + lambda Dir
  * (lambda > 0) with S; the jump criteria compare the ray's hits with the
  * control polygons of the patches against the previous ray's.
@@ -30,7 +31,7 @@ typedef struct pc_line_finder {
     pc_vec3 dir;               /* unit projection direction */
     pc_hit_list hits;          /* scratch of find() */
     size_t curve_hint;
-    /* Jump criteria state (seed 000 s3.4): control-polygon hits of the
+    /* Jump criteria state ([SY13] s3.4): control-polygon hits of the
      * previous ray L1 and of the current ray L2, and the patches the BVH
      * returned for L2. */
     pc_polygon_hits l1, l2;
@@ -48,7 +49,7 @@ typedef struct pc_line_finder {
 void pc_line_finder_init(pc_line_finder *f, const pc_projector *proj, pc_vec3 unit_dir);
 void pc_line_finder_free(pc_line_finder *f);
 
-/* The jump criteria of seed 000 s3.4 (jump_detect.c), the finder's
+/* The jump criteria of [SY13] s3.4 (jump_detect.c), the finder's
  * may_jump and reset. */
 int pc_line_may_jump(pc_seed_finder *self, double t, const pc_seed *active, size_t n_active,
                      double ds);
@@ -59,7 +60,7 @@ void pc_line_jump_reset(pc_seed_finder *self);
  * f->no_memory) when memory ran out. Also used by the length estimate. */
 int pc_line_polygon_hits(pc_line_finder *f, pc_vec3 origin, pc_polygon_hits *out);
 
-/* The projection's arc length estimated as in seed 000 s3.3 (the curve's
+/* The projection's arc length estimated as in [SY13] s3.3 (the curve's
  * polyline projected onto the patches' control polygons); 0 when no
  * sample meets them (length_estimate.c). */
 double pc_directional_length_estimate(pc_line_finder *f);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The rounding floor of a projection's tolerances (precision.h).
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The precision a projection can reach: its coordinates are doubles, so
  * S(u, v) - P(t) is known only to a few ulps of the largest coordinate, not

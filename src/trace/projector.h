@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * What the kind of projection (directional, orthogonal) contributes to the
  * generic machinery: the equations. trace/, refine/ and compose/ only talk to
@@ -26,7 +27,7 @@ typedef struct pc_proj_point {
                           a centre of curvature */
     pc_vec3 s;         /* S(u, v) */
     pc_vec3 p;         /* P(t) */
-    double speed;      /* |Q'(t)| = |Su u' + Sv v'| in model units (seed 000
+    double speed;      /* |Q'(t)| = |Su u' + Sv v'| in model units ([SY13]
                           eq. (3.6)), for the arc-length step (3.7); 0 when
                           unknown (the engine then measures it itself) */
 } pc_proj_point;
@@ -67,7 +68,7 @@ struct pc_projector {
     double (*residual)(const pc_projector *self, double t, double u, double v);
     const void *data;      /* kind-specific (direction frame, ...) */
     /* Optional (may be NULL): correct() stores here the estimation error of
-     * its initial guess, seed 000 eq. (3.8) for the directional kind (the
+     * its initial guess, [SY13] eq. (3.8) for the directional kind (the
      * sine of the angle between Dir and S(guess) - P). The engine averages
      * it into the statistics; when NULL it uses residual() / model_size. */
     double *guess_error;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Allocation helpers of the projection result (result.h). Arrays grow by
  * doubling so that appending a traced vertex costs O(1) amortised; every

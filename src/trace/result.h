@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The projection result: branches of traced points, the composed pieces, and
  * statistics. Built by trace/ (points), refine/ and compose/ (pieces), read
@@ -36,7 +37,7 @@ typedef struct pc_branch {
 typedef struct pc_stats {
     double points, steps, newton_iterations, jumps, pieces;
     double error_sum, error_max; /* estimation error of each corrected step:
-                                    seed 000 eq. (3.8) (the projector's
+                                    [SY13] eq. (3.8) (the projector's
                                     guess_error) */
     double error_count;          /* steps summed into error_sum */
     double tol_distance;

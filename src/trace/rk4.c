@@ -1,8 +1,9 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The first-order baseline: the ODE q' = f(t, q) of Wang, Wei & Zhang 2010
- * (seed 000 eq. (3.2), its reference [16]) integrated with the classical
+ * ([SY13] eq. (3.2), its reference [16]) integrated with the classical
  * fourth-order Runge-Kutta scheme. The corrector that follows is the same
- * Newton as for the second-order tracer, as in seed 000 s5 (Table 1).
+ * Newton as for the second-order tracer, as in [SY13] s5 (Table 1).
  */
 #include "trace/tracer.h"
 

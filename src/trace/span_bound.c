@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Second- and third-derivative bounds of a polynomial B-spline surface over
  * one span (span_bound.h). The derivative of a degree-p B-spline with knots U and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Bounds of the third partial derivatives of a polynomial B-spline surface
  * over one knot span. The corrector uses them to bound the cubic Taylor

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The per-call table of span derivative bounds (span_bound_table.h).
  */

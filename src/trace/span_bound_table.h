@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The derivative bounds of the knot spans a projection visits
  * (span_bound.h), kept for the whole call: the corrector asks for the bound

@@ -1,14 +1,15 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The generic tracing engine (seed 000 s3): it follows every branch of a
+ * The generic tracing engine ([SY13] s3): it follows every branch of a
  * projection curve q(t) = (u(t), v(t)) with a predictor (second-order Taylor,
- * seed 000 eq. (3.5), or classical RK4 on q' for the first-order baseline of
+ * [SY13] eq. (3.5), or classical RK4 on q' for the first-order baseline of
  * the paper's reference [16]) and the projector's Newton corrector, with a
  * constant arc-length (or constant parameter) step. It knows nothing of the
  * kind of projection: the equations come from a pc_projector, the points
  * where branches start come from a pc_seed_finder.
  *
  * Branches are traced one at a time, forward in t, and a sweep over t then
- * looks for branches born in mid-curve (seed 000 s3.4): at each check the
+ * looks for branches born in mid-curve ([SY13] s3.4): at each check the
  * finder's cheap test decides whether a full search is needed, every point
  * found is matched to the active branches within the arc-length step, and
  * each unmatched point starts a new branch, traced back to where it was born
@@ -47,7 +48,7 @@ void pc_seed_list_free(pc_seed_list *list);
  *   or CALLBACK.
  *
  * may_jump (may be NULL: a full find at every check): the cheap test run at
- *   each check of the sweep, seed 000 s3.4. `active` holds the current point
+ *   each check of the sweep, [SY13] s3.4. `active` holds the current point
  *   of every branch alive at t (n_active may be 0); ds is the arc-length
  *   step. Returns 1 when a branch may have been born (or lost) since the
  *   previous call, so that find must run at t. The finder may keep state
@@ -68,7 +69,7 @@ struct pc_seed_finder {
 
 /* Settings of one tracing run, derived from the options by the caller. */
 typedef struct pc_trace_config {
-    /* Estimated total arc length of the projection (seed 000 s3.3); the
+    /* Estimated total arc length of the projection ([SY13] s3.3); the
      * arc-length step is opts->arc_step_fraction times it. <= 0: the
      * engine uses the length of the curve's control polygon. */
     double length_estimate;

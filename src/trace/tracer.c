@@ -1,5 +1,6 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * One branch, one direction: the loop of seed 000 s3 steps 2-4. At the
+ * One branch, one direction: the loop of [SY13] s3 steps 2-4. At the
  * current point the projector gives q', q''; the step h comes from the
  * constant arc length ds (eq. (3.7), h = ds / |Q'|) or the constant
  * parameter step; the predictor (Taylor (3.5) or RK4) estimates q(t + h) and
@@ -86,7 +87,7 @@ static double nominal_step(const pc_tracer *tr, const pc_proj_point *cur)
     double speed = cur->speed;
     if (!(speed > 0.0) || !isfinite(speed))
         return tr->max_step;
-    const double h = tr->ds / speed; /* seed 000 eq. (3.7) */
+    const double h = tr->ds / speed; /* [SY13] eq. (3.7) */
     return h < tr->max_step ? h : tr->max_step;
 }
 
@@ -97,7 +98,7 @@ static int crosses_fold(const pc_proj_point *a, const pc_proj_point *b)
 }
 
 /* Adds the estimation error of an accepted step to the statistics: the
- * projector's own measure (seed 000 eq. (3.8) for the directional kind), or
+ * projector's own measure ([SY13] eq. (3.8) for the directional kind), or
  * the residual at the guess relative to the model size. */
 static void record_error(pc_tracer *tr, double residual_error)
 {
@@ -258,7 +259,7 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
         *why = PROJCURVE_END_CURVE_CROSSING;
         return PROJCURVE_OK;
     }
-    double scale = 1.0; /* halvings after failed corrections, seed 000 s3.3 */
+    double scale = 1.0; /* halvings after failed corrections, [SY13] s3.3 */
     /* Each pass adds a vertex or halves the step. Vertices are bounded by
      * the budget, and consecutive halvings by min_step (max_step / min_step
      * < 2^60), so this bound is never the one hit. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Internals of the tracing engine shared by the files of trace/: the state
  * of one tracing run, the single-branch tracer, the predictors and the
@@ -80,7 +81,7 @@ static inline int pc_tracer_budget_spent(pc_tracer *tr, double t)
 projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction, double t_stop,
                               int add_seed, pc_branch *b, projcurve_branch_end *why);
 
-/* Second-order Taylor predictor, seed 000 eq. (3.5): q(t + h) ~ q(t) +
+/* Second-order Taylor predictor, [SY13] eq. (3.5): q(t + h) ~ q(t) +
  * q'(t) h + q''(t) h^2 / 2. (Inline: it is a few flops per traced point.) */
 static inline void pc_predict_taylor(const pc_proj_point *pt, double h, double uv[2])
 {
@@ -89,7 +90,7 @@ static inline void pc_predict_taylor(const pc_proj_point *pt, double h, double u
     uv[1] = pt->v + pt->dv * h + pt->ddv * half_h2;
 }
 
-/* Classical RK4 on the first-order system q' = f(t, q) (seed 000 eq. (3.2),
+/* Classical RK4 on the first-order system q' = f(t, q) ([SY13] eq. (3.2),
  * the method of its reference [16]). Returns 0 when f cannot be evaluated. */
 int pc_predict_rk4(const pc_projector *proj, const pc_proj_point *pt, double h, double uv[2]);
 
@@ -126,7 +127,7 @@ int pc_locate_crossing(pc_tracer *tr, const pc_proj_point *front, const pc_proj_
  * that side's width (0 on the boundary). */
 double pc_domain_margin(const double dom[4], double u, double v);
 
-/* Seed 000 s3.4 matching: each active point (a branch's current point)
+/* [SY13] s3.4 matching: each active point (a branch's current point)
  * takes the nearest found point within ds (distance on S) not taken yet;
  * matched[k] (n_found entries) is set to 1 for the found points taken, so
  * that the others start new branches. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The verification pass (verify.h): the driver. Each branch is checked item
  * by item — its pieces when it has them, else the segments of its polyline —

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The verification pass (issue 14): run on every projection result before it
  * is returned, independent of how the branches were made. A branch is

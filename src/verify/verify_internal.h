@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The checks of one branch (verify_piece.c), used by the driver verify.c.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The checks of the verification pass (verify.h) for one vertex and one
  * composed piece.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Shows that abi/check.sh can fail: the stored baseline compared with itself
 # passes, and with copies of it that remove a function or change an
 # enumerator's value fails. Exit 77 when abidiff is missing.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The shared library exports the public API and nothing else, and carries the
 # SONAME libprojcurve.so.<major>.
 # Usage: check_exports.sh path/to/libprojcurve.so MAJOR

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """End-to-end checks of the projcurve command.
 
 usage: check_cli.py PART PROJCURVE TEST_DATA_DIR WORK_DIR

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """An independent reader and evaluator of the IGES entities projcurve writes.
 
 The end-to-end checks use it to judge the written branches without the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """What `projcurve info` should print about a file's surfaces, found here
 without the library: for each surface, in the order the readers keep
 (IGES directory order, STEP instance order, G+Smo document order, teapot

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /* libFuzzer target: the IGES 5.3 reader on arbitrary bytes. It must return
  * OK or an error with a message, never crash, hang or leak. */
 #include <stdint.h>

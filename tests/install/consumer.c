@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * A program that uses the installed libprojcurve the way an application
  * would: only <projcurve.h>, linked against the installed library. It checks

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 // The C++ view of the installed libprojcurve: the header must compile as
 // C++ (extern "C", no C-only constructs) and link without name mangling.
 #include <projcurve.h>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Installs the build tree into a temporary prefix, then builds and runs the
 # consumers in this directory against the installed files only:
 #   1. through pkg-config (C and C++, shared library, strict warnings),

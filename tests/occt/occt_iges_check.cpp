@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 // Open CASCADE reads the IGES files libprojcurve writes.
 //
 // Writes (1) two surfaces and a curve, (2) a surface with a hand-made

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Drive the installed libprojcurve.so through ctypes, as an FFI user would.
 
 Usage:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Runs a piece of test code in a forked child process with a CPU-time
  * guard, a wall-clock backstop and an address-space limit, so that a call

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Minimal test harness: checks print the inputs, expected and actual values
  * and count failures; a test program returns pc_test_finish().

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * A brute-force oracle for the closest point of a surface: dense sampling,
  * then a pattern search from every local minimum of the samples. It uses

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * An independent oracle for spline evaluation: de Boor's algorithm on the
  * raw (possibly unclamped) user data, for points and, on the differentiated

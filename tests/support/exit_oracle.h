@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Where a directional projection curve crosses the boundary of the
  * surface's domain, found independently of the tracer's exit locator

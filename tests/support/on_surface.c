@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Pieces against S at their pcurves: see on_surface.h. Nothing here is
  * shared with compose/ (which builds the pieces from blossoms and Bernstein

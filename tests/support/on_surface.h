@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Composed pieces against the surface, through the public API only: every
  * piece of a result, read with projcurve_result_piece, is evaluated by de

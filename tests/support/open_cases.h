@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The list of open cases of a sweep test: cases known to fail today, each
  * with the failure classes it is allowed (tests/realdata_open.tsv). A listed

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Oracles for projection results: see piece_oracle.h. Evaluation goes through
  * the public API only, and pieces are evaluated by Bernstein sums, so nothing
@@ -124,7 +125,7 @@ void pc_oracle_projector(const projcurve_surface *s, const projcurve_curve *c, c
     proj->data = d;
 }
 
-/* Orthogonal projection (DESIGN.md, seed 003 eq. 5-6): F = [(S - P).Su;
+/* Orthogonal projection (DESIGN.md, [PW96] eq. 5-6): F = [(S - P).Su;
  * (S - P).Sv] = 0, K = [g_ij + (S - P).S_ij], q' = K^-1 [P'.Su; P'.Sv]. */
 static void ortho_system(const pc_vec3 s[6], pc_vec3 p, double k[4])
 {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Test oracles for projection results, independent of the library's
  * refinement code:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Brute-force line / surface intersection for tests, independent of the
  * library's Bezier clipping: a dense triangulation of the surface (blocks of

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Analytic shapes as exact NURBS, for tests: circles, spheres, cylinders,
  * tori (rational quadratic, exact to rounding), planes and random bumpy

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * An independent verifier of one projection result, for the real-data
  * sweep (tests/test_realdata_sweep.c). It uses the public API only and

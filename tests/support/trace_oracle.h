@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * An independent check of a directional projection result: dense brute
  * force (the ray P(t) + lambda Dir, lambda > 0, intersected with S at n

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 #include "trace_shapes.h"
 
 #include <math.h>
@@ -70,7 +71,7 @@ projcurve_surface *shape_sphere(double r)
 
 projcurve_surface *shape_example1_surface(void)
 {
-    /* seed 000 s5: P_i0 at z = -40, P_i1 at z = 40 */
+    /* [SY13] s5: P_i0 at z = -40, P_i1 at z = 40 */
     const double xy[6][2] = {{-98.75, 32.50}, {-91.77, 22.86}, {-81.48, 1.23},
                              {-86.57, -32.46}, {-93.98, -50.36}, {-97.84, -57.27}};
     double ctrl[36];

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Surfaces and curves with known directional projections, for the tracing
  * tests. Every builder returns NULL on failure (and the test then fails on
@@ -26,7 +27,7 @@ projcurve_surface *shape_half_cylinder(double r, double len);
  * (collapsed edges at v = 0 and v = 1). */
 projcurve_surface *shape_sphere(double r);
 
-/* Seed 000 s5 Example 1: the degree 5 x 1 Bezier sheet and its cubic
+/* [SY13] s5 Example 1: the degree 5 x 1 Bezier sheet and its cubic
  * B-spline test curve. */
 projcurve_surface *shape_example1_surface(void);
 projcurve_curve *shape_example1_curve(void);
