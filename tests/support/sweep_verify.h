@@ -10,9 +10,11 @@
  *    (X - P(t*)).Dir >= -eps_D (directional; the ray passing within
  *    eps_D of X), or parallel to the normal of S at X (orthogonal); and X
  *    must be within eps_D of the exact projection curve: of the exact point
- *    of P(t*), or else of the nearest exact point over t around t*, each
+ *    of P(t*), or else of the nearest exact point over t around t* or over
+ *    the piece's t range (where S folds, the normal names a wrong t*), each
  *    found by the test's own Newton iteration from X (ray_oracle.h's polish
- *    for the ray; a Newton on (S - P).Su = (S - P).Sv = 0 for the foot);
+ *    for the ray; a Newton on (S - P).Su = (S - P).Sv = 0 for the foot,
+ *    a descent on the distance where it fails);
  *  - completeness: at evenly spaced t, the brute-force ray hits
  *    (directional, ray_oracle.h's mesh) or the local minima of the distance
  *    from P(t) to S (orthogonal, the same mesh's points refined by Newton)
