@@ -538,7 +538,9 @@ typedef struct projcurve_result projcurve_result;
  * starts where it leaves it (PROJCURVE_START_CURVE_CROSSING); lambda = 0
  * counts, so a curve lying on S is its own projection. Where the curve runs
  * along Dir its projection is a point: a branch whose image lies within
- * eps_D of one point is not returned. Where Dir is tangent to S along a
+ * eps_D of one point is not returned; where the curve moved more than
+ * eps_D over it, it counts as a failure (see projcurve_result_failure_count:
+ * its rays do hit S). Where Dir is tangent to S along a
  * region (a plane seen edge-on) no branch is traced.
  * Every branch returned is verified (see projcurve_result_failure_count):
  * where the projection could not be followed or verified a branch ends
