@@ -425,6 +425,8 @@ PROJCURVE_API projcurve_status projcurve_surface_info(projcurve_context *ctx,
 
 /* Point and partial derivatives up to total order n_deriv (0..2): out receives
  * S (n_deriv 0), then Su, Sv (1), then Suu, Suv, Svv (2), 3 doubles each.
+ * A parameter within 4 ulps of the domain's scale outside it (the rounding
+ * of a pcurve point on its edge) is evaluated on the edge.
  * Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (n_deriv), NOT_FINITE,
  * OUT_OF_DOMAIN. */
 PROJCURVE_API projcurve_status projcurve_surface_eval(projcurve_context *ctx,
