@@ -425,6 +425,8 @@ PROJCURVE_API projcurve_status projcurve_surface_info(projcurve_context *ctx,
 
 /* Point and partial derivatives up to total order n_deriv (0..2): out receives
  * S (n_deriv 0), then Su, Sv (1), then Suu, Suv, Svv (2), 3 doubles each.
+ * A parameter within 4 ulps of the domain's scale outside it (the rounding
+ * of a pcurve point on its edge) is evaluated on the edge.
  * Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (n_deriv), NOT_FINITE,
  * OUT_OF_DOMAIN. */
 PROJCURVE_API projcurve_status projcurve_surface_eval(projcurve_context *ctx,
@@ -538,7 +540,9 @@ typedef struct projcurve_result projcurve_result;
  * starts where it leaves it (PROJCURVE_START_CURVE_CROSSING); lambda = 0
  * counts, so a curve lying on S is its own projection. Where the curve runs
  * along Dir its projection is a point: a branch whose image lies within
- * eps_D of one point is not returned. Where Dir is tangent to S along a
+ * eps_D of one point is not returned; where the curve moved more than
+ * eps_D over it, it counts as a failure (see projcurve_result_failure_count:
+ * its rays do hit S). Where Dir is tangent to S along a
  * region (a plane seen edge-on) no branch is traced.
  * Every branch returned is verified (see projcurve_result_failure_count):
  * where the projection could not be followed or verified a branch ends

@@ -3,10 +3,16 @@
  * Public surface functions: creation (the spline, its Bezier patch grid and
  * the patch BVH, built once), shape queries and evaluation.
  */
+#include <float.h>
+#include <math.h>
 #include <stdlib.h>
 
 #include "api/handles.h"
 #include "common/error.h"
+
+/* Parameters this close to the domain (a fraction of its scale, 4 ulps)
+ * are rounding of a point on its edge, and evaluated there. */
+#define PC_DOMAIN_ROUNDING (4.0 * DBL_EPSILON)
 
 projcurve_status projcurve_surface_create_nurbs(projcurve_context *ctx, int deg_u, int deg_v,
                                                 size_t n_u, size_t n_v, const double *ctrl,
@@ -103,7 +109,13 @@ projcurve_status projcurve_surface_eval(projcurve_context *ctx, const projcurve_
         return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "surface parameters (%g, %g) not finite",
                        u, v);
     const double *d = surface->nurbs.domain;
-    if (u < d[0] || u > d[1] || v < d[2] || v > d[3])
+    /* A point of a pcurve on the domain's edge, (1 - s) a + s b with a and
+     * b on it, rounds up to an ulp outside (linkrods.step surface 6: v =
+     * -0.0031420979018159994 for the bound -0.0031420979018159999): within
+     * a few ulps of the domain's scale a parameter is on the edge. */
+    const double su = PC_DOMAIN_ROUNDING * fmax(fmax(fabs(d[0]), fabs(d[1])), d[1] - d[0]);
+    const double sv = PC_DOMAIN_ROUNDING * fmax(fmax(fabs(d[2]), fabs(d[3])), d[3] - d[2]);
+    if (u < d[0] - su || u > d[1] + su || v < d[2] - sv || v > d[3] + sv)
         return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_DOMAIN,
                        "(u, v) = (%.17g, %.17g) is outside the domain [%.17g, %.17g] x "
                        "[%.17g, %.17g]",
@@ -111,6 +123,8 @@ projcurve_status projcurve_surface_eval(projcurve_context *ctx, const projcurve_
     /* pc_vec3 is three doubles without padding (vec.h), so the caller's
      * array takes the vectors as they are: a copy through a local array
      * costs a store-forwarding stall per vector, a third of the call */
+    u = fmin(fmax(u, d[0]), d[1]);
+    v = fmin(fmax(v, d[2]), d[3]);
     pc_nurbs_surface_eval(&surface->nurbs, u, v, n_deriv, NULL, NULL, (pc_vec3 *)out);
     return PROJCURVE_OK;
 }

@@ -181,6 +181,13 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
         int reached = candidate(r, &cur, b, h, &cand);
         if (reached && pc_refine_common_patch(r, &cur, &cand) == NULL)
             reached = pc_refine_knot_crossing(r, &cur, &cand, &cand);
+        /* A candidate that does not advance in t (a knot-line crossing found
+         * at cur itself) is no step: accepted, it was output again and again
+         * at the same t until the piece limit (linkrods.step surface 15,
+         * 1,000,000 vertices at t = 0.981287). It counts as a failed
+         * correction: a shorter step, then a gap. */
+        if (reached && !(cand.t > cur.t))
+            reached = 0;
         if (!reached) {
             h *= 0.5; /* the corrector failed: come closer */
             if (++rejections < PC_MARCH_MAX_REJECTIONS && h > r->min_dt)

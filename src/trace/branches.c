@@ -417,16 +417,40 @@ static int image_is_point(const projcurve_surface *s, const pc_branch *b, double
     return 1;
 }
 
+/* 1 when the curve over the t range of b stays within `radius` of its
+ * point at b's first vertex (a curve shorter than eps_D: its projection is
+ * that short too). A curve that cannot be evaluated counts as moving. */
+static int curve_is_point(const projcurve_curve *c, const pc_branch *b, double radius)
+{
+    size_t hint = 0;
+    pc_vec3 first;
+    if (pc_curve_eval(c, b->points[0], 0, &hint, &first) != PROJCURVE_OK)
+        return 0;
+    for (size_t k = 1; k < b->n_points; ++k) {
+        pc_vec3 p;
+        if (pc_curve_eval(c, b->points[3 * k], 0, &hint, &p) != PROJCURVE_OK ||
+            vec3_dist(p, first) > radius)
+            return 0;
+    }
+    return 1;
+}
+
 /* Ray projections: where the curve runs along Dir, P(t) slides along its
  * own ray and the projection stands still. A branch whose whole image on S
  * lies within eps_D of one point is that point, not a curve: dropped (a
  * point has no tangent the composition could bound; tracing it cost a few
- * steps of max_step, composing it would not end). */
+ * steps of max_step, composing it would not end). Where the curve itself
+ * moved more than eps_D the rays of that stretch hit S at the point, so the
+ * drop is counted as a failure: a result OK with nothing would claim that
+ * the curve misses S. (A curve shorter than eps_D is no failure: its
+ * projection is below the tolerance.) */
 static void drop_point_images(const pc_tracer *tr, double eps_d, projcurve_result *r)
 {
     for (size_t i = r->n_branches; i-- > 0;)
         if (image_is_point(tr->proj->surface, &r->branches[i], eps_d)) {
             r->stats.points -= (double)r->branches[i].n_points;
+            if (!curve_is_point(tr->proj->curve, &r->branches[i], eps_d))
+                ++r->failures_dropped;
             pc_result_remove_branch(r, i);
         }
 }
