@@ -1,28 +1,12 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 #include "residual.h"
+#include "vec3.h"
 
 #include <math.h>
-
-static double norm3(const double v[3])
-{
-    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
 
 /* A derivative below this fraction of the other marks a collapsed edge
  * (a pole, an apex, a horn's tip), as in the library (ortho/collapsed.h). */
 #define CLI_COLLAPSED_RATIO 1e-6
-
-static double dot3(const double a[3], const double b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 /* Length of the part of d tangent to the plane with normal n. */
 static double tangential(const double d[3], const double n[3])

@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "residual.h"
+#include "vec3.h"
 
 int cli_run(projcurve_context *ctx, cli_job *job)
 {
@@ -58,18 +59,6 @@ void cli_job_free(cli_job *job)
     free(job->pairs);
     job->pairs = NULL;
     job->n_pairs = 0;
-}
-
-static double norm3(const double v[3])
-{
-    return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-}
-
-static void cross3(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
 /* The violation of the projection condition at one traced point (for the
