@@ -23,6 +23,7 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "foot_step.h"
 
 /* Vertices are foot points to this fraction of the model size: the
  * corrector's tolerance is 1e-12 of it, the rounding of the measure
@@ -115,22 +116,10 @@ static int newton_foot(const projcurve_surface *s, const double p[3], double uv[
     double dom[4];
     projcurve_surface_domain(NULL, s, dom);
     for (int it = 0; it < 60; ++it) {
-        double e[18], d[3], f[2] = {0, 0}, k[3] = {0, 0, 0};
-        projcurve_surface_eval(NULL, s, uv[0], uv[1], 2, e);
-        for (int i = 0; i < 3; ++i) {
-            d[i] = e[i] - p[i];
-            f[0] += d[i] * e[3 + i];
-            f[1] += d[i] * e[6 + i];
-        }
-        for (int i = 0; i < 3; ++i) {
-            k[0] += e[3 + i] * e[3 + i] + d[i] * e[9 + i];
-            k[1] += e[3 + i] * e[6 + i] + d[i] * e[12 + i];
-            k[2] += e[6 + i] * e[6 + i] + d[i] * e[15 + i];
-        }
-        const double det = k[0] * k[2] - k[1] * k[1];
-        if (det == 0.0)
+        double e[18], step[2];
+        if (!pc_test_foot_step(s, p, uv, step, e))
             return 0;
-        double du = -(k[2] * f[0] - k[1] * f[1]) / det, dv = -(k[0] * f[1] - k[1] * f[0]) / det;
+        double du = step[0], dv = step[1];
         const double cap_u = 0.05 * (dom[1] - dom[0]), cap_v = 0.05 * (dom[3] - dom[2]);
         du = fmax(-cap_u, fmin(cap_u, du));
         dv = fmax(-cap_v, fmin(cap_v, dv));

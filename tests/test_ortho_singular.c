@@ -20,6 +20,7 @@
 
 #include "../src/cli/residual.h"
 #include "check.h"
+#include "foot_step.h"
 #include "ortho/ortho_projector.h"
 
 /* The corrector's tolerance is 1e-12 of the size (NEWTON_TOL's default);
@@ -42,23 +43,11 @@ static double polish_distance(const projcurve_surface *s, const double p[3], con
     double uv[2] = {uv0[0], uv0[1]}, x0[3], x[3];
     projcurve_surface_eval(NULL, s, uv[0], uv[1], 0, x0);
     for (int it = 0; it < 30; ++it) {
-        double e[18], d[3], f[2] = {0, 0}, k[3] = {0, 0, 0};
-        projcurve_surface_eval(NULL, s, uv[0], uv[1], 2, e);
-        for (int i = 0; i < 3; ++i) {
-            d[i] = e[i] - p[i];
-            f[0] += d[i] * e[3 + i];
-            f[1] += d[i] * e[6 + i];
-        }
-        for (int i = 0; i < 3; ++i) {
-            k[0] += e[3 + i] * e[3 + i] + d[i] * e[9 + i];
-            k[1] += e[3 + i] * e[6 + i] + d[i] * e[12 + i];
-            k[2] += e[6 + i] * e[6 + i] + d[i] * e[15 + i];
-        }
-        const double det = k[0] * k[2] - k[1] * k[1];
-        if (det == 0.0)
+        double e[18], step[2];
+        if (!pc_test_foot_step(s, p, uv, step, e))
             return INFINITY;
-        uv[0] -= (k[2] * f[0] - k[1] * f[1]) / det;
-        uv[1] -= (k[0] * f[1] - k[1] * f[0]) / det;
+        uv[0] += step[0];
+        uv[1] += step[1];
     }
     projcurve_surface_eval(NULL, s, uv[0], uv[1], 0, x);
     return dist3(x, x0);
