@@ -10,8 +10,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "api/handles.h"
 #include "bench.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "json.h"
 #include "naive_eval.h"
 #include "shapes.h"

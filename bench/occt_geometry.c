@@ -9,7 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/handles.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 
 void pcb_nurbs_data_free(pcb_nurbs_data *d)
 {

@@ -14,9 +14,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
 #include "common/budget.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "point/point.h"
 #include "shapes.h"
 

@@ -9,8 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "shapes.h"
 
 #define TOL_EXACT 1e-12

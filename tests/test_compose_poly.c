@@ -13,8 +13,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "api/handles.h"
 #include "compose/compose.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "shapes.h"
 
 #define MAX_ORDER (PROJCURVE_MAX_DEGREE + 1)

@@ -12,10 +12,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "api/handles.h"
 #include "check.h"
 #include "closest_oracle.h"
 #include "deboor.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "point/point.h"
 
 /* Rounding of evaluations on real data, relative to the surface size. */

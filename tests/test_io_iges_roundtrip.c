@@ -14,8 +14,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "io/iges.h"
 #include "io/iges_write.h"
 #include "projcurve.h"

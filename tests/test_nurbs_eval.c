@@ -10,9 +10,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
 #include "deboor.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "shapes.h"
 
 /* Points of exact rational shapes are computed with a few dozen roundings of

@@ -19,8 +19,9 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "point/point.h"
 
 /* Rounding of the evaluations and of the hodograph nets, relative to the

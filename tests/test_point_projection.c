@@ -12,9 +12,10 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "api/handles.h"
 #include "check.h"
 #include "closest_oracle.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "shapes.h"
 
 /* Closest points are polished by Newton to ~1e-15 relative; distances

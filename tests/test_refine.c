@@ -19,8 +19,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "common/params.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "piece_oracle.h"
 #include "refine/refine.h"
 #include "trace/projector.h"
@@ -369,8 +371,8 @@ static void test_tolerances(shape *sh)
     const double size = sh->surface->size;
     for (size_t a = 0; a < sizeof angles / sizeof angles[0]; ++a) {
         for (size_t e = 0; e < sizeof rel_eps / sizeof rel_eps[0]; ++e) {
-            struct projcurve_options o;
-            pc_options_defaults(&o);
+            pc_params o;
+            pc_params_defaults(&o);
             o.tol_distance = rel_eps[e] * size;
             o.tol_angle_deg = angles[a];
             projcurve_result *r = traced_result(sh, sh->t0, sh->t1, 41);
@@ -409,8 +411,8 @@ static void test_descending(shape *sh)
     pc_projector proj;
     pc_oracle_dir d;
     make_projector(sh, &d, &proj);
-    struct projcurve_options o;
-    pc_options_defaults(&o);
+    pc_params o;
+    pc_params_defaults(&o);
     o.tol_distance = 1e-4 * sh->surface->size;
     projcurve_result *r = traced_result(sh, sh->t1, sh->t0, 30);
     CHECK_OK(pc_refine_and_compose(NULL, &proj, &o, r));
@@ -465,8 +467,8 @@ static void test_bad_tolerances(shape *sh)
         {1e-3, 1.0, 0, PROJCURVE_ERR_OUT_OF_RANGE},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; ++k) {
-        struct projcurve_options o;
-        pc_options_defaults(&o);
+        pc_params o;
+        pc_params_defaults(&o);
         o.tol_distance = cases[k].dist;
         o.tol_angle_deg = cases[k].angle;
         o.max_pieces = cases[k].pieces;
@@ -478,8 +480,8 @@ static void test_bad_tolerances(shape *sh)
         projcurve_result_destroy(r);
     }
     /* the bounds themselves are accepted */
-    struct projcurve_options o;
-    pc_options_defaults(&o);
+    pc_params o;
+    pc_params_defaults(&o);
     o.tol_angle_deg = 90.0;
     o.tol_distance = 1e-2 * sh->surface->size;
     projcurve_result *r = traced_result(sh, sh->t0, sh->t1, 10);
@@ -499,8 +501,8 @@ static void test_piece_limit(shape *sh)
     make_projector(sh, &d, &proj);
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    struct projcurve_options o;
-    pc_options_defaults(&o);
+    pc_params o;
+    pc_params_defaults(&o);
     o.tol_distance = 1e-6 * sh->surface->size;
     o.max_pieces = 7;
     projcurve_result *r = traced_result(sh, sh->t0, 0.5 * (sh->t0 + sh->t1), 20);
@@ -623,8 +625,8 @@ static void test_creased_surface(void)
     make_projector(&sh, &d, &proj);
     static const double angles[] = {10.0, 1.0};
     for (size_t a = 0; a < 2; ++a) {
-        struct projcurve_options o;
-        pc_options_defaults(&o);
+        pc_params o;
+        pc_params_defaults(&o);
         o.tol_distance = 1e-4 * sh.surface->size;
         o.tol_angle_deg = angles[a];
         projcurve_result *r = traced_result(&sh, sh.t0, sh.t1, 41);
@@ -669,8 +671,8 @@ static void test_narrow_bump(void)
     make_projector(&sh, &d, &proj);
     static const double rel_eps[] = {1e-2, 1e-4};
     for (size_t e = 0; e < 2; ++e) {
-        struct projcurve_options o;
-        pc_options_defaults(&o);
+        pc_params o;
+        pc_params_defaults(&o);
         o.tol_distance = rel_eps[e] * sh.surface->size;
         o.tol_angle_deg = 10.0;
         projcurve_result *r = traced_result(&sh, sh.t0, sh.t1, 201);

@@ -22,8 +22,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "piece_oracle.h"
 #include "shapes.h"
 #include "trace_shapes.h"

@@ -25,8 +25,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "common/params.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "refine/refine.h"
 #include "trace/directional.h"
 #include "trace/result.h"
@@ -181,8 +183,8 @@ static void test_gap_ends(void)
     projcurve_options *o = options(1.0, 1, 0);
     projcurve_result *r = NULL;
     CHECK_OK(projcurve_project_directional(NULL, s, c, dir, o, &r));
-    struct projcurve_options ro;
-    pc_options_defaults(&ro);
+    pc_params ro;
+    pc_params_defaults(&ro);
     ro.tol_angle_deg = 1e-6;
     ro.tol_distance = 1e-4 * s->size;
     pc_projector proj;

@@ -29,8 +29,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "on_surface.h"
 #include "piece_oracle.h"
 #include "trace_shapes.h"

@@ -22,8 +22,9 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "piece_oracle.h"
 #include "shapes.h"
 #include "trace_shapes.h"

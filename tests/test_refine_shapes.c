@@ -24,8 +24,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "on_surface.h"
 #include "piece_oracle.h"
 #include "shapes.h"

@@ -12,8 +12,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "api/handles.h"
+#include "api/options.h"
 #include "check.h"
+#include "geom/surface.h"
 #include "trace_oracle.h"
 #include "trace_shapes.h"
 

@@ -18,7 +18,7 @@
  *         meets that polygon twice, at x < 30 once.
  *
  * Then the sweep itself, with its periodic full search switched off (the
- * internal option sweep_criteria_only): the births on the C- and Z-folded
+ * white-box parameter sweep_criteria_only): the births on the C- and Z-folded
  * sheets of test_trace_jumps must still be found, now by the criteria alone,
  * with the same start and end reasons and nothing missed by brute force.
  */
@@ -26,6 +26,7 @@
 #include <stdio.h>
 
 #include "check.h"
+#include "directional/directional_project.h"
 #include "trace/directional.h"
 #include "trace/line_seeds.h"
 #include "trace_oracle.h"
@@ -194,14 +195,16 @@ static void check_criteria_only(const char *name, const projcurve_surface *s,
                                 const projcurve_curve *c, const projcurve_branch_start *starts,
                                 size_t n_expected, double expected_jumps)
 {
-    projcurve_options *o = NULL;
-    CHECK_OK(projcurve_options_create(NULL, &o));
-    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, 0));
-    o->sweep_criteria_only = 1;
-    const double down[3] = {0, 0, -1};
+    pc_params p;
+    pc_params_defaults(&p);
+    p.compose = 0;
+    p.sweep_criteria_only = 1;
+    CHECK_OK(pc_params_distance_tolerance(NULL, &p, s->size, &p.tol_distance));
+    pc_budget budget;
+    pc_budget_init(&budget, 0.0, 0, NULL, NULL);
+    p.budget = &budget;
     projcurve_result *r = NULL;
-    CHECK_OK(projcurve_project_directional(NULL, s, c, down, o, &r));
-    projcurve_options_destroy(o);
+    CHECK_OK(pc_directional_project(NULL, s, c, vec3(0, 0, -1), &p, &r));
     const size_t nb = projcurve_result_branch_count(r);
     printf("%s (criteria only): %zu branches, expected %zu\n", name, nb, n_expected);
     CHECK(nb == n_expected);
@@ -224,6 +227,7 @@ static void check_criteria_only(const char *name, const projcurve_surface *s,
     CHECK_OK(projcurve_result_stat(NULL, r, PROJCURVE_STAT_JUMPS, &jumps));
     CHECK_NEAR(jumps, expected_jumps, 0.0);
     trace_oracle_report rep;
+    const double down[3] = {0, 0, -1};
     trace_oracle_check(s, c, down, r, N_SAMPLES, &rep);
     trace_oracle_print(name, &rep);
     CHECK(rep.uncovered_far == 0);

@@ -12,7 +12,8 @@
 #include <stdio.h>
 
 #include "check.h"
-#include "api/handles.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "trace/span_bound.h"
 #include "trace_shapes.h"
 

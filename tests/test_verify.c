@@ -26,8 +26,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "check.h"
+#include "common/params.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "ortho/ortho_projector.h"
 #include "trace/directional.h"
 #include "trace/result.h"
@@ -45,7 +47,7 @@ typedef struct fixture {
     pc_directional_data ddata;
     pc_directional_cache dcache;
     pc_ortho_cache ocache;
-    struct projcurve_options o;
+    pc_params o;
 } fixture;
 
 static projcurve_result *project(fixture *f)
@@ -57,7 +59,7 @@ static projcurve_result *project(fixture *f)
     CHECK_OK(f->orthogonal ? projcurve_project_orthogonal(NULL, f->s, f->c, o, &r)
                            : projcurve_project_directional(NULL, f->s, f->c, f->dir, o, &r));
     projcurve_options_destroy(o);
-    pc_options_defaults(&f->o);
+    pc_params_defaults(&f->o);
     f->o.compose = f->compose;
     f->o.tol_distance = r->stats.tol_distance;
     if (f->orthogonal) {

@@ -1,13 +1,12 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Public curve functions: creation (NURBS or callback), domain, evaluation,
- * NURBS data access; and pc_curve_eval, the internal evaluator of both kinds.
+ * NURBS data access (the curve itself and its evaluator are geom/curve.h).
  */
-#include <stdlib.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "common/error.h"
+#include "geom/curve.h"
 #include "nurbs/input.h"
 
 projcurve_status projcurve_curve_create_nurbs(projcurve_context *ctx, int degree, size_t n_ctrl,
@@ -17,20 +16,7 @@ projcurve_status projcurve_curve_create_nurbs(projcurve_context *ctx, int degree
     PC_REQUIRE(ctx, out, "out");
     PC_REQUIRE(ctx, ctrl, "ctrl");
     PC_REQUIRE(ctx, knots, "knots");
-    projcurve_curve *c = calloc(1, sizeof *c);
-    if (c == NULL)
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a curve");
-    const projcurve_status st =
-        pc_nurbs_curve_init(ctx, &c->nurbs, degree, n_ctrl, ctrl, weights, knots);
-    if (st != PROJCURVE_OK) {
-        free(c);
-        return st;
-    }
-    c->kind = PC_CURVE_NURBS;
-    c->t0 = c->nurbs.t0;
-    c->t1 = c->nurbs.t1;
-    *out = c;
-    return PROJCURVE_OK;
+    return pc_curve_create_nurbs(ctx, degree, n_ctrl, ctrl, weights, knots, out);
 }
 
 projcurve_status projcurve_curve_create_callback(projcurve_context *ctx, projcurve_curve_fn fn,
@@ -49,26 +35,10 @@ projcurve_status projcurve_curve_create_callback(projcurve_context *ctx, projcur
     const projcurve_status st = pc_input_check_domain(ctx, "curve domain", t0, t1);
     if (st != PROJCURVE_OK)
         return st;
-    projcurve_curve *c = calloc(1, sizeof *c);
-    if (c == NULL)
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a curve");
-    c->kind = PC_CURVE_CALLBACK;
-    c->t0 = t0;
-    c->t1 = t1;
-    c->fn = fn;
-    c->user = user;
-    *out = c;
-    return PROJCURVE_OK;
+    return pc_curve_create_callback(ctx, fn, user, t0, t1, out);
 }
 
-void projcurve_curve_destroy(projcurve_curve *curve)
-{
-    if (curve == NULL)
-        return;
-    if (curve->kind == PC_CURVE_NURBS)
-        pc_nurbs_curve_free(&curve->nurbs);
-    free(curve);
-}
+void projcurve_curve_destroy(projcurve_curve *curve) { pc_curve_destroy(curve); }
 
 projcurve_status projcurve_curve_domain(projcurve_context *ctx, const projcurve_curve *curve,
                                         double *t0, double *t1)
@@ -78,29 +48,6 @@ projcurve_status projcurve_curve_domain(projcurve_context *ctx, const projcurve_
     PC_REQUIRE(ctx, t1, "t1");
     *t0 = curve->t0;
     *t1 = curve->t1;
-    return PROJCURVE_OK;
-}
-
-projcurve_status pc_curve_eval(const projcurve_curve *c, double t, int n_deriv, size_t *hint,
-                               pc_vec3 *out)
-{
-    if (!(t >= c->t0))
-        t = c->t0;
-    if (t > c->t1)
-        t = c->t1;
-    if (c->kind == PC_CURVE_NURBS) {
-        pc_nurbs_curve_eval(&c->nurbs, t, n_deriv > 3 ? 3 : n_deriv, hint, out);
-        return PROJCURVE_OK;
-    }
-    double v[9];
-    if (c->fn(c->user, t, v) != 0)
-        return PROJCURVE_ERR_CALLBACK;
-    const int n = n_deriv > 2 ? 2 : n_deriv;
-    for (int k = 0; k <= n; ++k) {
-        out[k] = vec3_load(v + 3 * k);
-        if (!vec3_is_finite(out[k]))
-            return PROJCURVE_ERR_CALLBACK;
-    }
     return PROJCURVE_OK;
 }
 

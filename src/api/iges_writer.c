@@ -12,8 +12,9 @@
 #include <string.h>
 
 #include "api/branch_pcurve.h"
-#include "api/handles.h"
 #include "common/error.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "io/iges_write.h"
 
 #define PC_IGES_CURVE_ON_SURFACE 142

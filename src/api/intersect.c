@@ -3,8 +3,8 @@
  * projcurve_surface_intersect_line: validation, then pc_intersect_line, then
  * the hits copied out in the public layout.
  */
-#include "api/handles.h"
 #include "common/error.h"
+#include "geom/surface.h"
 #include "intersect/intersect.h"
 #include "intersect/ray_patch.h"
 #include "projcurve.h"

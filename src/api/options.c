@@ -3,12 +3,13 @@
  * Options: an opaque handle of typed values, each with bounds and a default.
  *
  * One table describes every option (type, bounds, default, where it lives in
- * struct projcurve_options); the setters, getters, projcurve_option_info and
- * pc_options_defaults all read it, so the bounds documented in projcurve.h
- * are stated exactly once in code. A setter validates before it writes:
+ * struct projcurve_options); the setters, getters, projcurve_option_info,
+ * pc_options_defaults and pc_options_check all read it, so the bounds
+ * documented in projcurve.h are stated exactly once in code (the defaults
+ * of the engine's parameters come from common/params.h). A setter validates before it writes:
  * on any failure the handle is unchanged.
  */
-#include "api/handles.h"
+#include "api/options.h"
 #include "common/error.h"
 #include "projcurve.h"
 
@@ -42,22 +43,22 @@ static const pc_option_desc pc_option_table[] = {
     {PROJCURVE_OPT_TOL_DISTANCE, "TOL_DISTANCE", PROJCURVE_OPTION_DOUBLE,
      0.0, PC_OPTION_LENGTH_LIMIT, 1, 0.0, PC_FIELD(tol_distance)},
     {PROJCURVE_OPT_TOL_ANGLE_DEG, "TOL_ANGLE_DEG", PROJCURVE_OPTION_DOUBLE,
-     0.0, 90.0, 1, 1.0, PC_FIELD(tol_angle_deg)},
+     0.0, 90.0, 1, PC_DEFAULT_TOL_ANGLE_DEG, PC_FIELD(tol_angle_deg)},
     {PROJCURVE_OPT_NEWTON_TOL, "NEWTON_TOL", PROJCURVE_OPTION_DOUBLE,
-     1e-15, 1e-3, 0, 1e-12, PC_FIELD(newton_tol)},
+     1e-15, 1e-3, 0, PC_DEFAULT_NEWTON_TOL, PC_FIELD(newton_tol)},
     {PROJCURVE_OPT_NEWTON_MAX_ITER, "NEWTON_MAX_ITER", PROJCURVE_OPTION_INTEGER,
-     1.0, 200.0, 0, 20.0, PC_FIELD(newton_max_iter)},
+     1.0, 200.0, 0, PC_DEFAULT_NEWTON_MAX_ITER, PC_FIELD(newton_max_iter)},
     {PROJCURVE_OPT_METHOD, "METHOD", PROJCURVE_OPTION_INTEGER,
      (double)PROJCURVE_METHOD_SECOND_ORDER, (double)PROJCURVE_METHOD_RK4, 0,
      (double)PROJCURVE_METHOD_SECOND_ORDER, PC_FIELD(method)},
     {PROJCURVE_OPT_PARAM_STEP, "PARAM_STEP", PROJCURVE_OPTION_DOUBLE,
      0.0, PC_OPTION_LENGTH_LIMIT, 0, 0.0, PC_FIELD(param_step)},
     {PROJCURVE_OPT_ARC_STEP_FRACTION, "ARC_STEP_FRACTION", PROJCURVE_OPTION_DOUBLE,
-     1e-7, 1.0, 0, 1.0 / 64.0, PC_FIELD(arc_step_fraction)},
+     1e-7, 1.0, 0, PC_DEFAULT_ARC_STEP_FRACTION, PC_FIELD(arc_step_fraction)},
     {PROJCURVE_OPT_MAX_POINTS, "MAX_POINTS", PROJCURVE_OPTION_INTEGER,
-     16.0, PC_OPTION_SIZE_LIMIT, 0, 10000000.0, PC_FIELD(max_points)},
+     16.0, PC_OPTION_SIZE_LIMIT, 0, PC_DEFAULT_MAX_POINTS, PC_FIELD(max_points)},
     {PROJCURVE_OPT_MAX_PIECES, "MAX_PIECES", PROJCURVE_OPTION_INTEGER,
-     1.0, PC_OPTION_SIZE_LIMIT, 0, 1000000.0, PC_FIELD(max_pieces)},
+     1.0, PC_OPTION_SIZE_LIMIT, 0, PC_DEFAULT_MAX_PIECES, PC_FIELD(max_pieces)},
     {PROJCURVE_OPT_COMPOSE, "COMPOSE", PROJCURVE_OPTION_INTEGER,
      0.0, 1.0, 0, 1.0, PC_FIELD(compose)},
     {PROJCURVE_OPT_JUMP_DETECTION, "JUMP_DETECTION", PROJCURVE_OPTION_INTEGER,
@@ -152,24 +153,6 @@ static projcurve_status pc_option_lookup(projcurve_context *ctx, projcurve_optio
     return PROJCURVE_OK;
 }
 
-projcurve_status pc_options_distance_tolerance(projcurve_context *ctx,
-                                               const struct projcurve_options *o,
-                                               double model_size, double *eps_d)
-{
-    if (!(o->tol_distance > 0.0)) {
-        *eps_d = PC_AUTO_TOL_DISTANCE * model_size;
-        return PROJCURVE_OK;
-    }
-    const double floor_rel = fmax(o->newton_tol, PC_MIN_TOL_DISTANCE);
-    if (o->tol_distance < floor_rel * model_size)
-        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
-                       "option TOL_DISTANCE: %g is below %g, what this model allows "
-                       "(%g of its size %g: NEWTON_TOL or the rounding of double precision)",
-                       o->tol_distance, floor_rel * model_size, floor_rel, model_size);
-    *eps_d = o->tol_distance;
-    return PROJCURVE_OK;
-}
-
 void pc_options_defaults(struct projcurve_options *o)
 {
     for (size_t i = 0; i < PC_OPTION_COUNT; ++i) {
@@ -179,10 +162,49 @@ void pc_options_defaults(struct projcurve_options *o)
         else
             *pc_option_int(o, d) = (long long)d->default_value;
     }
-    o->sweep_criteria_only = 0;
     o->progress = NULL;
     o->progress_user = NULL;
-    o->budget = NULL;
+}
+
+/* The value of option d in o, as a double (integer bounds are at most 2^40,
+ * exact in a double). */
+static double pc_option_value(const struct projcurve_options *o, const pc_option_desc *d)
+{
+    return d->type == PROJCURVE_OPTION_DOUBLE ? *pc_option_double_c(o, d)
+                                              : (double)*pc_option_int_c(o, d);
+}
+
+projcurve_status pc_options_check(projcurve_context *ctx, const struct projcurve_options *o)
+{
+    for (size_t i = 0; i < PC_OPTION_COUNT; ++i) {
+        const pc_option_desc *d = &pc_option_table[i];
+        const double value = pc_option_value(o, d);
+        if (!isfinite(value))
+            return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "option %s is not finite", d->name);
+        if (value < d->min_value || value > d->max_value)
+            return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                           "option %s = %.17g is outside [%g, %g]", d->name, value,
+                           d->min_value, d->max_value);
+    }
+    return PROJCURVE_OK;
+}
+
+void pc_options_to_params(const struct projcurve_options *o, pc_params *p)
+{
+    pc_params_defaults(p);
+    p->tol_distance = o->tol_distance;
+    p->tol_angle_deg = o->tol_angle_deg;
+    p->newton_tol = o->newton_tol;
+    p->newton_max_iter = o->newton_max_iter;
+    p->method = o->method;
+    p->param_step = o->param_step;
+    p->arc_step_fraction = o->arc_step_fraction;
+    p->max_points = o->max_points;
+    p->max_pieces = o->max_pieces;
+    p->compose = o->compose;
+    p->jump_detection = o->jump_detection;
+    p->pcurve_degree = o->pcurve_degree;
+    p->foot_points = o->foot_points;
 }
 
 projcurve_status projcurve_options_create(projcurve_context *ctx, projcurve_options **out)

@@ -1,14 +1,13 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Public surface functions: creation (the spline, its Bezier patch grid and
- * the patch BVH, built once), shape queries and evaluation.
+ * Public surface functions: creation (geom/surface.h builds the spline with
+ * its patch grid, BVH and tangent boxes), shape queries and evaluation.
  */
 #include <float.h>
 #include <math.h>
-#include <stdlib.h>
 
-#include "api/handles.h"
 #include "common/error.h"
+#include "geom/surface.h"
 
 /* Parameters this close to the domain (a fraction of its scale, 4 ulps)
  * are rounding of a point on its edge, and evaluated there. */
@@ -23,46 +22,10 @@ projcurve_status projcurve_surface_create_nurbs(projcurve_context *ctx, int deg_
     PC_REQUIRE(ctx, ctrl, "ctrl");
     PC_REQUIRE(ctx, knots_u, "knots_u");
     PC_REQUIRE(ctx, knots_v, "knots_v");
-    projcurve_surface *s = calloc(1, sizeof *s);
-    if (s == NULL)
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a surface");
-    projcurve_status st = pc_nurbs_surface_init(ctx, &s->nurbs, deg_u, deg_v, n_u, n_v, ctrl,
-                                                weights, knots_u, knots_v);
-    if (st != PROJCURVE_OK) {
-        free(s);
-        return st;
-    }
-    st = pc_patch_grid_build(ctx, &s->grid, &s->nurbs);
-    if (st == PROJCURVE_OK)
-        st = pc_bvh_build(ctx, &s->bvh, &s->grid);
-    if (st == PROJCURVE_OK)
-        st = pc_tangent_boxes_build(ctx, &s->tangents, &s->bvh, &s->grid, s->nurbs.rational);
-    if (st != PROJCURVE_OK) {
-        projcurve_surface_destroy(s);
-        return st;
-    }
-    box_empty(s->box);
-    const size_t n_points = s->nurbs.n_u * s->nurbs.n_v;
-    for (size_t i = 0; i < n_points; ++i) {
-        const double *h = s->nurbs.cw + 4 * i;
-        const double pt[3] = {h[0] / h[3], h[1] / h[3], h[2] / h[3]};
-        box_add_point(s->box, pt);
-    }
-    s->size = box_diagonal(s->box);
-    *out = s;
-    return PROJCURVE_OK;
+    return pc_surface_create(ctx, deg_u, deg_v, n_u, n_v, ctrl, weights, knots_u, knots_v, out);
 }
 
-void projcurve_surface_destroy(projcurve_surface *surface)
-{
-    if (surface == NULL)
-        return;
-    pc_tangent_boxes_free(&surface->tangents);
-    pc_bvh_free(&surface->bvh);
-    pc_patch_grid_free(&surface->grid);
-    pc_nurbs_surface_free(&surface->nurbs);
-    free(surface);
-}
+void projcurve_surface_destroy(projcurve_surface *surface) { pc_surface_destroy(surface); }
 
 projcurve_status projcurve_surface_domain(projcurve_context *ctx,
                                           const projcurve_surface *surface, double domain[4])

@@ -10,8 +10,9 @@
 
 #include <stddef.h>
 
-#include "api/handles.h"
 #include "common/vec.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 
 /* Internal flag (never in the public flags): the hit is a pole, a point
  * where a whole patch edge collapses, so the parameter along that edge is

@@ -20,8 +20,10 @@
 #ifndef PC_ORTHO_IMPLICIT_H
 #define PC_ORTHO_IMPLICIT_H
 
-#include "api/handles.h"
+#include "common/params.h"
 #include "common/vec.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "trace/result.h"
 
 typedef struct pc_implicit {
@@ -91,7 +93,7 @@ projcurve_status pc_implicit_point_at(projcurve_context *ctx, const pc_implicit 
  * or the budget), CANCELLED (the budget's callback), CALLBACK, SINGULAR,
  * NOT_CONVERGED (no foot point found for P(t0)), NO_MEMORY. */
 projcurve_status pc_implicit_trace(projcurve_context *ctx, pc_implicit *imp,
-                                   const struct projcurve_options *opts, projcurve_result *r);
+                                   const pc_params *opts, projcurve_result *r);
 
 /* Replaces the pieces of every branch of r by cubic Bezier pieces (C1
  * Hermite in t) within eps_D of the exact foot-point curve, inserting exact
@@ -100,6 +102,6 @@ projcurve_status pc_implicit_trace(projcurve_context *ctx, pc_implicit *imp,
  * LIMIT_REACHED (max_points, max_pieces or the budget; the branch cut ends
  * with PROJCURVE_END_LIMIT), CANCELLED, CALLBACK, SINGULAR, NO_MEMORY. */
 projcurve_status pc_implicit_fit(projcurve_context *ctx, const pc_implicit *imp, double eps_d,
-                                 const struct projcurve_options *opts, projcurve_result *r);
+                                 const pc_params *opts, projcurve_result *r);
 
 #endif /* PC_ORTHO_IMPLICIT_H */

@@ -104,7 +104,7 @@ static projcurve_status add_piece(projcurve_context *ctx, pc_branch *b,
  * within eps_D gets the exact midpoint inserted as a vertex and is tried
  * again, so the loop is bounded by the point limit. */
 static projcurve_status fit_branch(projcurve_context *ctx, const pc_implicit *imp, double eps_d,
-                                   const struct projcurve_options *opts, pc_branch *b,
+                                   const pc_params *opts, pc_branch *b,
                                    pc_stats *stats)
 {
     const long long max_points = opts->max_points;
@@ -165,7 +165,7 @@ static projcurve_status fit_branch(projcurve_context *ctx, const pc_implicit *im
 }
 
 projcurve_status pc_implicit_fit(projcurve_context *ctx, const pc_implicit *imp, double eps_d,
-                                 const struct projcurve_options *opts, projcurve_result *r)
+                                 const pc_params *opts, projcurve_result *r)
 {
     for (size_t k = 0; k < r->n_branches; ++k) {
         const projcurve_status status =

@@ -109,7 +109,7 @@ static projcurve_status find_seed(projcurve_context *ctx, const pc_implicit *imp
 /* Tracing state of the one branch. */
 typedef struct trace_run {
     pc_implicit imp;              /* with the gradient floor set from the seed */
-    const struct projcurve_options *opts;
+    const pc_params *opts;
     double dt_fixed;              /* PARAM_STEP, 0 = arc-length steps */
     double ds_nominal, dt_max, dt_min;
     pc_stats *stats;
@@ -208,7 +208,7 @@ static projcurve_status step(projcurve_context *ctx, trace_run *run, pc_implicit
 }
 
 projcurve_status pc_implicit_trace(projcurve_context *ctx, pc_implicit *imp,
-                                   const struct projcurve_options *opts, projcurve_result *r)
+                                   const pc_params *opts, projcurve_result *r)
 {
     trace_run run;
     run.imp = *imp;

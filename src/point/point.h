@@ -16,8 +16,10 @@
 
 #include <stddef.h>
 
-#include "api/handles.h"
+#include "common/budget.h"
 #include "common/vec.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 
 /* Closest point of a surface: parameters, point and distance. */
 typedef struct pc_surface_point {

@@ -46,7 +46,7 @@
 #define PC_REFINE_SNAP_FAR_REL 1e-9
 #define PC_RADIANS_PER_DEGREE 0.017453292519943295769
 
-static projcurve_status check_options(projcurve_context *ctx, const struct projcurve_options *o)
+static projcurve_status check_options(projcurve_context *ctx, const pc_params *o)
 {
     if (!isfinite(o->tol_distance))
         return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "distance tolerance is not finite");
@@ -324,7 +324,7 @@ static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_
 }
 
 static void refiner_init(pc_refiner *r, projcurve_context *ctx, const pc_projector *proj,
-                         const struct projcurve_options *o, double eps)
+                         const pc_params *o, double eps)
 {
     const projcurve_surface *s = proj->surface;
     const double *dom = s->nurbs.domain;
@@ -346,15 +346,15 @@ static void refiner_init(pc_refiner *r, projcurve_context *ctx, const pc_project
 }
 
 projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projector *proj,
-                                       const struct projcurve_options *opts,
+                                       const pc_params *opts,
                                        projcurve_result *res)
 {
     PC_REQUIRE(ctx, proj, "projector");
     PC_REQUIRE(ctx, proj->surface, "projector surface");
     PC_REQUIRE(ctx, res, "result");
-    struct projcurve_options defaults;
+    pc_params defaults;
     if (opts == NULL) {
-        pc_options_defaults(&defaults);
+        pc_params_defaults(&defaults);
         opts = &defaults;
     }
     projcurve_status st = check_options(ctx, opts);
@@ -367,7 +367,7 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
     if (!opts->compose)
         return PROJCURVE_OK;
     double eps;
-    st = pc_options_distance_tolerance(ctx, opts, proj->model_size, &eps);
+    st = pc_params_distance_tolerance(ctx, opts, proj->model_size, &eps);
     if (st != PROJCURVE_OK)
         return st;
     res->stats.tol_distance = eps;

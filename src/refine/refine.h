@@ -7,7 +7,9 @@
 #ifndef PC_REFINE_H
 #define PC_REFINE_H
 
-#include "api/handles.h"
+#include "common/params.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "trace/projector.h"
 #include "trace/result.h"
 
@@ -32,7 +34,7 @@
  * work limit; the pieces made so far stay), CANCELLED (the budget's
  * progress callback; the same), NO_MEMORY. */
 projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projector *proj,
-                                       const struct projcurve_options *opts,
+                                       const pc_params *opts,
                                        projcurve_result *r);
 
 #endif /* PC_REFINE_H */

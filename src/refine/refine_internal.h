@@ -18,8 +18,10 @@
 
 #include <stddef.h>
 
-#include "api/handles.h"
 #include "bezier/bezier.h"
+#include "common/budget.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "trace/projector.h"
 #include "trace/result.h"
 

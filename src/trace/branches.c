@@ -66,7 +66,7 @@ static double curve_length(const projcurve_curve *c)
 }
 
 static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_projector *proj,
-                         const struct projcurve_options *opts, const pc_trace_config *cfg,
+                         const pc_params *opts, const pc_trace_config *cfg,
                          projcurve_result *r)
 {
     const projcurve_curve *c = proj->curve;
@@ -456,7 +456,7 @@ static void drop_point_images(const pc_tracer *tr, double eps_d, projcurve_resul
 }
 
 projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *proj,
-                                   const struct projcurve_options *opts,
+                                   const pc_params *opts,
                                    pc_seed_finder *finder, const pc_trace_config *config,
                                    projcurve_result *r)
 {

@@ -10,7 +10,8 @@
 
 #include <stddef.h>
 
-#include "api/handles.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "trace/projector.h"
 #include "trace/span_bound_table.h"
 

@@ -10,7 +10,8 @@
 #ifndef PC_TRACE_PRECISION_H
 #define PC_TRACE_PRECISION_H
 
-#include "api/handles.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 
 /* The ulps of the largest coordinate a tolerance on S - P never goes below:
  * an evaluation of S or P rounds to a few ulps (the sums of a de Boor or

@@ -11,8 +11,9 @@
 #ifndef PC_TRACE_PROJECTOR_H
 #define PC_TRACE_PROJECTOR_H
 
-#include "api/handles.h"
 #include "common/vec.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 
 typedef struct pc_projector pc_projector;
 

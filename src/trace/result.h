@@ -78,4 +78,12 @@ void pc_branch_clear_pieces(pc_branch *b);
 /* Removes the branch at index i, keeping the order of the others. */
 void pc_result_remove_branch(projcurve_result *r, size_t i);
 
+/* 1 for the statuses with which a projection still returns its result:
+ * OK and the partial results of LIMIT_REACHED and CANCELLED. */
+static inline int pc_status_keeps_result(projcurve_status st)
+{
+    return st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED ||
+           st == PROJCURVE_ERR_CANCELLED;
+}
+
 #endif /* PC_TRACE_RESULT_H */

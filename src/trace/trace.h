@@ -20,7 +20,9 @@
 
 #include <stddef.h>
 
-#include "api/handles.h"
+#include "common/params.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "trace/projector.h"
 #include "trace/result.h"
 
@@ -67,7 +69,7 @@ struct pc_seed_finder {
     void *state;
 };
 
-/* Settings of one tracing run, derived from the options by the caller. */
+/* Settings of one tracing run, derived from the parameters by the caller. */
 typedef struct pc_trace_config {
     /* Estimated total arc length of the projection ([SY13] s3.3); the
      * arc-length step is opts->arc_step_fraction times it. <= 0: the
@@ -97,7 +99,7 @@ typedef struct pc_trace_config {
  * PROJCURVE_END_LIMIT); CANCELLED (the budget's progress callback, the
  * same partial result); NO_MEMORY; CALLBACK. */
 projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *proj,
-                                   const struct projcurve_options *opts,
+                                   const pc_params *opts,
                                    pc_seed_finder *finder, const pc_trace_config *config,
                                    projcurve_result *r);
 

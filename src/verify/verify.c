@@ -151,7 +151,7 @@ static projcurve_status cut_branch(projcurve_context *ctx, projcurve_result *r, 
 }
 
 projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *proj,
-                                  const struct projcurve_options *o, projcurve_result *r)
+                                  const pc_params *o, projcurve_result *r)
 {
     PC_REQUIRE(ctx, proj, "projector");
     PC_REQUIRE(ctx, r, "result");

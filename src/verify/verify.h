@@ -18,18 +18,20 @@
 #ifndef PC_VERIFY_H
 #define PC_VERIFY_H
 
-#include "api/handles.h"
+#include "common/params.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "trace/projector.h"
 #include "trace/result.h"
 
 /* Verifies every branch of r, a (t, u, v) result made with proj and the
- * resolved options o (o->tol_distance is eps_D in model units; o->compose
+ * resolved parameters o (o->tol_distance is eps_D in model units; o->compose
  * says whether branches are to carry pieces). Cuts what fails (see above);
  * drops branches that are shorter than the model's precision (noise of the
  * seeding, not a curve) and, while composing, branches left without pieces
  * (counted in r->failures_dropped, as failures), except those a size limit
  * stopped (END_LIMIT). Statuses: OK, NO_MEMORY. */
 projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *proj,
-                                  const struct projcurve_options *o, projcurve_result *r);
+                                  const pc_params *o, projcurve_result *r);
 
 #endif /* PC_VERIFY_H */

@@ -4,7 +4,8 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "api/handles.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 
 static double surface_d2(const projcurve_surface *s, double u, double v, const double *p)
 {

@@ -14,7 +14,8 @@
 #ifndef PC_TEST_PIECE_ORACLE_H
 #define PC_TEST_PIECE_ORACLE_H
 
-#include "api/handles.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "trace/projector.h"
 #include "trace/result.h"
 

@@ -1,0 +1,44 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * The layout behind the public options handle, and its resolution into the
+ * engine's parameters (common/params.h). Only src/api/ sees it.
+ */
+#ifndef PC_API_OPTIONS_H
+#define PC_API_OPTIONS_H
+
+#include "common/params.h"
+#include "projcurve.h"
+
+struct projcurve_options {
+    double tol_distance;       /* eps_D; 0 = unset, automatic (setters reject 0) */
+    double tol_angle_deg;      /* eps_T */
+    double newton_tol;         /* relative to model size */
+    long long newton_max_iter;
+    long long method;          /* PROJCURVE_METHOD_* */
+    double param_step;         /* 0 = arc-length stepping */
+    double arc_step_fraction;
+    long long max_points;
+    long long max_pieces;
+    long long compose;
+    long long jump_detection;
+    long long pcurve_degree;   /* 1 or 3: PROJCURVE_OPT_PCURVE_DEGREE */
+    long long foot_points;     /* PROJCURVE_FOOT_POINTS_*: PROJCURVE_OPT_FOOT_POINTS */
+    double time_limit;         /* seconds per call, 0 = none: PROJCURVE_OPT_TIME_LIMIT */
+    long long max_work;        /* units per call, 0 = none: PROJCURVE_OPT_MAX_WORK */
+    projcurve_progress_fn progress; /* projcurve_options_set_progress; NULL = none */
+    void *progress_user;
+};
+
+/* Fills o with every default (used when the caller passes NULL options). */
+void pc_options_defaults(struct projcurve_options *o);
+
+/* Checks every value of o against the bounds projcurve_option_info tells
+ * (a handle can only hold valid values; this guards against a corrupted
+ * one). Statuses: OK, OUT_OF_RANGE, NOT_FINITE, with the option's name. */
+projcurve_status pc_options_check(projcurve_context *ctx, const struct projcurve_options *o);
+
+/* The engine's parameters from o: every option the engine reads, eps_D as
+ * set (0 while unset), no budget. */
+void pc_options_to_params(const struct projcurve_options *o, pc_params *p);
+
+#endif /* PC_API_OPTIONS_H */

@@ -1,0 +1,73 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * The parameters of one projection call as the engine reads them: the
+ * caller's options after the entry point has checked them and resolved
+ * eps_D to model units, the call's budget, and the knobs that only
+ * white-box tests set. The public options handle (src/api/) is resolved
+ * into this struct once per call; no stage below src/api/ sees the handle.
+ */
+#ifndef PC_COMMON_PARAMS_H
+#define PC_COMMON_PARAMS_H
+
+#include "common/budget.h"
+#include "projcurve.h"
+
+/* The defaults of the options that reach the engine (projcurve.h states
+ * them; the options table of src/api/options.c reads them from here). */
+#define PC_DEFAULT_TOL_ANGLE_DEG 1.0
+#define PC_DEFAULT_NEWTON_TOL 1e-12
+#define PC_DEFAULT_NEWTON_MAX_ITER 20
+#define PC_DEFAULT_ARC_STEP_FRACTION (1.0 / 64.0)
+#define PC_DEFAULT_MAX_POINTS 10000000
+#define PC_DEFAULT_MAX_PIECES 1000000
+
+/* Automatic eps_D, while TOL_DISTANCE is unset: this fraction of the model
+ * size (projcurve.h). */
+#define PC_AUTO_TOL_DISTANCE 1e-4
+/* The smallest eps_D a projection accepts, relative to the model size: the
+ * points of the exact projection carry the rounding of double-precision
+ * evaluations, ~1e-15 of the size, and the refinement measures distances
+ * to ~1e-13 of it; below 1e-12 it would chase rounding (and split branches
+ * where it cannot follow it) rather than the curve. */
+#define PC_MIN_TOL_DISTANCE 1e-12
+
+typedef struct pc_params {
+    double tol_distance;       /* eps_D, model units; 0 = automatic (not yet resolved) */
+    double tol_angle_deg;      /* eps_T */
+    double newton_tol;         /* relative to model size */
+    long long newton_max_iter;
+    long long method;          /* PROJCURVE_METHOD_* */
+    double param_step;         /* 0 = arc-length stepping */
+    double arc_step_fraction;
+    long long max_points;
+    long long max_pieces;
+    long long compose;
+    long long jump_detection;
+    long long pcurve_degree;   /* 1 or 3 */
+    long long foot_points;     /* PROJCURVE_FOOT_POINTS_* */
+    /* The budget of the call under way, made by the entry point from
+     * TIME_LIMIT, MAX_WORK and the progress callback; NULL: no budget. */
+    pc_budget *budget;
+    /* Not an option, for white-box tests only: 1 makes the jump sweep
+     * search in full only where the criteria of [SY13] s3.4 ask (no
+     * periodic full search), so that tests can show what the criteria
+     * alone find. 0 in every projection a caller can ask for. */
+    int sweep_criteria_only;
+} pc_params;
+
+/* Fills p with the default of every option, eps_D unset, no budget. */
+void pc_params_defaults(pc_params *p);
+
+/* eps_D for a model of size model_size (> 0): p's tol_distance, or
+ * PC_AUTO_TOL_DISTANCE of the size while it is 0. A value below
+ * pc_params_precision of the size cannot be met (the corrector places the
+ * exact points only that closely) and is OUT_OF_RANGE, with a message
+ * naming both. */
+projcurve_status pc_params_distance_tolerance(projcurve_context *ctx, const pc_params *p,
+                                              double model_size, double *eps_d);
+
+/* The precision of the exact points, relative to the model size:
+ * max(NEWTON_TOL, PC_MIN_TOL_DISTANCE). */
+double pc_params_precision(const pc_params *p);
+
+#endif /* PC_COMMON_PARAMS_H */
