@@ -27,10 +27,10 @@
 
 #include "check.h"
 #include "common/params.h"
+#include "directional/directional.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
 #include "refine/refine.h"
-#include "trace/directional.h"
 #include "trace/result.h"
 #include "trace_shapes.h"
 #include "verify/verify.h"

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 
 #include "check.h"
-#include "trace/directional.h"
+#include "directional/directional.h"
 #include "trace/tracer.h"
 #include "trace_shapes.h"
 

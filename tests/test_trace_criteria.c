@@ -26,9 +26,9 @@
 #include <stdio.h>
 
 #include "check.h"
+#include "directional/directional.h"
 #include "directional/directional_project.h"
-#include "trace/directional.h"
-#include "trace/line_seeds.h"
+#include "directional/line_seeds.h"
 #include "trace_oracle.h"
 #include "trace_shapes.h"
 

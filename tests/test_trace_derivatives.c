@@ -9,7 +9,7 @@
 #include <stdio.h>
 
 #include "check.h"
-#include "trace/directional.h"
+#include "directional/directional.h"
 #include "trace_shapes.h"
 
 /* Finite-difference step in t and the tolerances it allows: central

@@ -18,8 +18,8 @@
 #include <stdio.h>
 
 #include "check.h"
+#include "directional/directional.h"
 #include "exit_oracle.h"
-#include "trace/directional.h"
 #include "trace/tracer.h"
 #include "trace_shapes.h"
 

@@ -14,7 +14,7 @@
 #include "check.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
-#include "trace/span_bound.h"
+#include "nurbs/span_bound.h"
 #include "trace_shapes.h"
 
 /* Samples per span side; differences step (parameter units). */

@@ -9,9 +9,9 @@
 #include <stdlib.h>
 
 #include "common/error.h"
+#include "directional/directional.h"
+#include "directional/line_seeds.h"
 #include "refine/refine.h"
-#include "trace/directional.h"
-#include "trace/line_seeds.h"
 #include "trace/result.h"
 #include "trace/trace.h"
 #include "verify/verify.h"

@@ -23,7 +23,7 @@
  * the surface is.
  */
 #include "bezier/bezier.h"
-#include "trace/line_seeds.h"
+#include "directional/line_seeds.h"
 #include "trace/tracer.h"
 
 static pc_vec3 surface_point(const projcurve_surface *s, double u, double v)

@@ -2,7 +2,7 @@
 /*
  * Ray / control-polygon hits (Moller-Trumbore on each triangle of the net).
  */
-#include "trace/control_polygon.h"
+#include "directional/control_polygon.h"
 
 /* Triangles whose |det| is below this fraction of |e1||e2||dir| are
  * degenerate (or parallel to the ray) and skipped. */

@@ -9,7 +9,7 @@
  * points of d^(a+b) S / du^a dv^b there, and by the convex hull property
  * the largest of their norms bounds the derivative over the span.
  */
-#include "trace/span_bound.h"
+#include "nurbs/span_bound.h"
 
 #include <math.h>
 

@@ -10,12 +10,12 @@
  * per traced point (see docs/tracing.md, "Cost"), so everything here works
  * from the cached evaluation and compares squared norms.
  */
-#include "trace/directional.h"
+#include "directional/directional.h"
 
 #include <math.h>
 
+#include "nurbs/span_bound.h"
 #include "trace/precision.h"
-#include "trace/span_bound.h"
 
 /* Without a third-derivative bound (rational surfaces), a Newton step is in
  * the quadratic regime (its cubic remainder, and the change of the second

@@ -5,14 +5,14 @@
  * polygons' boxes, line/surface intersection, lambda > 0), each polished by
  * the tracing corrector so that it satisfies exactly the equations traced.
  */
-#include "trace/line_seeds.h"
+#include "directional/line_seeds.h"
 
 #include <stdint.h>
 #include <stdlib.h>
 
 #include "bezier/bvh.h"
-#include "trace/control_polygon.h"
 #include "common/error.h"
+#include "directional/control_polygon.h"
 
 /* How far behind P(t), in corrector tolerances, the rays of the search
  * start. */

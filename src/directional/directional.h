@@ -12,8 +12,8 @@
 
 #include "geom/curve.h"
 #include "geom/surface.h"
+#include "nurbs/span_bound_table.h"
 #include "trace/projector.h"
-#include "trace/span_bound_table.h"
 
 /* Evaluation state reused from one call to the next: knot-span hints and the
  * last evaluation, so that derivatives() right after a converged correct()

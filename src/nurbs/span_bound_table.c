@@ -2,13 +2,13 @@
 /*
  * The per-call table of span derivative bounds (span_bound_table.h).
  */
-#include "trace/span_bound_table.h"
+#include "nurbs/span_bound_table.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
-#include "trace/span_bound.h"
+#include "nurbs/span_bound.h"
 
 /* 2^64 / golden ratio: multiplying by it and keeping the top bits spreads
  * consecutive and strided keys evenly (Knuth, TAOCP 3, 6.4); a plain

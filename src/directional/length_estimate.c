@@ -5,7 +5,7 @@
  * Bezier patches (planar triangles, so each sample is a ray/triangle
  * test). The arc-length step is a fraction of it.
  */
-#include "trace/line_seeds.h"
+#include "directional/line_seeds.h"
 
 /* Samples of the curve's polyline. */
 #define PC_ESTIMATE_SAMPLES 64
