@@ -4,8 +4,8 @@
  * into triangles), used by [SY13] s3.3 (estimating the projection's length)
  * and s3.4 (the jump criteria count these hits).
  */
-#ifndef PC_TRACE_CONTROL_POLYGON_H
-#define PC_TRACE_CONTROL_POLYGON_H
+#ifndef PC_DIRECTIONAL_CONTROL_POLYGON_H
+#define PC_DIRECTIONAL_CONTROL_POLYGON_H
 
 #include <stddef.h>
 
@@ -19,4 +19,4 @@
 size_t pc_control_polygon_ray_hits(const pc_bezier_patch *patch, pc_vec3 origin, pc_vec3 dir,
                                    pc_vec3 *out, size_t max);
 
-#endif /* PC_TRACE_CONTROL_POLYGON_H */
+#endif /* PC_DIRECTIONAL_CONTROL_POLYGON_H */

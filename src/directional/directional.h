@@ -5,8 +5,8 @@
  * projection q(t) = (u, v) solves G(u, v, t) = [e1.(S - P); e2.(S - P)] = 0
  * (equivalent to the paper's (3.1)/(3.9); see docs/tracing.md).
  */
-#ifndef PC_TRACE_DIRECTIONAL_H
-#define PC_TRACE_DIRECTIONAL_H
+#ifndef PC_DIRECTIONAL_DIRECTIONAL_H
+#define PC_DIRECTIONAL_DIRECTIONAL_H
 
 #include <stddef.h>
 
@@ -56,4 +56,4 @@ void pc_directional_init(pc_projector *proj, pc_directional_data *data,
 void pc_directional_use_bound_table(pc_directional_cache *cache, pc_span_bound_entry *storage,
                                     size_t slots);
 
-#endif /* PC_TRACE_DIRECTIONAL_H */
+#endif /* PC_DIRECTIONAL_DIRECTIONAL_H */

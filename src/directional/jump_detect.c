@@ -20,11 +20,11 @@
  * handled by the tracer itself: pc_locate_exit.) Any of them asks for a full
  * line/surface intersection. With no active branch, a ray that meets any
  * patch's box asks for one too: the control polygon need not be hit where
- * the surface is.
+ * the surface is. (Matching the points found to the branches is generic:
+ * trace/seed_match.c.)
  */
 #include "bezier/bezier.h"
 #include "directional/line_seeds.h"
-#include "trace/tracer.h"
 
 static pc_vec3 surface_point(const projcurve_surface *s, double u, double v)
 {
@@ -134,27 +134,4 @@ void pc_line_jump_reset(pc_seed_finder *self)
 {
     pc_line_finder *f = self->state;
     f->have_l1 = 0;
-}
-
-void pc_match_seeds(const projcurve_surface *s, const pc_seed *active, size_t n_active,
-                    const pc_seed *found, size_t n_found, double ds, unsigned char *matched)
-{
-    for (size_t k = 0; k < n_found; ++k)
-        matched[k] = 0;
-    for (size_t i = 0; i < n_active; ++i) {
-        const pc_vec3 a = surface_point(s, active[i].u, active[i].v);
-        size_t best = n_found;
-        double best_d = ds;
-        for (size_t k = 0; k < n_found; ++k) {
-            if (matched[k])
-                continue;
-            const double d = vec3_dist(a, surface_point(s, found[k].u, found[k].v));
-            if (d <= best_d) {
-                best = k;
-                best_d = d;
-            }
-        }
-        if (best < n_found)
-            matched[best] = 1;
-    }
 }

@@ -5,8 +5,8 @@
  * (lambda > 0) with S; the jump criteria compare the ray's hits with the
  * control polygons of the patches against the previous ray's.
  */
-#ifndef PC_TRACE_LINE_SEEDS_H
-#define PC_TRACE_LINE_SEEDS_H
+#ifndef PC_DIRECTIONAL_LINE_SEEDS_H
+#define PC_DIRECTIONAL_LINE_SEEDS_H
 
 #include <stddef.h>
 
@@ -65,4 +65,4 @@ int pc_line_polygon_hits(pc_line_finder *f, pc_vec3 origin, pc_polygon_hits *out
  * sample meets them (length_estimate.c). */
 double pc_directional_length_estimate(pc_line_finder *f);
 
-#endif /* PC_TRACE_LINE_SEEDS_H */
+#endif /* PC_DIRECTIONAL_LINE_SEEDS_H */

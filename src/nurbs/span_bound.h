@@ -6,8 +6,8 @@
  * of the projection equations can be accepted without evaluating S again
  * (see docs/tracing.md, "Newton corrector").
  */
-#ifndef PC_TRACE_SPAN_BOUND_H
-#define PC_TRACE_SPAN_BOUND_H
+#ifndef PC_NURBS_SPAN_BOUND_H
+#define PC_NURBS_SPAN_BOUND_H
 
 #include <math.h>
 #include <stddef.h>
@@ -43,4 +43,4 @@ static inline double pc_span_cubic_remainder(const double m3[4], double du, doub
            (1.0 / 6.0); /* a product, not a division: this is on the hot path */
 }
 
-#endif /* PC_TRACE_SPAN_BOUND_H */
+#endif /* PC_NURBS_SPAN_BOUND_H */

@@ -9,8 +9,8 @@
  * owns; filled three quarters, it starts again empty. Without storage it
  * keeps the last span only.
  */
-#ifndef PC_TRACE_SPAN_BOUND_TABLE_H
-#define PC_TRACE_SPAN_BOUND_TABLE_H
+#ifndef PC_NURBS_SPAN_BOUND_TABLE_H
+#define PC_NURBS_SPAN_BOUND_TABLE_H
 
 #include <stddef.h>
 
@@ -52,4 +52,4 @@ const pc_span_bound_entry *pc_span_bound_table_get(pc_span_bound_table *t,
                                                    const pc_nurbs_surface *s, size_t span_u,
                                                    size_t span_v);
 
-#endif /* PC_TRACE_SPAN_BOUND_TABLE_H */
+#endif /* PC_NURBS_SPAN_BOUND_TABLE_H */

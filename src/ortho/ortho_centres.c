@@ -31,7 +31,7 @@ typedef struct vertex {
  * grows towards the fold, so a continuous segment stays well inside. */
 #define GAP_FACTOR 10.0
 /* |det| below this at the end of such a gap: the branch ended at a centre
- * of curvature (as the engine's PC_TRACE_DET_NEAR_FOLD). */
+ * of curvature (as the engine's PC_PROJECTOR_DET_NEAR_FOLD). */
 #define GAP_NEAR_CENTRE 1e-2
 
 /* What the gap test needs at a vertex. */

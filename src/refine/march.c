@@ -26,12 +26,12 @@
 #include <math.h>
 
 #include "refine/refine_internal.h"
-#include "trace/tracer.h"
+#include "trace/projector.h"
 
-/* The tracer's fold threshold on the normalised det J: below it Dir is
- * within ~1e-6 rad of the tangent plane, q' is not resolved, and a branch
- * ends there (a silhouette). The refinement uses the same floor. */
-#define PC_REFINE_DET_FOLD PC_TRACE_DET_FOLD
+/* The fold threshold of the projector contract on the normalised det J:
+ * below it q' is not resolved and the tracer ends a branch there (a
+ * silhouette). The refinement uses the same floor. */
+#define PC_REFINE_DET_FOLD PC_PROJECTOR_DET_FOLD
 
 #define PC_MARCH_GROW_MAX 2.0     /* largest step growth after a success */
 #define PC_MARCH_SHRINK_MIN 0.1   /* largest step cut after a failure */

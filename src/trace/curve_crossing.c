@@ -28,7 +28,7 @@ int pc_trace_behind(const pc_tracer *tr, const pc_proj_point *p)
 {
     if (!tr->ray)
         return 0;
-    const double cosine = fmax(fabs(p->det), PC_TRACE_DET_FOLD);
+    const double cosine = fmax(fabs(p->det), PC_PROJECTOR_DET_FOLD);
     const double band = fmax(tr->behind_tol, tr->lambda_tol * (1.0 + 1.0 / cosine));
     return pc_trace_lambda(tr, p) < -band;
 }

@@ -15,6 +15,16 @@
 #include "geom/curve.h"
 #include "geom/surface.h"
 
+/* A branch ends at a fold when |det| (normalised, see pc_proj_point) falls
+ * below this: the Jacobian of F is then singular to ~1e-6 of its scale
+ * (directional: Dir within ~1e-6 rad of the tangent plane), q' is not
+ * resolved. The tracer ends branches there and the refinement takes the
+ * same floor. */
+#define PC_PROJECTOR_DET_FOLD 1e-6
+/* When the step cannot be made to succeed, a |det| below this says the
+ * branch stalled at a fold rather than failed. */
+#define PC_PROJECTOR_DET_NEAR_FOLD 1e-2
+
 typedef struct pc_projector pc_projector;
 
 /* Local state at (t, u, v): filled by pc_projector.derivatives. */

@@ -193,7 +193,7 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
 /* Why a branch whose step cannot be made to succeed stops. */
 static projcurve_branch_end stall_reason(const pc_proj_point *cur)
 {
-    return fabs(cur->det) < PC_TRACE_DET_NEAR_FOLD ? PROJCURVE_END_SILHOUETTE
+    return fabs(cur->det) < PC_PROJECTOR_DET_NEAR_FOLD ? PROJCURVE_END_SILHOUETTE
                                                    : PROJCURVE_END_FAILED;
 }
 
@@ -275,7 +275,7 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             *why = PROJCURVE_END_CURVE_END;
             return PROJCURVE_OK;
         }
-        if (fabs(cur->det) < PC_TRACE_DET_FOLD) {
+        if (fabs(cur->det) < PC_PROJECTOR_DET_FOLD) {
             *why = PROJCURVE_END_SILHOUETTE;
             return PROJCURVE_OK;
         }

@@ -11,12 +11,6 @@
 
 #include "trace/trace.h"
 
-/* A branch ends at a fold when |det| (normalised, see pc_proj_point) falls
- * below this: Dir is then within ~1e-6 rad of the tangent plane. */
-#define PC_TRACE_DET_FOLD 1e-6
-/* When the step cannot be made to succeed, a |det| below this says the
- * branch stalled at a fold rather than failed. */
-#define PC_TRACE_DET_NEAR_FOLD 1e-2
 /* A corrected point farther than this fraction of the predicted step from
  * the prediction, in (u, v) and on S, is taken as a jump to another sheet,
  * and the step is cut. */
