@@ -7,16 +7,18 @@
  */
 #include "directional/line_seeds.h"
 
-#include <stdint.h>
 #include <stdlib.h>
 
 #include "bezier/bvh.h"
+#include "common/array.h"
 #include "common/error.h"
 #include "directional/control_polygon.h"
 
 /* How far behind P(t), in corrector tolerances, the rays of the search
  * start. */
 #define PC_SEED_BEHIND 4.0
+/* Smallest capacity of the finder's arrays (candidate patches, polygon hits). */
+#define PC_LINE_LIST_MIN_CAPACITY 16
 
 static projcurve_status line_find(pc_seed_finder *self, projcurve_context *ctx, double t,
                                   pc_seed_list *out)
@@ -63,8 +65,8 @@ void pc_line_finder_init(pc_line_finder *f, const pc_projector *proj, pc_vec3 un
 void pc_line_finder_free(pc_line_finder *f)
 {
     pc_hit_list_free(&f->hits);
-    free(f->l1.items);
-    free(f->l2.items);
+    PC_ARRAY_FREE(&f->l1);
+    PC_ARRAY_FREE(&f->l2);
     free(f->patches);
     *f = (pc_line_finder){0};
 }
@@ -73,15 +75,14 @@ void pc_line_finder_free(pc_line_finder *f)
 static int collect_patch(void *user, size_t patch_index)
 {
     pc_line_finder *f = user;
-    if (f->n_patches == f->cap_patches) {
-        const size_t cap = f->cap_patches ? 2 * f->cap_patches : 16;
-        size_t *p = cap <= SIZE_MAX / sizeof *p ? realloc(f->patches, cap * sizeof *p) : NULL;
-        if (p == NULL) {
-            f->patches_incomplete = 1;
-            return 1; /* stop the walk */
-        }
-        f->patches = p;
-        f->cap_patches = cap;
+    void *items = f->patches;
+    const projcurve_status st =
+        pc_array_reserve(NULL, &items, &f->cap_patches, f->n_patches, f->n_patches + 1,
+                         sizeof *f->patches, PC_LINE_LIST_MIN_CAPACITY, NULL, "candidate patches");
+    f->patches = items;
+    if (st != PROJCURVE_OK) {
+        f->patches_incomplete = 1;
+        return 1; /* stop the walk */
     }
     f->patches[f->n_patches++] = patch_index;
     return 0;
@@ -89,14 +90,11 @@ static int collect_patch(void *user, size_t patch_index)
 
 static int push_polygon_hit(pc_polygon_hits *l, size_t patch, pc_vec3 x)
 {
-    if (l->count == l->capacity) {
-        const size_t cap = l->capacity ? 2 * l->capacity : 16;
-        pc_polygon_hit *p = cap <= SIZE_MAX / sizeof *p ? realloc(l->items, cap * sizeof *p) : NULL;
-        if (p == NULL)
-            return 0;
-        l->items = p;
-        l->capacity = cap;
-    }
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, NULL, l, l->count + 1, PC_LINE_LIST_MIN_CAPACITY,
+                     "control-polygon hits");
+    if (st != PROJCURVE_OK)
+        return 0;
     l->items[l->count].patch = patch;
     l->items[l->count].x = x;
     l->count++;

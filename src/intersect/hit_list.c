@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "intersect/ray_patch.h"
 
@@ -31,21 +32,14 @@
 
 projcurve_status pc_hit_list_push(projcurve_context *ctx, pc_hit_list *list, pc_hit hit)
 {
-    if (list->count == list->capacity) {
-        const size_t cap = list->capacity ? 2 * list->capacity : PC_HIT_LIST_MIN_CAPACITY;
-        if (cap > SIZE_MAX / sizeof *list->items)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "hit list of %zu hits is too large", cap);
-        pc_hit *items = list->items_borrowed ? malloc(cap * sizeof *items)
-                                             : realloc(list->items, cap * sizeof *items);
-        if (items == NULL)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "cannot grow the hit list to %zu hits",
-                           cap);
-        if (list->items_borrowed && list->count > 0)
-            memcpy(items, list->items, list->count * sizeof *items);
-        list->items = items;
-        list->capacity = cap;
-        list->items_borrowed = 0;
-    }
+    void *items = list->items;
+    const projcurve_status st =
+        pc_array_reserve(ctx, &items, &list->capacity, list->count, list->count + 1,
+                         sizeof *list->items, PC_HIT_LIST_MIN_CAPACITY, &list->items_borrowed,
+                         "the hit list");
+    list->items = items;
+    if (st != PROJCURVE_OK)
+        return st;
     list->items[list->count++] = hit;
     return PROJCURVE_OK;
 }

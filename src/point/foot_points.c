@@ -20,9 +20,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "point/point.h"
 #include "point/subdivide.h"
+
+/* Smallest capacity of a foot list. */
+#define PC_FOOT_LIST_MIN_CAPACITY 16
 
 #define FEET_FLATNESS 0.15
 /* Two foot points closer than this fraction of the domain in both
@@ -54,24 +58,17 @@ typedef struct feet_search {
 
 void pc_foot_list_free(pc_foot_list *list)
 {
-    free(list->items);
-    list->items = NULL;
-    list->count = list->capacity = 0;
+    PC_ARRAY_FREE(list);
 }
 
 static int push_foot(feet_search *fs, double u, double v)
 {
     pc_foot_list *l = fs->list;
-    if (l->count == l->capacity) {
-        const size_t cap = l->capacity ? 2 * l->capacity : 16;
-        pc_surface_point *items =
-            cap <= SIZE_MAX / sizeof *items ? realloc(l->items, cap * sizeof *items) : NULL;
-        if (items == NULL) {
-            fs->status = pc_fail(fs->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for foot points");
-            return 0;
-        }
-        l->items = items;
-        l->capacity = cap;
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, fs->ctx, l, l->count + 1, PC_FOOT_LIST_MIN_CAPACITY, "the foot points");
+    if (st != PROJCURVE_OK) {
+        fs->status = st;
+        return 0;
     }
     pc_surface_point *f = &l->items[l->count++];
     f->u = u;

@@ -1,12 +1,10 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Growable vertex lists of the refinement. Growth doubles the capacity, so a
- * branch of n vertices costs O(log n) allocations, none per vertex.
+ * Growable vertex lists of the refinement (common/array.h arrays: a branch
+ * of n vertices costs O(log n) allocations, none per vertex), and the
+ * output of a vertex under the refinement's limits.
  */
-#include <stdint.h>
-#include <stdlib.h>
-
-#include "common/error.h"
+#include "common/array.h"
 #include "refine/refine_internal.h"
 
 #define PC_VERTEX_LIST_MIN_CAPACITY 64
@@ -14,28 +12,16 @@
 projcurve_status pc_vertex_list_push(projcurve_context *ctx, pc_vertex_list *list,
                                      const pc_rvertex *v)
 {
-    if (list->count == list->capacity) {
-        const size_t cap = list->capacity ? 2 * list->capacity : PC_VERTEX_LIST_MIN_CAPACITY;
-        if (cap > SIZE_MAX / sizeof *list->items)
-            return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "refined polyline too long (%zu vertices)",
-                           list->count);
-        pc_rvertex *items = realloc(list->items, cap * sizeof *items);
-        if (items == NULL)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY,
-                           "out of memory growing a refined polyline to %zu vertices", cap);
-        list->items = items;
-        list->capacity = cap;
-    }
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, ctx, list, list->count + 1, PC_VERTEX_LIST_MIN_CAPACITY,
+                     "a refined polyline");
+    if (st != PROJCURVE_OK)
+        return st;
     list->items[list->count++] = *v;
     return PROJCURVE_OK;
 }
 
-void pc_vertex_list_free(pc_vertex_list *list)
-{
-    free(list->items);
-    list->items = NULL;
-    list->count = list->capacity = 0;
-}
+void pc_vertex_list_free(pc_vertex_list *list) { PC_ARRAY_FREE(list); }
 
 projcurve_status pc_refine_output(pc_refiner *r, pc_vertex_list *out, const pc_rvertex *v)
 {

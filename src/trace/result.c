@@ -1,40 +1,18 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * Allocation helpers of the projection result (result.h). Arrays grow by
- * doubling so that appending a traced vertex costs O(1) amortised; every
- * size computation is checked for overflow.
+ * Allocation helpers of the projection result (result.h). Its arrays grow
+ * as every growable array does (common/array.h), so that appending a traced
+ * vertex costs O(1) amortised.
  */
 #include "trace/result.h"
 
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 
 #define PC_RESULT_INITIAL_CAPACITY 16
-
-/* Grows *items (element size `size`) to hold at least `need` elements. */
-static projcurve_status grow(projcurve_context *ctx, void **items, size_t *cap, size_t need,
-                             size_t size)
-{
-    if (need <= *cap)
-        return PROJCURVE_OK;
-    size_t n = *cap ? *cap : PC_RESULT_INITIAL_CAPACITY;
-    while (n < need) {
-        if (n > SIZE_MAX / 2)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "result array size overflows");
-        n *= 2;
-    }
-    if (n > SIZE_MAX / size)
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "result array size overflows");
-    void *p = realloc(*items, n * size);
-    if (p == NULL)
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory growing a result array");
-    *items = p;
-    *cap = n;
-    return PROJCURVE_OK;
-}
 
 projcurve_status pc_result_create(projcurve_context *ctx, int point_dim, projcurve_result **out)
 {
@@ -50,8 +28,9 @@ projcurve_status pc_result_add_branch(projcurve_context *ctx, projcurve_result *
                                       pc_branch **branch)
 {
     void *items = r->branches;
-    projcurve_status st =
-        grow(ctx, &items, &r->cap_branches, r->n_branches + 1, sizeof *r->branches);
+    const projcurve_status st =
+        pc_array_reserve(ctx, &items, &r->cap_branches, r->n_branches, r->n_branches + 1,
+                         sizeof *r->branches, PC_RESULT_INITIAL_CAPACITY, NULL, "the branches");
     r->branches = items;
     if (st != PROJCURVE_OK)
         return st;
@@ -64,14 +43,12 @@ projcurve_status pc_result_add_branch(projcurve_context *ctx, projcurve_result *
 static projcurve_status reserve_points(projcurve_context *ctx, pc_branch *b, int point_dim,
                                        size_t n)
 {
-    const size_t dim = (size_t)point_dim;
-    size_t cap_doubles = b->cap_points * dim;
-    if (n > SIZE_MAX / dim)
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "branch point count overflows");
     void *items = b->points;
-    projcurve_status st = grow(ctx, &items, &cap_doubles, n * dim, sizeof(double));
+    const projcurve_status st =
+        pc_array_reserve(ctx, &items, &b->cap_points, b->n_points, n,
+                         (size_t)point_dim * sizeof *b->points, PC_RESULT_INITIAL_CAPACITY, NULL,
+                         "a branch's points");
     b->points = items;
-    b->cap_points = cap_doubles / dim;
     return st;
 }
 
@@ -119,7 +96,9 @@ projcurve_status pc_branch_add_piece(projcurve_context *ctx, pc_branch *b, int d
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory adding a piece");
     }
     void *items = b->pieces;
-    projcurve_status st = grow(ctx, &items, &b->cap_pieces, b->n_pieces + 1, sizeof *b->pieces);
+    const projcurve_status st =
+        pc_array_reserve(ctx, &items, &b->cap_pieces, b->n_pieces, b->n_pieces + 1,
+                         sizeof *b->pieces, PC_RESULT_INITIAL_CAPACITY, NULL, "a branch's pieces");
     b->pieces = items;
     if (st != PROJCURVE_OK) {
         free(c);

@@ -1,33 +1,21 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The growable seed list of trace.h.
+ * The growable seed list of trace.h (a common/array.h array).
  */
-#include <stdint.h>
-#include <stdlib.h>
-
-#include "common/error.h"
+#include "common/array.h"
 #include "trace/trace.h"
+
+#define PC_SEED_LIST_MIN_CAPACITY 8
 
 projcurve_status pc_seed_list_push(projcurve_context *ctx, pc_seed_list *list, double t,
                                    double u, double v)
 {
-    if (list->count == list->capacity) {
-        const size_t cap = list->capacity ? 2 * list->capacity : 8;
-        if (cap > SIZE_MAX / sizeof *list->items)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "seed list size overflows");
-        pc_seed *p = realloc(list->items, cap * sizeof *p);
-        if (p == NULL)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory growing a seed list");
-        list->items = p;
-        list->capacity = cap;
-    }
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, ctx, list, list->count + 1, PC_SEED_LIST_MIN_CAPACITY, "a seed list");
+    if (st != PROJCURVE_OK)
+        return st;
     list->items[list->count++] = (pc_seed){t, u, v};
     return PROJCURVE_OK;
 }
 
-void pc_seed_list_free(pc_seed_list *list)
-{
-    free(list->items);
-    list->items = NULL;
-    list->count = list->capacity = 0;
-}
+void pc_seed_list_free(pc_seed_list *list) { PC_ARRAY_FREE(list); }
