@@ -41,7 +41,7 @@ static const pc_option_desc pc_option_table[] = {
     /* the default 0 is no value a caller can set: it marks eps_D as unset,
      * which the projection resolves to 1e-4 of the model size */
     {PROJCURVE_OPT_TOL_DISTANCE, "TOL_DISTANCE", PROJCURVE_OPTION_DOUBLE,
-     0.0, PC_OPTION_LENGTH_LIMIT, 1, 0.0, PC_FIELD(tol_distance)},
+     0.0, PC_OPTION_LENGTH_LIMIT, 1, PC_DEFAULT_TOL_DISTANCE, PC_FIELD(tol_distance)},
     {PROJCURVE_OPT_TOL_ANGLE_DEG, "TOL_ANGLE_DEG", PROJCURVE_OPTION_DOUBLE,
      0.0, 90.0, 1, PC_DEFAULT_TOL_ANGLE_DEG, PC_FIELD(tol_angle_deg)},
     {PROJCURVE_OPT_NEWTON_TOL, "NEWTON_TOL", PROJCURVE_OPTION_DOUBLE,
@@ -50,9 +50,9 @@ static const pc_option_desc pc_option_table[] = {
      1.0, 200.0, 0, PC_DEFAULT_NEWTON_MAX_ITER, PC_FIELD(newton_max_iter)},
     {PROJCURVE_OPT_METHOD, "METHOD", PROJCURVE_OPTION_INTEGER,
      (double)PROJCURVE_METHOD_SECOND_ORDER, (double)PROJCURVE_METHOD_RK4, 0,
-     (double)PROJCURVE_METHOD_SECOND_ORDER, PC_FIELD(method)},
+     (double)PC_DEFAULT_METHOD, PC_FIELD(method)},
     {PROJCURVE_OPT_PARAM_STEP, "PARAM_STEP", PROJCURVE_OPTION_DOUBLE,
-     0.0, PC_OPTION_LENGTH_LIMIT, 0, 0.0, PC_FIELD(param_step)},
+     0.0, PC_OPTION_LENGTH_LIMIT, 0, PC_DEFAULT_PARAM_STEP, PC_FIELD(param_step)},
     {PROJCURVE_OPT_ARC_STEP_FRACTION, "ARC_STEP_FRACTION", PROJCURVE_OPTION_DOUBLE,
      1e-7, 1.0, 0, PC_DEFAULT_ARC_STEP_FRACTION, PC_FIELD(arc_step_fraction)},
     {PROJCURVE_OPT_MAX_POINTS, "MAX_POINTS", PROJCURVE_OPTION_INTEGER,
@@ -60,14 +60,14 @@ static const pc_option_desc pc_option_table[] = {
     {PROJCURVE_OPT_MAX_PIECES, "MAX_PIECES", PROJCURVE_OPTION_INTEGER,
      1.0, PC_OPTION_SIZE_LIMIT, 0, PC_DEFAULT_MAX_PIECES, PC_FIELD(max_pieces)},
     {PROJCURVE_OPT_COMPOSE, "COMPOSE", PROJCURVE_OPTION_INTEGER,
-     0.0, 1.0, 0, 1.0, PC_FIELD(compose)},
+     0.0, 1.0, 0, PC_DEFAULT_COMPOSE, PC_FIELD(compose)},
     {PROJCURVE_OPT_JUMP_DETECTION, "JUMP_DETECTION", PROJCURVE_OPTION_INTEGER,
-     0.0, 1.0, 0, 1.0, PC_FIELD(jump_detection)},
+     0.0, 1.0, 0, PC_DEFAULT_JUMP_DETECTION, PC_FIELD(jump_detection)},
     {PROJCURVE_OPT_PCURVE_DEGREE, "PCURVE_DEGREE", PROJCURVE_OPTION_INTEGER,
-     1.0, 3.0, 0, 1.0, PC_FIELD(pcurve_degree)},
+     1.0, 3.0, 0, PC_DEFAULT_PCURVE_DEGREE, PC_FIELD(pcurve_degree)},
     {PROJCURVE_OPT_FOOT_POINTS, "FOOT_POINTS", PROJCURVE_OPTION_INTEGER,
      (double)PROJCURVE_FOOT_POINTS_MINIMA, (double)PROJCURVE_FOOT_POINTS_ALL, 0,
-     (double)PROJCURVE_FOOT_POINTS_MINIMA, PC_FIELD(foot_points)},
+     (double)PC_DEFAULT_FOOT_POINTS, PC_FIELD(foot_points)},
     {PROJCURVE_OPT_TIME_LIMIT, "TIME_LIMIT", PROJCURVE_OPTION_DOUBLE,
      0.0, PC_OPTION_TIME_LIMIT, 0, 0.0, PC_FIELD(time_limit)},
     {PROJCURVE_OPT_MAX_WORK, "MAX_WORK", PROJCURVE_OPTION_INTEGER,
@@ -192,19 +192,9 @@ projcurve_status pc_options_check(projcurve_context *ctx, const struct projcurve
 void pc_options_to_params(const struct projcurve_options *o, pc_params *p)
 {
     pc_params_defaults(p);
-    p->tol_distance = o->tol_distance;
-    p->tol_angle_deg = o->tol_angle_deg;
-    p->newton_tol = o->newton_tol;
-    p->newton_max_iter = o->newton_max_iter;
-    p->method = o->method;
-    p->param_step = o->param_step;
-    p->arc_step_fraction = o->arc_step_fraction;
-    p->max_points = o->max_points;
-    p->max_pieces = o->max_pieces;
-    p->compose = o->compose;
-    p->jump_detection = o->jump_detection;
-    p->pcurve_degree = o->pcurve_degree;
-    p->foot_points = o->foot_points;
+#define PC_COPY_FIELD(type, field) p->field = o->field;
+    PC_PARAMS_OPTIONS(PC_COPY_FIELD)
+#undef PC_COPY_FIELD
 }
 
 projcurve_status projcurve_options_create(projcurve_context *ctx, projcurve_options **out)

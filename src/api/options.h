@@ -10,19 +10,9 @@
 #include "projcurve.h"
 
 struct projcurve_options {
-    double tol_distance;       /* eps_D; 0 = unset, automatic (setters reject 0) */
-    double tol_angle_deg;      /* eps_T */
-    double newton_tol;         /* relative to model size */
-    long long newton_max_iter;
-    long long method;          /* PROJCURVE_METHOD_* */
-    double param_step;         /* 0 = arc-length stepping */
-    double arc_step_fraction;
-    long long max_points;
-    long long max_pieces;
-    long long compose;
-    long long jump_detection;
-    long long pcurve_degree;   /* 1 or 3: PROJCURVE_OPT_PCURVE_DEGREE */
-    long long foot_points;     /* PROJCURVE_FOOT_POINTS_*: PROJCURVE_OPT_FOOT_POINTS */
+    /* what the engine reads (common/params.h); tol_distance 0 is unset,
+     * automatic (the setters reject 0) */
+    PC_PARAMS_OPTIONS(PC_PARAMS_DECLARE_FIELD)
     double time_limit;         /* seconds per call, 0 = none: PROJCURVE_OPT_TIME_LIMIT */
     long long max_work;        /* units per call, 0 = none: PROJCURVE_OPT_MAX_WORK */
     projcurve_progress_fn progress; /* projcurve_options_set_progress; NULL = none */

@@ -11,19 +11,19 @@
 void pc_params_defaults(pc_params *p)
 {
     *p = (pc_params){
-        .tol_distance = 0.0,
+        .tol_distance = PC_DEFAULT_TOL_DISTANCE,
         .tol_angle_deg = PC_DEFAULT_TOL_ANGLE_DEG,
         .newton_tol = PC_DEFAULT_NEWTON_TOL,
         .newton_max_iter = PC_DEFAULT_NEWTON_MAX_ITER,
-        .method = PROJCURVE_METHOD_SECOND_ORDER,
-        .param_step = 0.0,
+        .method = PC_DEFAULT_METHOD,
+        .param_step = PC_DEFAULT_PARAM_STEP,
         .arc_step_fraction = PC_DEFAULT_ARC_STEP_FRACTION,
         .max_points = PC_DEFAULT_MAX_POINTS,
         .max_pieces = PC_DEFAULT_MAX_PIECES,
-        .compose = 1,
-        .jump_detection = 1,
-        .pcurve_degree = 1,
-        .foot_points = PROJCURVE_FOOT_POINTS_MINIMA,
+        .compose = PC_DEFAULT_COMPOSE,
+        .jump_detection = PC_DEFAULT_JUMP_DETECTION,
+        .pcurve_degree = PC_DEFAULT_PCURVE_DEGREE,
+        .foot_points = PC_DEFAULT_FOOT_POINTS,
         .budget = NULL,
         .sweep_criteria_only = 0,
     };

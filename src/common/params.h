@@ -14,12 +14,19 @@
 
 /* The defaults of the options that reach the engine (projcurve.h states
  * them; the options table of src/api/options.c reads them from here). */
+#define PC_DEFAULT_TOL_DISTANCE 0.0 /* unset: automatic */
 #define PC_DEFAULT_TOL_ANGLE_DEG 1.0
 #define PC_DEFAULT_NEWTON_TOL 1e-12
 #define PC_DEFAULT_NEWTON_MAX_ITER 20
 #define PC_DEFAULT_ARC_STEP_FRACTION (1.0 / 64.0)
 #define PC_DEFAULT_MAX_POINTS 10000000
 #define PC_DEFAULT_MAX_PIECES 1000000
+#define PC_DEFAULT_METHOD PROJCURVE_METHOD_SECOND_ORDER
+#define PC_DEFAULT_PARAM_STEP 0.0 /* arc-length stepping */
+#define PC_DEFAULT_COMPOSE 1
+#define PC_DEFAULT_JUMP_DETECTION 1
+#define PC_DEFAULT_PCURVE_DEGREE 1
+#define PC_DEFAULT_FOOT_POINTS PROJCURVE_FOOT_POINTS_MINIMA
 
 /* Automatic eps_D, while TOL_DISTANCE is unset: this fraction of the model
  * size (projcurve.h). */
@@ -31,20 +38,31 @@
  * where it cannot follow it) rather than the curve. */
 #define PC_MIN_TOL_DISTANCE 1e-12
 
+/* The options the engine reads, X(type, field), each the value of the
+ * PROJCURVE_OPT_ key of that name: the one list from which both pc_params
+ * and the options handle (api/options.h) declare their fields and the
+ * handle is copied into the parameters, so the two cannot drift apart. */
+#define PC_PARAMS_OPTIONS(X)                                                               \
+    X(double, tol_distance)      /* eps_D; 0 = unset: automatic */                         \
+    X(double, tol_angle_deg)     /* eps_T */                                               \
+    X(double, newton_tol)        /* relative to model size */                              \
+    X(long long, newton_max_iter)                                                          \
+    X(long long, method)         /* PROJCURVE_METHOD_* */                                  \
+    X(double, param_step)        /* 0 = arc-length stepping */                             \
+    X(double, arc_step_fraction)                                                           \
+    X(long long, max_points)                                                               \
+    X(long long, max_pieces)                                                               \
+    X(long long, compose)                                                                  \
+    X(long long, jump_detection)                                                           \
+    X(long long, pcurve_degree)  /* 1 or 3 */                                              \
+    X(long long, foot_points)    /* PROJCURVE_FOOT_POINTS_* */
+
+#define PC_PARAMS_DECLARE_FIELD(type, field) type field;
+
 typedef struct pc_params {
-    double tol_distance;       /* eps_D, model units; 0 = automatic (not yet resolved) */
-    double tol_angle_deg;      /* eps_T */
-    double newton_tol;         /* relative to model size */
-    long long newton_max_iter;
-    long long method;          /* PROJCURVE_METHOD_* */
-    double param_step;         /* 0 = arc-length stepping */
-    double arc_step_fraction;
-    long long max_points;
-    long long max_pieces;
-    long long compose;
-    long long jump_detection;
-    long long pcurve_degree;   /* 1 or 3 */
-    long long foot_points;     /* PROJCURVE_FOOT_POINTS_* */
+    /* tol_distance is in model units once the entry point has resolved it
+     * (pc_params_distance_tolerance); 0 before. */
+    PC_PARAMS_OPTIONS(PC_PARAMS_DECLARE_FIELD)
     /* The budget of the call under way, made by the entry point from
      * TIME_LIMIT, MAX_WORK and the progress callback; NULL: no budget. */
     pc_budget *budget;

@@ -60,23 +60,12 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
             st = cs;
     }
     /* only verified branches are returned, also from a partial result */
-    if (pc_status_keeps_result(st)) {
-        const projcurve_status vs = pc_verify_result(ctx, &proj, p, r);
-        if (vs != PROJCURVE_OK)
-            st = vs;
-    }
+    st = pc_verify_kept(ctx, &proj, p, r, st);
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     if (finder.no_memory && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))
         st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for the control-polygon hits");
     pc_line_finder_free(&finder);
     free(bound_table);
-    if (st == PROJCURVE_OK)
-        pc_budget_finish(budget);
-    if (!pc_status_keeps_result(st)) {
-        projcurve_result_destroy(r);
-        return st;
-    }
-    *out = r;
-    return st;
+    return pc_result_hand_out(st, budget, r, out);
 }

@@ -72,11 +72,7 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
         }
     }
     /* only verified branches are returned, also from a partial result */
-    if (pc_status_keeps_result(status)) {
-        const projcurve_status vs = pc_verify_result(ctx, &proj, p, r);
-        if (vs != PROJCURVE_OK)
-            status = vs;
-    }
+    status = pc_verify_kept(ctx, &proj, p, r, status);
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */
     if (cache.callback_failed && pc_status_keeps_result(status))
@@ -84,14 +80,7 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
     if (status == PROJCURVE_OK)
         status = traced;
     pc_ortho_finder_free(&finder_state);
-    if (status == PROJCURVE_OK)
-        pc_budget_finish(budget);
-    if (!pc_status_keeps_result(status)) {
-        projcurve_result_destroy(r);
-        return status;
-    }
-    *out = r;
-    return status;
+    return pc_result_hand_out(status, budget, r, out);
 }
 
 projcurve_status pc_ortho_project_implicit(projcurve_context *ctx, projcurve_implicit_fn fn,
@@ -124,13 +113,7 @@ projcurve_status pc_ortho_project_implicit(projcurve_context *ctx, projcurve_imp
         pc_budget_stage(budget, 0.5, 1.0);
         status = pc_implicit_fit(ctx, &imp, eps_d, p, r);
     }
-    if (status == PROJCURVE_OK)
-        pc_budget_finish(budget);
-    if (!pc_status_keeps_result(status)) {
-        projcurve_result_destroy(r);
-        return status;
-    }
-    r->stats.tol_distance = eps_d;
-    *out = r;
-    return status;
+    if (pc_status_keeps_result(status))
+        r->stats.tol_distance = eps_d;
+    return pc_result_hand_out(status, budget, r, out);
 }

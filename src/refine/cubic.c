@@ -107,17 +107,7 @@ projcurve_status pc_refine_add_cubic_piece(pc_refiner *r, pc_branch *b, const pc
     const int n = pc_compose_poly(patch, 3, uv, cw);
     if (n < 0)
         return PROJCURVE_OK;
-    double ctrl[3 * (PC_PIECE_MAX_DEGREE + 1)], weights[PC_PIECE_MAX_DEGREE + 1];
-    if (rational) {
-        pc_compose_to_cartesian(n, cw, ctrl, weights);
-    } else { /* weights are 1 up to rounding: keep the polynomial form exact */
-        for (int k = 0; k <= n; ++k)
-            for (int c = 0; c < 3; ++c)
-                ctrl[3 * k + c] = cw[4 * k + c];
-    }
-    const double ends[4] = {from->u, from->v, to->u, to->v};
-    const projcurve_status st = pc_branch_add_piece(r->ctx, b, n, from->t, to->t, ends, ctrl,
-                                                    rational ? weights : NULL);
+    const projcurve_status st = pc_refine_store_piece(r, b, n, cw, rational, from, to);
     if (st == PROJCURVE_OK) {
         pc_branch_set_last_pcurve(b, 3, uv);
         *done = 1;

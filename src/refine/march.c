@@ -108,23 +108,12 @@ static double angle_between(pc_vec3 a, pc_vec3 b)
     return atan2(vec3_norm(vec3_cross(a, b)), vec3_dot(a, b));
 }
 
-/* End tangent directions of a rational Bezier curve: the derivative of
- * A / w at an end is (A' - w' C) / w with A' = n (cw_1 - cw_0); only its
- * direction is needed, so the positive factors are dropped. */
-static pc_vec3 end_direction(const double *end, const double *next)
-{
-    const double w = end[3];
-    const pc_vec3 c = vec3(end[0] / w, end[1] / w, end[2] / w);
-    const pc_vec3 d = vec3(next[0] - end[0], next[1] - end[1], next[2] - end[2]);
-    return vec3_axpy(d, -(next[3] - end[3]), c);
-}
-
 /* The larger angle between the composed curve's end tangents and the exact
  * tangents t0 (start) and t1 (end). */
 static double end_angle(int n, const double *cw, pc_vec3 t0, pc_vec3 t1)
 {
-    const pc_vec3 c0 = end_direction(cw, cw + 4);
-    const pc_vec3 c1 = vec3_scale(end_direction(cw + 4 * n, cw + 4 * (n - 1)), -1.0);
+    const pc_vec3 c0 = pc_refine_end_direction(n, cw, 0);
+    const pc_vec3 c1 = pc_refine_end_direction(n, cw, 1);
     const double a0 = angle_between(c0, t0), a1 = angle_between(c1, t1);
     return a0 > a1 ? a0 : a1;
 }
@@ -143,28 +132,33 @@ static double step_factor(double ratio_d, double ratio_a)
     return f;
 }
 
-/* The candidate end for a step h from cur towards the run end b. */
-static int candidate(pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b, double h,
-                     pc_rvertex *cand)
+/* Restarts the march at v, the end of a gap just output: the tangent on
+ * from v into *t_cur, the step of the last accepted piece, no rejection. */
+static void restart_after_gap(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *b,
+                              pc_rvertex *cur, pc_vec3 *t_cur, double *h, double h_ok,
+                              int *rejections)
 {
-    const double remaining = b->t - cur->t;
-    if (h >= remaining) {
-        *cand = *b;
-        return 1;
-    }
-    if (h > 0.5 * remaining) /* two balanced pieces rather than a long and a sliver */
-        h = 0.5 * remaining;
-    return pc_refine_exact_point(r, cur, b, cur->t + h, cand);
+    *cur = *v;
+    *t_cur = pc_refine_exact_tangent(r, cur, b);
+    keep_derivative(r, cur);
+    *h = h_ok;
+    *rejections = 0;
 }
 
-/* The first traced vertex after cur (or b): what is known of the curve when
- * the corrector cannot reach it. */
-static pc_rvertex next_known(const pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b)
+/* The ratios of the piece cur-cand in patch to its bounds: its end angles
+ * to the exact tangents t_cur, t_cand over eps_T / 2 (*ratio_a), and,
+ * only when that passes (the cheap test first), its distance to the exact
+ * curve over eps_D (*ratio_d, else 0). */
+static void measure_piece(pc_refiner *r, const pc_bezier_patch *patch, const pc_rvertex *cur,
+                          const pc_rvertex *cand, pc_vec3 t_cur, pc_vec3 t_cand,
+                          double *ratio_d, double *ratio_a)
 {
-    size_t k = pc_refine_guide_index(r, cur->t);
-    while (k < r->n_guide && !(r->guide[k].t > cur->t))
-        ++k;
-    return k < r->n_guide && r->guide[k].t < b->t ? r->guide[k] : *b;
+    double cw[PC_PIECE_MAX_CW], t_far;
+    const int n = pc_refine_compose(patch, cur, cand, cw);
+    *ratio_a = end_angle(n, cw, t_cur, t_cand) / r->half_angle;
+    *ratio_d = 0.0;
+    if (*ratio_a <= 1.0)
+        *ratio_d = pc_refine_deviation(r, n, cw, cur, cand, r->eps_d, &t_far) / r->eps_d;
 }
 
 projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
@@ -178,7 +172,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
     int rejections = 0;
     while (cur.t < b->t) {
         pc_rvertex cand;
-        int reached = candidate(r, &cur, b, h, &cand);
+        int reached = pc_refine_march_candidate(r, &cur, b, h, &cand);
         if (reached && pc_refine_common_patch(r, &cur, &cand) == NULL)
             reached = pc_refine_knot_crossing(r, &cur, &cand, &cand);
         /* A candidate that does not advance in t (a knot-line crossing found
@@ -194,28 +188,20 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
                 continue;
             /* The exact curve is out of reach from cur: a gap up to the
              * next exact point known (never a vertex off the projection). */
-            cand = next_known(r, &cur, b);
+            cand = pc_refine_next_known(r, &cur, b);
             const projcurve_status st = pc_refine_output_gap(r, out, &cand, PC_GAP_FAILED);
             if (st != PROJCURVE_OK)
                 return st;
-            t_cur = pc_refine_exact_tangent(r, &cand, b);
-            keep_derivative(r, &cand);
-            cur = cand;
-            h = h_ok;
-            rejections = 0;
+            restart_after_gap(r, &cand, b, &cur, &t_cur, &h, h_ok, &rejections);
             continue;
         }
         const pc_bezier_patch *patch = pc_refine_common_patch(r, &cur, &cand);
         const double hh = cand.t - cur.t;
-        double ratio_d = 0.0, ratio_a = 0.0, t_far;
         const pc_vec3 t_cand = pc_refine_exact_tangent(r, &cand, &cur);
         const int singular = r->last_singular && cand.t < b->t;
         keep_derivative(r, &cand);
-        double cw[PC_PIECE_MAX_CW];
-        const int n = pc_refine_compose(patch, &cur, &cand, cw);
-        ratio_a = end_angle(n, cw, t_cur, t_cand) / r->half_angle;
-        if (ratio_a <= 1.0) /* the cheap angle test first */
-            ratio_d = pc_refine_deviation(r, n, cw, &cur, &cand, r->eps_d, &t_far) / r->eps_d;
+        double ratio_d, ratio_a;
+        measure_piece(r, patch, &cur, &cand, t_cur, t_cand, &ratio_d, &ratio_a);
         const double f = step_factor(ratio_d, ratio_a);
         const int ok = ratio_d <= 1.0 && ratio_a <= 1.0;
         if (!ok && hh > r->min_dt && ++rejections < PC_MARCH_MAX_REJECTIONS) {
@@ -231,25 +217,21 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
         if (!ok && (!isfinite(ratio_d) || !(hh > r->min_dt))) {
             /* the floor: nothing shorter can be tried, and the piece cannot
              * be measured or does not fit; a gap up to the next exact point */
-            cand = next_known(r, &cur, b);
+            cand = pc_refine_next_known(r, &cur, b);
             st = pc_refine_output_gap(r, out, &cand, PC_GAP_FAILED);
         } else {
             r->forced += !ok;
             st = pc_refine_output(r, out, &cand);
             if (st == PROJCURVE_OK && singular) {
                 /* a silhouette inside the run: the branch ends here */
-                cand = next_known(r, &cand, b);
+                cand = pc_refine_next_known(r, &cand, b);
                 st = pc_refine_output_gap(r, out, &cand, PC_GAP_SILHOUETTE);
             }
         }
         if (st != PROJCURVE_OK)
             return st;
-        if (out->items[out->count - 2].gap) { /* restart after the gap */
-            t_cur = pc_refine_exact_tangent(r, &cand, b);
-            keep_derivative(r, &cand);
-            cur = cand;
-            h = h_ok;
-            rejections = 0;
+        if (out->items[out->count - 2].gap) {
+            restart_after_gap(r, &cand, b, &cur, &t_cur, &h, h_ok, &rejections);
             continue;
         }
         h = hh * f > h || hh >= h ? hh * f : h;

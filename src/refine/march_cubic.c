@@ -40,41 +40,6 @@
  * stretch goes to the straight march: 1/64 of the step. */
 #define PC_CUBIC_MAX_INVALID 6
 
-/* The candidate end for a step h from cur towards the run end b (as
- * march.c's: two balanced pieces rather than a long one and a sliver). */
-static int candidate(pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b, double h,
-                     pc_rvertex *cand)
-{
-    const double remaining = b->t - cur->t;
-    if (h >= remaining) {
-        *cand = *b;
-        return 1;
-    }
-    if (h > 0.5 * remaining)
-        h = 0.5 * remaining;
-    return pc_refine_exact_point(r, cur, b, cur->t + h, cand);
-}
-
-/* The first traced vertex after cur (or b). */
-static pc_rvertex next_known(const pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b)
-{
-    size_t k = pc_refine_guide_index(r, cur->t);
-    while (k < r->n_guide && !(r->guide[k].t > cur->t))
-        ++k;
-    return k < r->n_guide && r->guide[k].t < b->t ? r->guide[k] : *b;
-}
-
-/* Direction of the start (at_end = 0) or end tangent of a rational Bezier
- * curve of degree n: (A' - w' C) / w at the end, positive factors dropped;
- * the end tangent points along increasing s. */
-static pc_vec3 end_direction(int n, const double *cw, int at_end)
-{
-    const double *e = cw + (at_end ? 4 * n : 0), *f = cw + (at_end ? 4 * (n - 1) : 4);
-    const pc_vec3 c = vec3(e[0] / e[3], e[1] / e[3], e[2] / e[3]);
-    const pc_vec3 d = vec3_axpy(vec3(f[0] - e[0], f[1] - e[1], f[2] - e[2]), -(f[3] - e[3]), c);
-    return at_end ? vec3_scale(d, -1.0) : d;
-}
-
 /* 1 when the directions a and b are within the angle whose cosine is
  * cos_max (or either is zero: no direction to compare). */
 static int within_angle(pc_vec3 a, pc_vec3 b, double cos_max)
@@ -123,14 +88,14 @@ static cubic_verdict try_cubic(pc_refiner *r, cubic_march *m, const pc_bezier_pa
         return CUBIC_INVALID;
     /* G1 by construction off the knot lines: checked */
     if (!pc_refine_on_knot_line(r, &m->cur) &&
-        !within_angle(m->prev_end, end_direction(n, cw, 0), r->cos_eps_t))
+        !within_angle(m->prev_end, pc_refine_end_direction(n, cw, 0), r->cos_eps_t))
         return CUBIC_INVALID;
     cand->in_cubic = 1;
     cand->in_d0[0] = m->d0[0];
     cand->in_d0[1] = m->d0[1];
     cand->in_d1[0] = d1[0];
     cand->in_d1[1] = d1[1];
-    *end_dir = end_direction(n, cw, 1);
+    *end_dir = pc_refine_end_direction(n, cw, 1);
     double t_far;
     *ratio_d = pc_refine_deviation(r, n, cw, &m->cur, cand, r->eps_d, &t_far) / r->eps_d;
     return *ratio_d <= 1.0 ? CUBIC_ACCEPT : CUBIC_TOO_FAR;
@@ -180,7 +145,7 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
     int rejections = 0, invalid = 0;
     while (m.cur.t < b->t) {
         pc_rvertex cand;
-        int reached = candidate(r, &m.cur, b, h, &cand);
+        int reached = pc_refine_march_candidate(r, &m.cur, b, h, &cand);
         if (reached && pc_refine_common_patch(r, &m.cur, &cand) == NULL)
             reached = pc_refine_knot_crossing(r, &m.cur, &cand, &cand);
         if (!reached) {
@@ -189,7 +154,7 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
                 continue;
             /* the exact curve is out of reach here: a gap (refine.c) up to
              * the next exact point known, never a vertex off the projection */
-            cand = next_known(r, &m.cur, b);
+            cand = pc_refine_next_known(r, &m.cur, b);
             cand.in_cubic = 0;
             const projcurve_status st = pc_refine_output_gap(r, out, &cand, PC_GAP_FAILED);
             if (st != PROJCURVE_OK)

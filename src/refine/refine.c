@@ -167,14 +167,10 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
     return st;
 }
 
-/* Composes the segment a-b (in one patch) and appends it to the branch. */
-static projcurve_status add_piece(pc_refiner *r, pc_branch *b, const pc_bezier_patch *patch,
-                                  const pc_rvertex *a, const pc_rvertex *e)
+projcurve_status pc_refine_store_piece(pc_refiner *r, pc_branch *b, int n, const double *cw,
+                                       int rational, const pc_rvertex *a, const pc_rvertex *e)
 {
-    double cw[PC_PIECE_MAX_CW], ctrl[3 * (PC_PIECE_MAX_DEGREE + 1)];
-    double weights[PC_PIECE_MAX_DEGREE + 1];
-    const int n = pc_refine_compose(patch, a, e, cw);
-    const int rational = r->nurbs->rational;
+    double ctrl[3 * (PC_PIECE_MAX_DEGREE + 1)], weights[PC_PIECE_MAX_DEGREE + 1];
     if (rational) {
         pc_compose_to_cartesian(n, cw, ctrl, weights);
     } else { /* weights are 1 up to rounding: keep the polynomial form exact */
@@ -184,6 +180,15 @@ static projcurve_status add_piece(pc_refiner *r, pc_branch *b, const pc_bezier_p
     }
     const double uv[4] = {a->u, a->v, e->u, e->v};
     return pc_branch_add_piece(r->ctx, b, n, a->t, e->t, uv, ctrl, rational ? weights : NULL);
+}
+
+/* Composes the segment a-b (in one patch) and appends it to the branch. */
+static projcurve_status add_piece(pc_refiner *r, pc_branch *b, const pc_bezier_patch *patch,
+                                  const pc_rvertex *a, const pc_rvertex *e)
+{
+    double cw[PC_PIECE_MAX_CW];
+    const int n = pc_refine_compose(patch, a, e, cw);
+    return pc_refine_store_piece(r, b, n, cw, r->nurbs->rational, a, e);
 }
 
 /* 1 when the segment from vertex k to k + 1 is composed: no gap, one patch

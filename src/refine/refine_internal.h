@@ -9,6 +9,8 @@
  *   deviation.c  Hausdorff distance of a composed segment to the exact curve
  *   split.c      the subdivision loop: knot lines, then Hausdorff (eps_D)
  *   march.c      the vertices: a step-controlled march along the exact curve
+ *   march_step.c what both marches share: a step's candidate end, the
+ *                fallback past a failure, a piece's end directions
  *   angle.c      joint angle control (eps_T)
  *   march_cubic.c, cubic.c   the same march with cubic Hermite pcurves
  *   refine.c     the driver: options, branches, composition, statistics
@@ -172,6 +174,21 @@ projcurve_status pc_refine_split(pc_refiner *r, const pc_rvertex *a, const pc_rv
  * direction of q' = J^-1 (...) is not resolved and no angle is bound. */
 pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other);
 
+/* march_step.c: the candidate end for a step h from cur towards the run
+ * end b: b itself when h reaches it, else the exact point at cur.t + h
+ * (at most half of what remains: two balanced pieces rather than a long
+ * one and a sliver). Returns 1 when the corrector reached it. */
+int pc_refine_march_candidate(pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b,
+                              double h, pc_rvertex *cand);
+/* march_step.c: the first traced vertex after cur (or b): what is known of
+ * the exact curve when the corrector cannot reach it from cur. */
+pc_rvertex pc_refine_next_known(const pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b);
+/* march_step.c: the direction of the start (at_end = 0) or end tangent of
+ * the rational Bezier curve cw of degree n, both along increasing s: the
+ * derivative of A / w at an end is (A' - w' C) / w with A' = n (cw_1 -
+ * cw_0); only its direction is needed, so the positive factors are dropped. */
+pc_vec3 pc_refine_end_direction(int n, const double *cw, int at_end);
+
 /* march.c: appends the vertices after a up to and including b (ascending t,
  * out's last vertex is a): every segment in one patch, within eps_D, and with
  * end tangents within eps_T / 2 of the exact ones. Statuses: OK,
@@ -196,6 +213,12 @@ int pc_refine_uv_tangent(pc_refiner *r, const pc_rvertex *v, const pc_bezier_pat
  * they leave patch's box (beyond rounding, which is clamped away). */
 int pc_refine_hermite(const pc_refiner *r, const pc_bezier_patch *patch, const pc_rvertex *a,
                       const pc_rvertex *b, const double d0[2], const double d1[2], double uv[8]);
+/* refine.c: appends to b the composed piece cw (homogeneous, degree n) of
+ * the segment a-e, in Cartesian form with its weights when S is rational,
+ * without weights (exactly polynomial) when not. Statuses: OK, NO_MEMORY,
+ * BAD_DEGREE. */
+projcurve_status pc_refine_store_piece(pc_refiner *r, pc_branch *b, int n, const double *cw,
+                                       int rational, const pc_rvertex *a, const pc_rvertex *e);
 /* cubic.c: composes the segment from-to whose pcurve `seg` holds (seg is the
  * later of the two in t; from may be either end) and appends it to branch
  * b. *done is 0 (nothing appended) when seg holds no cubic or it cannot be

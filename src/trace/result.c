@@ -164,3 +164,16 @@ void projcurve_result_destroy(projcurve_result *result)
     free(result->branches);
     free(result);
 }
+
+projcurve_status pc_result_hand_out(projcurve_status st, pc_budget *budget, projcurve_result *r,
+                                    projcurve_result **out)
+{
+    if (st == PROJCURVE_OK)
+        pc_budget_finish(budget);
+    if (!pc_status_keeps_result(st)) {
+        projcurve_result_destroy(r);
+        return st;
+    }
+    *out = r;
+    return st;
+}

@@ -9,6 +9,7 @@
 
 #include <stddef.h>
 
+#include "common/budget.h"
 #include "projcurve.h"
 
 /* A composed piece: Bezier curve of `degree` on S over curve parameters
@@ -85,5 +86,12 @@ static inline int pc_status_keeps_result(projcurve_status st)
     return st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED ||
            st == PROJCURVE_ERR_CANCELLED;
 }
+
+/* The end of a projection call with status st: on OK the budget (may be
+ * NULL) reports the call complete; with a status that keeps a result, r
+ * goes to *out, with any other it is destroyed and *out left untouched.
+ * Returns st. */
+projcurve_status pc_result_hand_out(projcurve_status st, pc_budget *budget, projcurve_result *r,
+                                    projcurve_result **out);
 
 #endif /* PC_TRACE_RESULT_H */

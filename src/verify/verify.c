@@ -207,3 +207,12 @@ projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *pr
     }
     return st;
 }
+
+projcurve_status pc_verify_kept(projcurve_context *ctx, const pc_projector *proj,
+                                const pc_params *o, projcurve_result *r, projcurve_status st)
+{
+    if (!pc_status_keeps_result(st))
+        return st;
+    const projcurve_status vs = pc_verify_result(ctx, proj, o, r);
+    return vs != PROJCURVE_OK ? vs : st;
+}

@@ -34,4 +34,10 @@
 projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *proj,
                                   const pc_params *o, projcurve_result *r);
 
+/* The verification a projection ends with: pc_verify_result on r when st,
+ * the status so far, keeps a result (pc_status_keeps_result: a partial
+ * result is verified too). Returns its status when it fails, else st. */
+projcurve_status pc_verify_kept(projcurve_context *ctx, const pc_projector *proj,
+                                const pc_params *o, projcurve_result *r, projcurve_status st);
+
 #endif /* PC_VERIFY_H */
