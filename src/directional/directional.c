@@ -409,12 +409,7 @@ static int dir_derivatives(const pc_projector *self, double t, double u, double 
                            pc_proj_point *out)
 {
     const pc_directional_data *d = dir_data(self);
-    out->t = t;
-    out->u = u;
-    out->v = v;
-    out->du = out->dv = out->ddu = out->ddv = 0.0;
-    out->det = 0.0;
-    out->speed = 0.0;
+    pc_proj_point_start(out, t, u, v);
     if (!evaluate(self, t, u, v))
         return 0;
     const pc_vec3 *s = d->cache->surf;

@@ -366,12 +366,7 @@ static int ortho_derivatives(const pc_projector *self, double t, double u, doubl
 {
     pc_vec3 sd[PC_D3_COUNT], p[3];
     double k[4], f[2];
-    out->t = t;
-    out->u = u;
-    out->v = v;
-    out->du = out->dv = out->ddu = out->ddv = 0.0;
-    out->det = 0.0;
-    out->speed = 0.0;
+    pc_proj_point_start(out, t, u, v);
     pc_surface_eval_d3(&self->surface->nurbs, u, v, &cache_of(self)->hint_u,
                        &cache_of(self)->hint_v, sd);
     out->s = sd[PC_D3_S];

@@ -43,6 +43,19 @@ typedef struct pc_proj_point {
                           unknown (the engine then measures it itself) */
 } pc_proj_point;
 
+/* Starts *out at (t, u, v) with q', q'', det and speed 0: what a
+ * projector's derivatives() leaves where it fails (s and p are its to
+ * fill). */
+static inline void pc_proj_point_start(pc_proj_point *out, double t, double u, double v)
+{
+    out->t = t;
+    out->u = u;
+    out->v = v;
+    out->du = out->dv = out->ddu = out->ddv = 0.0;
+    out->det = 0.0;
+    out->speed = 0.0;
+}
+
 struct pc_projector {
     const projcurve_surface *surface;
     const projcurve_curve *curve;
