@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The jump criteria of [SY13] s3.4 (src/trace/jump_detect.c), called
+ * The jump criteria of [SY13] s3.4 (src/directional/jump_detect.c), called
  * directly: pc_line_may_jump with hand-placed rays L1 (the previous check)
  * and L2 (this check) and hand-placed current points of the active branches.
  * Each case is built so that exactly one criterion can hold, and is paired

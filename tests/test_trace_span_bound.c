@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * The derivative bounds of a span (trace/span_bound.h), on which the
+ * The derivative bounds of a span (nurbs/span_bound.h), on which the
  * corrector's one-evaluation acceptance rests: checked against central
  * differences of the library's second derivatives sampled densely over each
  * span (the bound must hold everywhere and, from a control net, be within a

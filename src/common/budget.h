@@ -7,9 +7,9 @@
  *
  * The entry point makes one pc_budget from the options at the start of the
  * call and hands it down in the engine's parameters (pc_params.budget,
- * common/params.h); each stage
- * polls it once per unit of its work: a traced step, a check of the jump
- * sweep, a segment of the refinement, a fitted piece. A unit is a bounded
+ * common/params.h); each stage polls it once per unit of its work: a
+ * traced step, a check of the jump sweep, a segment of the refinement, a
+ * fitted piece. A unit is a bounded
  * amount of work (one corrector call and a few evaluations, or one seed
  * search), so polling once per unit bounds the time between two polls.
  *

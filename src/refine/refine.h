@@ -21,7 +21,7 @@
  * turning — and cos(eps_T) rounds to 1 near 1e-6 degrees. Below this,
  * the march met the angle nowhere and left gaps (eps_T = 1e-6: 0.1 % of
  * the projection kept, status OK). Refused by the projection with
- * OUT_OF_RANGE (pc_projection_options). */
+ * OUT_OF_RANGE by the entry points (src/api/project.c). */
 #define PC_REFINE_MIN_ANGLE_DEG 1e-3
 
 /* For every branch of r (points (t, u, v)): inserts vertices until each
