@@ -161,6 +161,45 @@ static void measure_piece(pc_refiner *r, const pc_bezier_patch *patch, const pc_
         *ratio_d = pc_refine_deviation(r, n, cw, cur, cand, r->eps_d, &t_far) / r->eps_d;
 }
 
+/* The candidate end for a step h from cur (pc_refine_march_candidate),
+ * moved onto the knot line it crosses when it leaves cur's patch. Returns
+ * 1 when the corrector reached it and it advances in t. A candidate that
+ * does not advance (a knot-line crossing found at cur itself) is no step:
+ * accepted, it was output again and again at the same t until the piece
+ * limit (linkrods.step surface 15, 1,000,000 vertices at t = 0.981287). It
+ * counts as a failed correction: a shorter step, then a gap. */
+static int next_candidate(pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b, double h,
+                          pc_rvertex *cand)
+{
+    int reached = pc_refine_march_candidate(r, cur, b, h, cand);
+    if (reached && pc_refine_common_patch(r, cur, cand) == NULL)
+        reached = pc_refine_knot_crossing(r, cur, cand, cand);
+    return reached && cand->t > cur->t;
+}
+
+/* Outputs the piece cur-cand that the march takes: accepted (ok), or
+ * forced (see PC_MARCH_MAX_REJECTIONS: then the angle pass has work to
+ * do). A forced piece that cannot be measured (exact points inside out of
+ * reach) or is at the step floor is a gap up to the next exact point
+ * instead; a singular cand (a silhouette inside the run) ends the branch
+ * there with a gap. *cand becomes the last vertex output. */
+static projcurve_status output_piece(pc_refiner *r, const pc_rvertex *cur, pc_rvertex *cand,
+                                     const pc_rvertex *b, int ok, double ratio_d, int singular,
+                                     pc_vertex_list *out)
+{
+    if (!ok && (!isfinite(ratio_d) || !(cand->t - cur->t > r->min_dt))) {
+        *cand = pc_refine_next_known(r, cur, b);
+        return pc_refine_output_gap(r, out, cand, PC_GAP_FAILED);
+    }
+    r->forced += !ok;
+    projcurve_status st = pc_refine_output(r, out, cand);
+    if (st == PROJCURVE_OK && singular) {
+        *cand = pc_refine_next_known(r, cand, b);
+        st = pc_refine_output_gap(r, out, cand, PC_GAP_SILHOUETTE);
+    }
+    return st;
+}
+
 projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
                                  pc_vertex_list *out)
 {
@@ -172,17 +211,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
     int rejections = 0;
     while (cur.t < b->t) {
         pc_rvertex cand;
-        int reached = pc_refine_march_candidate(r, &cur, b, h, &cand);
-        if (reached && pc_refine_common_patch(r, &cur, &cand) == NULL)
-            reached = pc_refine_knot_crossing(r, &cur, &cand, &cand);
-        /* A candidate that does not advance in t (a knot-line crossing found
-         * at cur itself) is no step: accepted, it was output again and again
-         * at the same t until the piece limit (linkrods.step surface 15,
-         * 1,000,000 vertices at t = 0.981287). It counts as a failed
-         * correction: a shorter step, then a gap. */
-        if (reached && !(cand.t > cur.t))
-            reached = 0;
-        if (!reached) {
+        if (!next_candidate(r, &cur, b, h, &cand)) {
             h *= 0.5; /* the corrector failed: come closer */
             if (++rejections < PC_MARCH_MAX_REJECTIONS && h > r->min_dt)
                 continue;
@@ -208,32 +237,15 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
             h = hh * f;
             continue;
         }
-        /* Accepted, or forced (see PC_MARCH_MAX_REJECTIONS): then the angle
-         * pass has work to do; a piece whose deviation could not be measured
-         * (exact points inside out of reach) is a gap instead. A step cut
-         * short by the run end or a knot line says nothing against the old
-         * h. */
-        projcurve_status st;
-        if (!ok && (!isfinite(ratio_d) || !(hh > r->min_dt))) {
-            /* the floor: nothing shorter can be tried, and the piece cannot
-             * be measured or does not fit; a gap up to the next exact point */
-            cand = pc_refine_next_known(r, &cur, b);
-            st = pc_refine_output_gap(r, out, &cand, PC_GAP_FAILED);
-        } else {
-            r->forced += !ok;
-            st = pc_refine_output(r, out, &cand);
-            if (st == PROJCURVE_OK && singular) {
-                /* a silhouette inside the run: the branch ends here */
-                cand = pc_refine_next_known(r, &cand, b);
-                st = pc_refine_output_gap(r, out, &cand, PC_GAP_SILHOUETTE);
-            }
-        }
+        const projcurve_status st = output_piece(r, &cur, &cand, b, ok, ratio_d, singular, out);
         if (st != PROJCURVE_OK)
             return st;
         if (out->items[out->count - 2].gap) {
             restart_after_gap(r, &cand, b, &cur, &t_cur, &h, h_ok, &rejections);
             continue;
         }
+        /* a step cut short by the run end or a knot line says nothing
+         * against the old h */
         h = hh * f > h || hh >= h ? hh * f : h;
         h_ok = h;
         /* the start tangent of the next piece: the other side at a knot line */
