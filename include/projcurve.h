@@ -778,9 +778,10 @@ PROJCURVE_API const char *projcurve_model_skipped(const projcurve_model *model,
 /* The kind of surface index as the file gave it, a static string: "bspline"
  * (B-spline and NURBS surfaces, Bezier patches), or for the analytic
  * surfaces of STEP and IGES, read as exact rational NURBS, "plane",
- * "cylinder", "cone", "sphere", "torus", "revolution", "extrusion"
- * (NULL past the end). In a STEP model the B-spline surfaces come first,
- * in file order, then the analytic ones, in file order. Thread-safe. */
+ * "cylinder", "cone", "sphere", "torus", "revolution", "extrusion" and
+ * (IGES 118) "ruled" (NULL past the end). In a STEP model the B-spline
+ * surfaces come first, in file order, then the analytic ones, in file
+ * order; in an IGES model all are in directory order. Thread-safe. */
 PROJCURVE_API const char *projcurve_model_surface_kind(const projcurve_model *model,
                                                        size_t index);
 

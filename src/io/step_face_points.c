@@ -209,7 +209,8 @@ static projcurve_status read_one(pc_step_file *f, pc_arena *arena, projcurve_mod
     char origin[PC_STEP_MAX_NAME + 48];
     snprintf(origin, sizeof origin, "STEP #%ld %s", inst->id, name);
     if (skip == pc_step_refused_reason)
-        return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin, projcurve_context_message(f->ctx));
+        return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin,
+                                    f->ctx ? projcurve_context_message(f->ctx) : skip);
     if (skip != NULL)
         return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin, skip);
     return pc_model_add_surface_kind(f->ctx, model, &a.nurbs, origin, a.kind);
