@@ -4,9 +4,11 @@
  *
  *  - linkrods.step: 6 planes, 4 cylinders, 9 tori and 18 B-spline
  *    surfaces (the counts Open CASCADE reads from its 37 faces), millimetres
- *    and a precision of 2e-5; every vertex point of every face and samples
- *    of every circle edge lie on the NURBS of the face's surface within the
- *    file's precision, by the library's closest point. The same for the
+ *    and a precision of 2e-5; every vertex point of every analytic face
+ *    lies on the NURBS of the face's surface within the
+ *    file's precision, by the library's closest point, and so do samples
+ *    of every line and conic edge's NURBS between its vertices
+ *    (pc_step_edge_curve), which starts and ends at them. The same for the
  *    analytic B-rep cases of tests/data/cases-brep.
  *  - small files written here: each kind against its Part 42 formula, the
  *    box of an unbounded surface covering its face's points, units (inch,
@@ -106,7 +108,7 @@ static void index_free(indexed *x)
 }
 
 typedef struct on_surface_stats {
-    size_t points;
+    size_t points, edges;
     double worst;
 } on_surface_stats;
 
@@ -124,7 +126,64 @@ static void check_on(const projcurve_surface *s, const double p[3], double tol, 
     ++pc_test_checks;
 }
 
-/* Vertex points and circle samples of every edge of the face. */
+/* The edge's NURBS between its vertices: it starts and ends at them,
+ * follows its conic's Part 42 formula through the angle map, and its
+ * samples lie on the face's surface. */
+static void edge_on_surface(indexed *x, pc_arena *arena, const pc_step_located *ec,
+                            const projcurve_surface *s, double tol, long face,
+                            on_surface_stats *stats)
+{
+    pc_io_curve k;
+    pc_angle_map map;
+    const char *skip = NULL;
+    CHECK_OK(pc_step_edge_curve(&x->f, arena, ec, &k, &map, &skip));
+    if (skip != NULL)
+        return;
+    double ends[2][3], t0 = k.knots[k.degree], t1 = k.knots[k.n_ctrl];
+    for (size_t j = 0; j < 2; ++j) {
+        pc_step_located v;
+        CHECK_OK(pc_step_resolve(&x->f, arena, ec->inst, pc_step_child(ec->node, 1 + j), &v));
+        CHECK_OK(pc_step_point(&x->f, arena, v.inst, pc_step_child(v.node, 1), ends[j]));
+    }
+    const pc_step_node *sense = pc_step_child(ec->node, 4);
+    const int forward = !(sense && sense->kind == PC_STEP_ENUM && sense->text[0] == 'F');
+    double a[3], b[3];
+    pc_rational_curve_eval(&k, t0, a);
+    pc_rational_curve_eval(&k, t1, b);
+    const double *from = ends[forward ? 0 : 1], *to = ends[forward ? 1 : 0];
+    for (int q = 0; q < 3; ++q) {
+        CHECK_NEAR(a[q], from[q], tol);
+        CHECK_NEAR(b[q], to[q], tol);
+    }
+    pc_step_located c;
+    CHECK_OK(pc_step_resolve(&x->f, arena, ec->inst, pc_step_child(ec->node, 3), &c));
+    if (pc_step_is(c.node, "SURFACE_CURVE") || pc_step_is(c.node, "SEAM_CURVE"))
+        CHECK_OK(pc_step_resolve(&x->f, arena, c.inst, pc_step_child(c.node, 1), &c));
+    const int conic = pc_step_is(c.node, "CIRCLE") || pc_step_is(c.node, "ELLIPSE");
+    /* B-spline edges are the file's own curves, off the planes they bound
+     * by up to 9e-5 in linkrods (its edge tolerance): only their ends are
+     * checked. */
+    if (!conic && !pc_step_is(c.node, "LINE"))
+        return;
+    double o[3], ax[3], ay[3], ra = 0.0, rb = 0.0;
+    if (conic)
+        CHECK_OK(pc_step_conic(&x->f, arena, &c, o, ax, ay, &ra, &rb, &skip));
+    for (int i = 0; i <= 16; ++i) {
+        const double t = t0 + (t1 - t0) * i / 16.0;
+        double p[3];
+        pc_rational_curve_eval(&k, t, p);
+        check_on(s, p, tol, face, stats);
+        if (conic) {
+            const double ang = pc_nurbs_to_angle(&map, t);
+            for (int q = 0; q < 3; ++q)
+                CHECK_NEAR(p[q], o[q] + ra * cos(ang) * ax[q] + rb * sin(ang) * ay[q],
+                           1e-12 * (1.0 + ra));
+        }
+    }
+    ++stats->edges;
+}
+
+/* Vertex points and edge curve samples of every edge of the face. */
 static void face_on_surface(indexed *x, pc_arena *arena, const pc_step_instance *fi,
                             const projcurve_surface *s, double tol, on_surface_stats *stats)
 {
@@ -145,7 +204,7 @@ static void face_on_surface(indexed *x, pc_arena *arena, const pc_step_instance 
             continue;
         }
         for (const pc_step_node *oe = items ? items->first : NULL; oe; oe = oe->next) {
-            pc_step_located e, ec, c;
+            pc_step_located e, ec;
             CHECK_OK(pc_step_resolve(&x->f, arena, loop.inst, oe, &e));
             CHECK_OK(pc_step_resolve(&x->f, arena, e.inst, pc_step_child(e.node, 3), &ec));
             for (size_t k = 1; k <= 2; ++k) {
@@ -155,19 +214,7 @@ static void face_on_surface(indexed *x, pc_arena *arena, const pc_step_instance 
                 CHECK_OK(pc_step_point(&x->f, arena, v.inst, pc_step_child(v.node, 1), p));
                 check_on(s, p, tol, (long)fi->id, stats);
             }
-            CHECK_OK(pc_step_resolve(&x->f, arena, ec.inst, pc_step_child(ec.node, 3), &c));
-            if (pc_step_is(c.node, "SURFACE_CURVE") || pc_step_is(c.node, "SEAM_CURVE"))
-                CHECK_OK(pc_step_resolve(&x->f, arena, c.inst, pc_step_child(c.node, 1), &c));
-            if (!pc_step_is(c.node, "CIRCLE"))
-                continue;
-            pc_io_curve k;
-            const char *skip = NULL;
-            CHECK_OK(pc_step_curve(&x->f, arena, &c, &k, NULL, &skip));
-            for (int i = 0; i < 16 && skip == NULL; ++i) {
-                double p[3];
-                pc_rational_curve_eval(&k, 2 * PI * i / 16.0, p);
-                check_on(s, p, tol, (long)fi->id, stats);
-            }
+            edge_on_surface(x, arena, &ec, s, tol, (long)fi->id, stats);
         }
     }
 }
@@ -211,7 +258,7 @@ static void check_model_file(const char *relative, const kind_count *want, size_
     CHECK_NEAR(unit, want_unit, 1e-15);
     CHECK(projcurve_model_precision(m, &precision) == 1);
     CHECK_NEAR(precision, want_precision, 1e-18);
-    on_surface_stats stats = {0, 0.0};
+    on_surface_stats stats = {0, 0, 0.0};
     pc_arena arena;
     pc_arena_init(&arena, 1 << 16);
     size_t faces = 0;
@@ -237,8 +284,8 @@ static void check_model_file(const char *relative, const kind_count *want, size_
         }
         pc_arena_release(&arena);
     }
-    printf("%-40s %zu analytic faces, %zu points on their surfaces, farthest %.2e (precision %g)\n",
-           relative, faces, stats.points, stats.worst, want_precision);
+    printf("%-40s %zu analytic faces, %zu edges, %zu points on their surfaces, farthest %.2e "
+           "(precision %g)\n", relative, faces, stats.edges, stats.points, stats.worst, want_precision);
     CHECK(faces == want_analytic_faces && stats.points >= faces);
     pc_arena_release(&arena);
     index_free(&x);
@@ -459,6 +506,53 @@ static void surface_over_points(void)
     index_free(&x);
 }
 
+/* An ELLIPSE edge between two vertices, in both senses: the arc between
+ * their parameters, counter clockwise. */
+static void ellipse_edges(void)
+{
+    static const char text[] =
+        "ISO-10303-21;\nHEADER;\nENDSEC;\nDATA;\n" FRAME "#5=ELLIPSE('',#4,3.,1.);\n"
+        "#6=CARTESIAN_POINT('',(1.,5.,3.));#7=VERTEX_POINT('',#6);\n"
+        "#8=CARTESIAN_POINT('',(0.,2.,3.));#9=VERTEX_POINT('',#8);\n"
+        "#10=EDGE_CURVE('',#7,#9,#5,.T.);#11=EDGE_CURVE('',#7,#9,#5,.F.);\n"
+        "#12=EDGE_CURVE('',#7,#7,#5,.T.);\nENDSEC;\nEND-ISO-10303-21;\n";
+    indexed x;
+    if (!index_file(text, strlen(text), &x)) {
+        CHECK(0);
+        return;
+    }
+    pc_arena arena;
+    pc_arena_init(&arena, 1 << 12);
+    const long ids[3] = {10, 11, 12};
+    const double want[3][2] = {{0.0, PI / 2}, {PI / 2, 2 * PI}, {0.0, 2 * PI}};
+    for (int e = 0; e < 3; ++e) {
+        pc_step_located ec;
+        const pc_step_node ref = {.kind = PC_STEP_REF, .ref = ids[e]};
+        CHECK_OK(pc_step_resolve(&x.f, &arena, x.f.instances, &ref, &ec));
+        pc_io_curve k;
+        pc_angle_map map;
+        const char *skip = NULL;
+        CHECK_OK(pc_step_edge_curve(&x.f, &arena, &ec, &k, &map, &skip));
+        CHECK(skip == NULL);
+        if (skip != NULL)
+            continue;
+        CHECK_NEAR(k.knots[0], want[e][0], 1e-15);
+        CHECK_NEAR(k.knots[k.n_ctrl + 2], want[e][1], 1e-15);
+        for (int i = 0; i <= 20; ++i) {
+            const double s = want[e][0] + (want[e][1] - want[e][0]) * i / 20.0;
+            const double t = pc_nurbs_to_angle(&map, s);
+            double p[3];
+            pc_rational_curve_eval(&k, s, p);
+            /* o + 3 cos t x + sin t y with x = e2, y = -e1 */
+            CHECK_NEAR(p[0], 1.0 - sin(t), 1e-13);
+            CHECK_NEAR(p[1], 2.0 + 3.0 * cos(t), 1e-13);
+            CHECK_NEAR(p[2], 3.0, 1e-13);
+        }
+    }
+    pc_arena_release(&arena);
+    index_free(&x);
+}
+
 int main(void)
 {
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
@@ -467,6 +561,7 @@ int main(void)
     units_and_boxes();
     swept_kinds();
     surface_over_points();
+    ellipse_edges();
     projcurve_context_destroy(ctx);
     return pc_test_finish("io_step_analytic");
 }

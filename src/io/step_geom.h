@@ -47,6 +47,29 @@ projcurve_status pc_step_placement(pc_step_file *f, pc_arena *arena,
 projcurve_status pc_step_curve(pc_step_file *f, pc_arena *arena, const pc_step_located *c,
                                pc_io_curve *out, pc_angle_map *map, const char **skip);
 
+/* CIRCLE (a = b = radius) or ELLIPSE: centre o, axes x, y and semi-axes a
+ * (along x), b; a 2D placement sets *skip. */
+projcurve_status pc_step_conic(pc_step_file *f, pc_arena *arena, const pc_step_located *c,
+                               double o[3], double x[3], double y[3], double *a, double *b,
+                               const char **skip);
+
+/* LINE('', point, VECTOR): P(t) = o + t v (v with the vector's magnitude). */
+projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_located *l,
+                              double o[3], double v[3]);
+
+/* The 3D curve of an EDGE_CURVE between its vertices, as an exact NURBS
+ * (step_edges.c). It runs along the basis curve in the basis curve's own
+ * direction and parameter (a LINE's t, a CIRCLE's or ELLIPSE's angle
+ * through *map, which may be NULL), over the part the edge covers: from
+ * the first vertex to the second when the edge's same_sense is .T., from
+ * the second to the first otherwise; equal vertices on a conic give the
+ * whole turn. The basis curve of a SURFACE_CURVE / SEAM_CURVE is its 3D
+ * curve. B-spline curves and TRIMMED_CURVEs are returned as pc_step_curve
+ * reads them (their ends are the vertices in the files seen). Other
+ * curves set *skip. */
+projcurve_status pc_step_edge_curve(pc_step_file *f, pc_arena *arena, const pc_step_located *edge,
+                                    pc_io_curve *out, pc_angle_map *map, const char **skip);
+
 /* The entity name of a simple instance (empty for a complex one) without
  * parsing it; returns its length. */
 size_t pc_step_name(const pc_step_file *f, const pc_step_instance *inst, char name[PC_STEP_MAX_NAME]);

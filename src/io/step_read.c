@@ -826,3 +826,21 @@ size_t pc_step_name(const pc_step_file *f, const pc_step_instance *inst, char na
 {
     return simple_name(f, inst, name);
 }
+
+projcurve_status pc_step_conic(pc_step_file *f, pc_arena *arena, const pc_step_located *c,
+                               double o[3], double x[3], double y[3], double *a, double *b,
+                               const char **skip)
+{
+    const reader r = {.f = f, .arena = arena};
+    const located loc = {c->inst, c->node};
+    *skip = NULL;
+    return conic_frame(&r, &loc, o, x, y, a, b, skip);
+}
+
+projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_located *l,
+                              double o[3], double v[3])
+{
+    const reader r = {.f = f, .arena = arena};
+    const located loc = {l->inst, l->node};
+    return line_frame(&r, &loc, o, v);
+}
