@@ -506,6 +506,28 @@ static void surface_over_points(void)
     index_free(&x);
 }
 
+/* Malformed analytic entities and faces: listed with the reason, the rest
+ * of the model still loads. */
+static void malformed(void)
+{
+    projcurve_model *m = read_step(FRAME
+                                   "#5=SPHERICAL_SURFACE('',#4,2.);\n"
+                                   "#6=CYLINDRICAL_SURFACE('',#99,1.);\n"
+                                   "#7=TOROIDAL_SURFACE('',#4,'big',1.);\n"
+                                   "#8=FACE_BOUND('',#98,.T.);\n"
+                                   "#9=ADVANCED_FACE('',(#8),#6,.T.);\n"
+                                   "#10=ADVANCED_FACE('',(#4),#5,.T.);\n");
+    if (m == NULL)
+        return;
+    CHECK(projcurve_model_surface_count(m) == 1);
+    CHECK(skipped_mentions(m, "#6 CYLINDRICAL_SURFACE (STEP #6 (line"));
+    CHECK(skipped_mentions(m, "#99, which is not defined"));
+    CHECK(skipped_mentions(m, "#7 TOROIDAL_SURFACE (STEP #7 (line"));
+    CHECK(skipped_mentions(m, "#9 ADVANCED_FACE (its bounds:"));
+    CHECK(skipped_mentions(m, "#10 ADVANCED_FACE (its bounds:"));
+    projcurve_model_destroy(m);
+}
+
 /* An ELLIPSE edge between two vertices, in both senses: the arc between
  * their parameters, counter clockwise. */
 static void ellipse_edges(void)
@@ -562,6 +584,7 @@ int main(void)
     swept_kinds();
     surface_over_points();
     ellipse_edges();
+    malformed();
     projcurve_context_destroy(ctx);
     return pc_test_finish("io_step_analytic");
 }

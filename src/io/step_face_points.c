@@ -204,10 +204,13 @@ static projcurve_status read_one(pc_step_file *f, pc_arena *arena, projcurve_mod
     pc_step_analytic a;
     const char *skip = NULL;
     projcurve_status st = pc_step_analytic_surface(f, arena, inst->id, pts, n, &a, &skip);
-    if (st != PROJCURVE_OK)
-        return st;
     char origin[PC_STEP_MAX_NAME + 48];
     snprintf(origin, sizeof origin, "STEP #%ld %s", inst->id, name);
+    if (st == PROJCURVE_ERR_PARSE) /* a malformed surface: the rest still loads */
+        return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin,
+                                    f->ctx ? projcurve_context_message(f->ctx) : "malformed");
+    if (st != PROJCURVE_OK)
+        return st;
     if (skip == pc_step_refused_reason)
         return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin,
                                     f->ctx ? projcurve_context_message(f->ctx) : skip);
@@ -226,8 +229,14 @@ projcurve_status pc_step_read_analytic(pc_step_file *f, projcurve_model *model)
     for (size_t i = 0; st == PROJCURVE_OK && i < f->n_instances; ++i) {
         const pc_step_instance *inst = &f->instances[i];
         if (pc_step_name(f, inst, name) &&
-            (strcmp(name, "ADVANCED_FACE") == 0 || strcmp(name, "FACE_SURFACE") == 0))
+            (strcmp(name, "ADVANCED_FACE") == 0 || strcmp(name, "FACE_SURFACE") == 0)) {
             st = face_points(&g, inst);
+            /* A face whose bounds are malformed bounds its surface by the
+             * points read before the fault; it is listed with the reason. */
+            if (st == PROJCURVE_ERR_PARSE)
+                st = pc_model_add_skipped(f->ctx, model, "STEP #%ld %s (its bounds: %s)", inst->id,
+                                          name, f->ctx ? projcurve_context_message(f->ctx) : "malformed");
+        }
         pc_arena_release(&arena);
     }
     if (st == PROJCURVE_OK && g.n > 1)
