@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "io/iges.h"
 #include "projcurve.h"
 
 #define MAX_ENTITIES 16
@@ -247,12 +248,83 @@ static void swept(void)
     projcurve_model_destroy(m);
 }
 
+/* The unbounded 190, 192, 194 over the box of given points, as the
+ * topology reader will build them (pc_iges_analytic_surface). */
+static double on_unit_cylinder(const double p[3]) { return hypot(p[0], p[1]) - 1.0; }
+static double on_cone30(const double p[3])
+{
+    return hypot(p[0], p[1]) - (1.0 + p[2] * tan(PI / 6));
+}
+static double on_xy_plane(const double p[3]) { return p[2]; }
+
+static void unbounded_over_points(void)
+{
+    const entity e[] = {
+        {116, 0, PART, "0.,0.,0.;"},    /* DE 1 */
+        {123, 0, PART, "0.,0.,1.;"},    /* DE 3 */
+        {192, 0, NULL, "1,3,1.;"},      /* DE 5 */
+        {194, 0, NULL, "1,3,1.,30.;"},  /* DE 7 */
+        {190, 0, NULL, "1,3;"},         /* DE 9 */
+    };
+    char *text = format_iges(e, 5, k_global_mm);
+    pc_arena arena;
+    pc_arena_init(&arena, 1 << 14);
+    size_t work = 0;
+    pc_iges_file f;
+    memset(&f, 0, sizeof f);
+    f.ctx = ctx;
+    f.arena = &arena;
+    f.work_done = &work;
+    f.work_limit = (size_t)-1;
+    CHECK_OK(pc_iges_split(&f, text, strlen(text)));
+    CHECK_OK(pc_iges_read_global(&f));
+    CHECK_OK(pc_iges_read_directory(&f));
+    const double pts[6] = {1.0, 0.0, -1.0, 0.0, 1.0, 3.0};
+    const size_t des[3] = {5, 7, 9};
+    const implicit_fn fns[3] = {on_unit_cylinder, on_cone30, on_xy_plane};
+    const char *kinds[3] = {"cylinder", "cone", "plane"};
+    for (int k = 0; k < 3; ++k) {
+        pc_io_surface s;
+        const char *kd = NULL, *skip = NULL;
+        long uses[PC_IGES_MAX_USES];
+        size_t n_uses = 0;
+        CHECK_OK(pc_iges_analytic_surface(&f, des[k], NULL, 0, &s, &kd, uses, &n_uses, &skip));
+        CHECK(skip != NULL && strstr(skip, "unbounded") != NULL);
+        /* the plane's points: (1, 0, 0) and (0, 1, 0) after projection */
+        const double plane_pts[6] = {1.0, 0.0, 0.0, 0.0, 1.0, 0.0};
+        /* on the cone: radius 1 + z tan 30 deg at z = -1 and 3 */
+        const double cone_pts[6] = {1.0 - tan(PI / 6), 0.0, -1.0, 0.0, 1.0 + 3.0 * tan(PI / 6), 3.0};
+        const double *given = k == 0 ? pts : (k == 1 ? cone_pts : plane_pts);
+        skip = NULL;
+        CHECK_OK(pc_iges_analytic_surface(&f, des[k], given, 2, &s, &kd, uses, &n_uses, &skip));
+        CHECK(skip == NULL && kd != NULL && strcmp(kd, kinds[k]) == 0);
+        CHECK(n_uses == 2);
+        if (skip != NULL)
+            continue;
+        projcurve_surface *h = NULL;
+        CHECK_OK(projcurve_surface_create_nurbs(ctx, s.deg_u, s.deg_v, s.n_u, s.n_v, s.ctrl,
+                                                s.weights, s.knots_u, s.knots_v, &h));
+        if (h == NULL)
+            continue;
+        double zr[2];
+        samples_on(h, fns[k], 5.0, zr);
+        if (k < 2) { /* heights -1 .. 3 widened by 1 % of 4 and 1e-3 of 3 */
+            CHECK_NEAR(zr[0], -1.0 - 0.04 - 0.003, 1e-12);
+            CHECK_NEAR(zr[1], 3.0 + 0.04 + 0.003, 1e-12);
+        }
+        projcurve_surface_destroy(h);
+    }
+    pc_arena_release(&arena);
+    free(text);
+}
+
 int main(void)
 {
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     elementary();
     planes();
     swept();
+    unbounded_over_points();
     projcurve_context_destroy(ctx);
     return pc_test_finish("io_iges_analytic");
 }

@@ -138,6 +138,19 @@ projcurve_status pc_analytic_check(projcurve_context *ctx, const pc_analytic_sur
  * *bounded for it and leaves its range as it is. box = {u0, u1, v0, v1}. */
 void pc_analytic_natural_box(const pc_analytic_surface *s, double box[4], int bounded[2]);
 
+/* The box a surface's NURBS needs to cover points[0 .. 3 n) (a face's
+ * loop points): the natural box in bounded directions; in an unbounded one
+ * the range of the points' invert, widened on each side by
+ * PC_ANALYTIC_BOX_MARGIN_REL of the range plus PC_ANALYTIC_BOX_MARGIN_ABS_REL
+ * of the largest of the range's ends and the radius (so that points that
+ * share one height still give a strip of non-zero width; 1 when all of
+ * these are 0). Returns 0 (box partly unset) when a direction is unbounded
+ * and n is 0. */
+#define PC_ANALYTIC_BOX_MARGIN_REL 0.01
+#define PC_ANALYTIC_BOX_MARGIN_ABS_REL 1e-3
+int pc_analytic_box_covering(const pc_analytic_surface *s, const double *points, size_t n,
+                             double box[4]);
+
 /* The point of (u, v), exactly as the parametrisation above. */
 void pc_analytic_eval(const pc_analytic_surface *s, double u, double v, double out[3]);
 

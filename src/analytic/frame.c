@@ -184,3 +184,30 @@ void pc_analytic_natural_box(const pc_analytic_surface *s, double box[4], int bo
         bounded[k / 2] = 1;
     }
 }
+
+int pc_analytic_box_covering(const pc_analytic_surface *s, const double *points, size_t n,
+                             double box[4])
+{
+    int bounded[2];
+    pc_analytic_natural_box(s, box, bounded);
+    for (int dir = 0; dir < 2; ++dir) {
+        if (bounded[dir])
+            continue;
+        if (n == 0)
+            return 0;
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (size_t i = 0; i < n; ++i) {
+            double uv[2];
+            pc_analytic_invert(s, points + 3 * i, &uv[0], &uv[1]);
+            lo = fmin(lo, uv[dir]);
+            hi = fmax(hi, uv[dir]);
+        }
+        const double scale = fmax(fmax(fabs(lo), fabs(hi)), s->radius);
+        double pad = PC_ANALYTIC_BOX_MARGIN_REL * (hi - lo) + PC_ANALYTIC_BOX_MARGIN_ABS_REL * scale;
+        if (!(pad > 0.0))
+            pad = 1.0;
+        box[2 * dir] = lo - pad;
+        box[2 * dir + 1] = hi + pad;
+    }
+    return 1;
+}

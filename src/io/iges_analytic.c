@@ -11,10 +11,11 @@
  *   122 tabulated cylinder: the directrix swept to the generatrix's
  *       terminate point, v in [0, 1];
  *   190 plane, 192 cylinder, 194 cone (semi-angle in degrees), 196 sphere,
- *   198 torus (IGES 5.3 s4.?, entities from the B-rep set): the sphere and
- *       the torus over their whole turn; 190, 192, 194 are unbounded and
- *       are built only for the faces that bound them (a later reader), here
- *       listed as skipped.
+ *   198 torus (the B-rep set of IGES 5.3): the sphere and the torus over
+ *       their whole turn; 190, 192, 194 are unbounded and are built over
+ *       the box the given points need (pc_analytic_box_covering: a face's
+ *       loop points, which the topology reader passes); without points
+ *       they are listed as skipped.
  * The NURBS's parameters are those of src/analytic/ (angles in radians,
  * lengths along the axis), and the entity's transformation is applied
  * last (exact: affine maps commute with the rational basis).
@@ -29,9 +30,6 @@
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
 #endif
-
-/* The margin around a bounding curve's box, as the STEP reader's. */
-#define PC_IGES_BOX_MARGIN_REL 0.01
 
 int pc_iges_is_analytic_surface(int type)
 {
@@ -96,26 +94,6 @@ static projcurve_status curve_at(ctx_t *c, size_t i, pc_io_curve *out, const cha
     return pc_iges_curve(c->f, (size_t)de, out, skip);
 }
 
-/* [lo, hi] of the analytic u or v of the control points, with the margin. */
-static void cover(const pc_analytic_surface *s, const pc_io_curve *k, double box[4])
-{
-    box[0] = box[2] = HUGE_VAL;
-    box[1] = box[3] = -HUGE_VAL;
-    for (size_t i = 0; i < k->n_ctrl; ++i) {
-        double u, v;
-        pc_analytic_invert(s, k->ctrl + 3 * i, &u, &v);
-        box[0] = fmin(box[0], u);
-        box[1] = fmax(box[1], u);
-        box[2] = fmin(box[2], v);
-        box[3] = fmax(box[3], v);
-    }
-    for (int d = 0; d < 2; ++d) {
-        const double pad = PC_IGES_BOX_MARGIN_REL * (box[2 * d + 1] - box[2 * d]);
-        box[2 * d] -= pad > 0.0 ? pad : 1.0;
-        box[2 * d + 1] += pad > 0.0 ? pad : 1.0;
-    }
-}
-
 static projcurve_status plane_108(ctx_t *c, pc_analytic_surface *s, double box[4],
                                   const char **skip)
 {
@@ -141,7 +119,7 @@ static projcurve_status plane_108(ctx_t *c, pc_analytic_surface *s, double box[4
                 *skip = "its bounding curve is of an unsupported type";
             return st;
         }
-        cover(s, &k, box);
+        pc_analytic_box_covering(s, k.ctrl, k.n_ctrl, box);
         return PROJCURVE_OK;
     }
     if (!(sym[3] > 0.0)) {
@@ -172,31 +150,44 @@ static projcurve_status frame_of(ctx_t *c, size_t loc, size_t axis, size_t ref, 
     return pc_frame_make(c->f->ctx, o, z, has_ref ? x : NULL, out);
 }
 
-static projcurve_status elementary(ctx_t *c, int form, pc_analytic_surface *s, const char **skip)
+/* 190 .. 198; the unbounded 190, 192, 194 need points to cover. */
+static projcurve_status elementary(ctx_t *c, int form, pc_analytic_surface *s, const double *points,
+                                   size_t n_points, double box[4], const char **skip)
 {
     const int ref = form == 1;
-    projcurve_status st;
+    projcurve_status st = PROJCURVE_OK;
     switch (c->p->type) {
-    case 190:
-        *skip = "unbounded: built for the faces that bound it";
-        return PROJCURVE_OK;
-    case 192:
-    case 194:
-        *skip = "unbounded in height: built for the faces that bound it";
-        return PROJCURVE_OK;
-    case 196:
+    case 190: /* DELOC, DNORM, [DREFD] */
+        s->kind = PC_ANALYTIC_PLANE;
+        st = frame_of(c, 1, 2, 3, ref, &s->frame);
+        break;
+    case 192: /* LOCATION, AXIS, RADIUS, [REFDIR] */
+        s->kind = PC_ANALYTIC_CYLINDER;
+        if ((st = frame_of(c, 1, 2, 4, ref, &s->frame)) == PROJCURVE_OK)
+            st = pc_iges_real(c->p, 3, &s->radius);
+        break;
+    case 194: /* LOCATION, AXIS, RADIUS, SANGLE (degrees), [REFDIR] */
+        s->kind = PC_ANALYTIC_CONE;
+        if ((st = frame_of(c, 1, 2, 5, ref, &s->frame)) == PROJCURVE_OK &&
+            (st = pc_iges_real(c->p, 3, &s->radius)) == PROJCURVE_OK)
+            st = pc_iges_real(c->p, 4, &s->semi_angle);
+        s->semi_angle *= M_PI / 180.0;
+        break;
+    case 196: /* LOCATION, RADIUS, [AXIS, REFDIR] */
         s->kind = PC_ANALYTIC_SPHERE;
-        if ((st = frame_of(c, 1, ref ? 3 : 0, 4, ref, &s->frame)) != PROJCURVE_OK)
-            return st;
-        return pc_iges_real(c->p, 2, &s->radius);
-    case 198:
+        if ((st = frame_of(c, 1, ref ? 3 : 0, 4, ref, &s->frame)) == PROJCURVE_OK)
+            st = pc_iges_real(c->p, 2, &s->radius);
+        break;
+    case 198: /* LOCATION, AXIS, MAJRAD, MINRAD, [REFDIR] */
         s->kind = PC_ANALYTIC_TORUS;
-        if ((st = frame_of(c, 1, 2, 5, ref, &s->frame)) != PROJCURVE_OK ||
-            (st = pc_iges_real(c->p, 3, &s->radius)) != PROJCURVE_OK)
-            return st;
-        return pc_iges_real(c->p, 4, &s->minor_radius);
+        if ((st = frame_of(c, 1, 2, 5, ref, &s->frame)) == PROJCURVE_OK &&
+            (st = pc_iges_real(c->p, 3, &s->radius)) == PROJCURVE_OK)
+            st = pc_iges_real(c->p, 4, &s->minor_radius);
+        break;
     }
-    return PROJCURVE_OK;
+    if (st == PROJCURVE_OK && !pc_analytic_box_covering(s, points, n_points, box))
+        *skip = "unbounded: built for the faces that bound it";
+    return st;
 }
 
 static projcurve_status revolution_120(ctx_t *c, pc_analytic_surface *s, pc_io_curve *gen,
@@ -283,9 +274,10 @@ static projcurve_status ruled_118(ctx_t *c, pc_io_surface *out, const char **ski
     return PROJCURVE_OK;
 }
 
-projcurve_status pc_iges_analytic_surface(const pc_iges_file *f, size_t de, pc_io_surface *out,
-                                          const char **kind, long uses[PC_IGES_MAX_USES],
-                                          size_t *n_uses, const char **skip_reason)
+projcurve_status pc_iges_analytic_surface(const pc_iges_file *f, size_t de, const double *points,
+                                          size_t n_points, pc_io_surface *out, const char **kind,
+                                          long uses[PC_IGES_MAX_USES], size_t *n_uses,
+                                          const char **skip_reason)
 {
     *skip_reason = NULL;
     *n_uses = 0;
@@ -307,17 +299,17 @@ projcurve_status pc_iges_analytic_surface(const pc_iges_file *f, size_t de, pc_i
         break;
     case 120: st = revolution_120(&c, &s, &swept, box, skip_reason); break;
     case 122: st = tabulated_122(&c, &s, &swept, box, skip_reason); break;
-    default: st = elementary(&c, e ? e->form : 0, &s, skip_reason); break;
+    default: st = elementary(&c, e ? e->form : 0, &s, points, n_points, box, skip_reason); break;
     }
     if (st == PROJCURVE_OK && *skip_reason == NULL && p.type != 118) {
-        int bounded[2];
-        double natural[4] = {0.0, 0.0, 0.0, 0.0};
-        pc_analytic_natural_box(&s, natural, bounded);
-        for (int d = 0; d < 2; ++d)
-            if (bounded[d] && !(p.type == 120 && d == 0)) {
-                box[2 * d] = natural[2 * d];
-                box[2 * d + 1] = natural[2 * d + 1];
-            }
+        if (p.type == 120 || p.type == 122) { /* the swept curve's whole domain */
+            int bounded[2];
+            double natural[4] = {0.0, 0.0, 0.0, 0.0};
+            pc_analytic_natural_box(&s, natural, bounded);
+            const int d = p.type == 120 ? 1 : 0;
+            box[2 * d] = natural[2 * d];
+            box[2 * d + 1] = natural[2 * d + 1];
+        }
         st = pc_analytic_to_nurbs(f->ctx, f->arena, &s, box, out, NULL, NULL);
         *kind = pc_analytic_kind_name(s.kind);
     }

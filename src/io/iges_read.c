@@ -91,7 +91,8 @@ static projcurve_status analytic_surface(pc_iges_file *f, projcurve_model *model
     const char *kind = NULL, *reason = NULL;
     long uses[PC_IGES_MAX_USES];
     size_t n_uses = 0;
-    projcurve_status st = pc_iges_analytic_surface(f, 2 * index + 1, &s, &kind, uses, &n_uses, &reason);
+    projcurve_status st =
+        pc_iges_analytic_surface(f, 2 * index + 1, NULL, 0, &s, &kind, uses, &n_uses, &reason);
     if (st != PROJCURVE_OK)
         return st;
     consumed[index] = 1;

@@ -161,24 +161,6 @@ static projcurve_status describe(pc_step_file *f, pc_arena *arena, const pc_step
     return PROJCURVE_OK;
 }
 
-/* The range of the invert of points in direction dir (0: u, 1: v), widened
- * as step_analytic.h states. */
-static void cover(const pc_analytic_surface *s, const double *points, size_t n, int dir,
-                  double range[2])
-{
-    double lo = HUGE_VAL, hi = -HUGE_VAL;
-    for (size_t i = 0; i < n; ++i) {
-        double uv[2];
-        pc_analytic_invert(s, points + 3 * i, &uv[0], &uv[1]);
-        lo = fmin(lo, uv[dir]);
-        hi = fmax(hi, uv[dir]);
-    }
-    const double scale = fmax(fmax(fabs(lo), fabs(hi)), s->radius);
-    const double pad = PC_STEP_BOX_MARGIN_REL * (hi - lo) + PC_STEP_BOX_MARGIN_ABS_REL * scale;
-    range[0] = lo - (pad > 0.0 ? pad : 1.0);
-    range[1] = hi + (pad > 0.0 ? pad : 1.0);
-}
-
 projcurve_status pc_step_analytic_surface(pc_step_file *f, pc_arena *arena, long id,
                                           const double *points, size_t n_points,
                                           pc_step_analytic *out, const char **skip)
@@ -199,16 +181,9 @@ projcurve_status pc_step_analytic_surface(pc_step_file *f, pc_arena *arena, long
         *skip = pc_step_refused_reason;
         return PROJCURVE_OK;
     }
-    int bounded[2];
-    pc_analytic_natural_box(&out->desc, out->box, bounded);
-    for (int dir = 0; dir < 2; ++dir) {
-        if (bounded[dir])
-            continue;
-        if (n_points == 0) {
-            *skip = "unbounded, and used by no face that would bound it";
-            return PROJCURVE_OK;
-        }
-        cover(&out->desc, points, n_points, dir, out->box + 2 * dir);
+    if (!pc_analytic_box_covering(&out->desc, points, n_points, out->box)) {
+        *skip = "unbounded, and used by no face that would bound it";
+        return PROJCURVE_OK;
     }
     st = pc_analytic_to_nurbs(f->ctx, arena, &out->desc, out->box, &out->nurbs, &out->map_u,
                               &out->map_v);

@@ -8,19 +8,14 @@
  * over [-pi/2, pi/2]), a swept curve's direction over the curve; the
  * unbounded directions (the plane's two, the heights of cylinders and
  * cones, the length of an extrusion) over the range that the given points
- * need, widened on each side by PC_STEP_BOX_MARGIN_REL of the range plus
- * PC_STEP_BOX_MARGIN_ABS_REL of the largest of the range's ends and the
- * surface's radius (so that a face whose points all share one height
- * still gets a strip of non-zero width).
+ * need, with the margin of pc_analytic_box_covering (analytic.h: 1 % of
+ * the range plus 1e-3 of its largest end or the radius, on each side).
  */
 #ifndef PC_IO_STEP_ANALYTIC_H
 #define PC_IO_STEP_ANALYTIC_H
 
 #include "analytic/analytic.h"
 #include "io/step.h"
-
-#define PC_STEP_BOX_MARGIN_REL 0.01
-#define PC_STEP_BOX_MARGIN_ABS_REL 1e-3
 
 /* One surface read. desc.curve points at swept (do not copy the struct
  * while desc is used). map_u, map_v map the file's (u, v) to the NURBS's:
