@@ -34,8 +34,8 @@ cmake --build build-fuzz -j2 --target fuzz_iges fuzz_step fuzz_gismo fuzz_teapot
 
 test_data=tests/data
 declare -A seeds=(
-    [iges]="$test_data/cases"
-    [step]="$test_data/real/test-joinsurf_01.stp tests/fuzz/seeds/step_complex_rational.stp"
+    [iges]="$test_data/cases tests/fuzz/seeds/iges_analytic.igs"
+    [step]="$test_data/real/test-joinsurf_01.stp tests/fuzz/seeds/step_complex_rational.stp $test_data/cases-brep/cylinder_analytic.step $test_data/cases-brep/gtest_cone_line_circle.step"
     [gismo]="$test_data/real/horn.xml $test_data/real/shroud_kaplan.xml"
     [teapot]="$test_data/real/teapot_newell_spd.txt"
 )
