@@ -58,6 +58,9 @@ typedef struct pc_iges_file {
      * taking quadratic time. */
     size_t *work_done;
     size_t work_limit;
+    /* The model's surface index of each entry read as a surface, -1 for
+     * the others (the faces of iges_topology.c look their surfaces up). */
+    long *surface_of;
 } pc_iges_file;
 
 /* The parameters of one entity. */
@@ -91,5 +94,10 @@ const pc_iges_entry *pc_iges_entry_at(const pc_iges_file *f, long de, size_t fro
 projcurve_status pc_iges_curve(const pc_iges_file *f, size_t de, pc_io_curve *out,
                                const char **skip_reason);
 projcurve_status pc_iges_surface(const pc_iges_file *f, size_t de, pc_io_surface *out);
+
+/* Faces and the shape of the file (iges_topology.c), after the entities:
+ * marks what it reads in consumed. */
+projcurve_status pc_iges_read_topology(pc_iges_file *f, projcurve_model *model,
+                                       unsigned char *consumed);
 
 #endif /* PC_IO_IGES_H */
