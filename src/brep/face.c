@@ -245,7 +245,8 @@ static projcurve_status take_loops(projcurve_context *ctx, projcurve_face *f,
     if (f->loops == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory building a face");
     projcurve_status st = PROJCURVE_OK;
-    if (n_outer == 0) {
+    const int natural = n_outer == 0 && !(fp->pick_outer && n_loops > 0);
+    if (natural) {
         f->n_loops = 1;
         st = natural_loop(ctx, f->domain, &f->loops[0]);
     }
@@ -259,6 +260,17 @@ static projcurve_status take_loops(projcurve_context *ctx, projcurve_face *f,
         st = check_closed(ctx, &f->loops[l], l, fp);
     for (size_t l = 0; l < f->n_loops && st == PROJCURVE_OK; ++l)
         st = flatten_loop(ctx, &f->loops[l], f->flat_err, l, fp);
+    if (st == PROJCURVE_OK && n_outer == 0 && !natural) {
+        size_t best = 0;
+        for (size_t l = 1; l < f->n_loops; ++l)
+            if (fabs(signed_area(f->loops[l].poly, f->loops[l].n_poly)) >
+                fabs(signed_area(f->loops[best].poly, f->loops[best].n_poly)))
+                best = l;
+        const pc_face_loop tmp = f->loops[0];
+        f->loops[0] = f->loops[best];
+        f->loops[best] = tmp;
+        f->loops[0].outer = 1;
+    }
     return st;
 }
 

@@ -83,6 +83,9 @@ typedef struct pc_face_params {
     double tol_model; /* the model's precision, for periodicity */
     double close_tol; /* the most a loop's pieces may miss each other in (u, v) */
     int same_sense;
+    /* 1: no loop is marked outer, the file does not say which is (STEP
+     * FACE_BOUND only): the one of largest area is the outer loop. */
+    int pick_outer;
     long id;
     const char *kind;
     const char *what; /* names the face in messages */

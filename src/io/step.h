@@ -61,6 +61,9 @@ typedef struct pc_step_file {
      * references to one large instance from taking quadratic time. */
     size_t *work_done;
     size_t work_limit;
+    /* The model's surface index of each instance read as a surface, -1
+     * for the others (the faces of step_topology.c look them up). */
+    long *surface_of;
 } pc_step_file;
 
 /* Indexes the DATA section (step_lexer.c). instances is malloc'ed: release
@@ -83,5 +86,21 @@ const pc_step_node *pc_step_part(const pc_step_node *inst, const char *name);
 
 /* Reads the geometry of the file into the model (step_read.c). */
 projcurve_status pc_step_read_geometry(pc_step_file *f, projcurve_model *model);
+
+/* The geometry of a curve instance (step_read.c): B-splines (2D ones too,
+ * *planar set, z = 0), CIRCLE, TRIMMED_CURVE; *skip says why another is
+ * not read. */
+projcurve_status pc_step_curve_geometry(pc_step_file *f, pc_arena *arena,
+                                       const pc_step_instance *inst, pc_io_curve *out,
+                                       const char **skip, int *planar);
+/* LINE: origin and direction times magnitude (2D lines have z = 0). */
+projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
+                              double origin[3], double dir[3]);
+/* The CARTESIAN_POINT that ref points at (z = 0 for 2D points). */
+projcurve_status pc_step_point(pc_step_file *f, pc_arena *arena, const pc_step_instance *from,
+                               const pc_step_node *ref, double p[3]);
+
+/* Faces and shapes of the file (step_topology.c), after the geometry. */
+projcurve_status pc_step_read_topology(pc_step_file *f, projcurve_model *model);
 
 #endif /* PC_IO_STEP_H */
