@@ -461,6 +461,47 @@ static void skipped_entities(void)
     free(text);
 }
 
+/* 144 trimmed surfaces on one bilinear 128: the natural boundary (N1 = 0)
+ * is a face; an outer 142 without parameter-space curve (BPTR 0) and an
+ * outer boundary that points at no entity are listed with the reason,
+ * naming the 144, and do not stop the file. */
+static void trimmed_surfaces(void)
+{
+    static const char plane[] = "1,1,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.,1.,1.,1.,1.,"
+                                "0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,0.,1.,0.,1.;";
+    const entity e[] = {
+        {128, 0, 0, "00010000", plane},
+        {144, 0, 0, NULL, "1,0,0,0;"},
+        {142, 0, 0, "00010000", "0,1,0,0,1;"},
+        {144, 0, 0, NULL, "1,1,0,5;"},
+        {144, 0, 0, NULL, "1,1,0,99;"},
+    };
+    char *text = format_iges(e, 5, NULL, ',');
+    projcurve_model *m = read_text(text);
+    if (m) {
+        CHECK(projcurve_model_face_count(m) == 1);
+        CHECK(projcurve_model_unbuilt_face_count(m) == 2);
+        CHECK(projcurve_face_loop_count(projcurve_model_face(m, 0)) == 1);
+        const char *expect[] = {"IGES entity 144 at DE 7: its curve on surface DE 5 has no "
+                                "parameter-space curve",
+                                "IGES entity 144 at DE 9"};
+        for (size_t k = 0; k < 2; ++k) {
+            const char *why = projcurve_model_unbuilt_face(m, k);
+            if (why == NULL || strstr(why, expect[k]) == NULL)
+                pc_test_fail_at(__FILE__, __LINE__, "unbuilt face %zu: \"%s\", expected \"%s\"", k,
+                                why ? why : "(none)", expect[k]);
+            ++pc_test_checks;
+        }
+        const char *why = projcurve_model_unbuilt_face(m, 1);
+        CHECK(why != NULL && strstr(why, "99") != NULL);
+        projcurve_where w;
+        CHECK_OK(projcurve_face_classify(ctx, projcurve_model_face(m, 0), 0.5, 0.5, &w));
+        CHECK(w == PROJCURVE_IN);
+        projcurve_model_destroy(m);
+    }
+    free(text);
+}
+
 static void custom_delimiters(void)
 {
     /* Parameter delimiter '/', record delimiter '!'; a Hollerith string
@@ -496,6 +537,7 @@ int main(void)
     surface_subdomain();
     skipped_entities();
     custom_delimiters();
+    trimmed_surfaces();
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_iges_entities");
 }
