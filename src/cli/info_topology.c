@@ -74,9 +74,13 @@ void cli_print_topology(const projcurve_model *m)
     for (size_t s = 0; s < projcurve_model_shape_count(m); ++s) {
         const projcurve_shape *sh = projcurve_model_shape(m, s);
         projcurve_shape_kind kind = PROJCURVE_SHAPE_FACE_SET;
-        projcurve_shape_info(NULL, sh, &kind, NULL);
-        printf("  shape %zu: %s, %zu face(s), %zu edge(s)\n", s, shape_kind_name(kind),
+        double sew = 0.0;
+        projcurve_shape_info(NULL, sh, &kind, &sew);
+        printf("  shape %zu: %s, %zu face(s), %zu edge(s)", s, shape_kind_name(kind),
                projcurve_shape_face_count(sh), projcurve_shape_edge_count(sh));
+        if (sew > 0.0)
+            printf(", edges sewn within %g", sew);
+        printf("\n");
     }
     for (size_t i = 0; i < projcurve_model_face_count(m); ++i) {
         const projcurve_face *f = projcurve_model_face(m, i);
@@ -136,9 +140,11 @@ void cli_print_info_json(const char *path, const projcurve_model *m)
     for (size_t s = 0; s < projcurve_model_shape_count(m); ++s) {
         const projcurve_shape *sh = projcurve_model_shape(m, s);
         projcurve_shape_kind kind = PROJCURVE_SHAPE_FACE_SET;
-        projcurve_shape_info(NULL, sh, &kind, NULL);
-        printf("%s{\"kind\": \"%s\", \"faces\": %zu, \"edges\": %zu}", s ? ", " : "",
-               shape_kind_name(kind), projcurve_shape_face_count(sh), projcurve_shape_edge_count(sh));
+        double sew = 0.0;
+        projcurve_shape_info(NULL, sh, &kind, &sew);
+        printf("%s{\"kind\": \"%s\", \"faces\": %zu, \"edges\": %zu, \"sew_tol\": %.17g}",
+               s ? ", " : "", shape_kind_name(kind), projcurve_shape_face_count(sh),
+               projcurve_shape_edge_count(sh), sew);
     }
     printf("],\n  \"unbuilt\": [");
     for (size_t i = 0; i < projcurve_model_unbuilt_face_count(m); ++i) {

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "brep/face.h"
+#include "brep/sew.h"
 #include "brep/shape.h"
 #include "common/error.h"
 #include "io/iges.h"
@@ -455,12 +456,22 @@ static projcurve_status face_set(const topo *t)
         return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
     for (size_t i = 0; i < m->n_faces; ++i)
         index[i] = i;
+    /* edges shared by geometry, within the file's resolution (else the
+     * default fraction of the faces' own precision) */
+    double tol = t->resolution;
+    for (size_t i = 0; tol <= 0.0 && i < m->n_faces; ++i)
+        tol = m->faces[i]->tol_model;
+    size_t shared = 0;
+    projcurve_status st = pc_sew_faces(t->f->ctx, m->faces, m->n_faces, tol, &shared);
     projcurve_shape *shape = NULL;
-    projcurve_status st = pc_shape_build(t->f->ctx, PROJCURVE_SHAPE_FACE_SET, -1,
-                                         (const projcurve_face *const *)m->faces, index,
-                                         m->n_faces, &shape);
+    if (st == PROJCURVE_OK)
+        st = pc_shape_build(t->f->ctx, PROJCURVE_SHAPE_FACE_SET, -1,
+                            (const projcurve_face *const *)m->faces, index, m->n_faces, &shape);
     free(index);
-    return st == PROJCURVE_OK ? pc_model_add_shape(t->f->ctx, m, shape) : st;
+    if (st != PROJCURVE_OK)
+        return st;
+    shape->sew_tol = tol;
+    return pc_model_add_shape(t->f->ctx, m, shape);
 }
 
 projcurve_status pc_iges_read_topology(pc_iges_file *f, projcurve_model *model,

@@ -320,6 +320,60 @@ static projcurve_status check_piece(const stopo *t, const projcurve_surface *s, 
     return PROJCURVE_OK;
 }
 
+/* The distance of p from the 3D curve of an edge (LINE: the unbounded
+ * line; B-spline, CIRCLE, TRIMMED_CURVE: their closest point), or -1
+ * when the curve is of another kind. */
+static double curve_distance(const stopo *t, const inst_node *curve, const double p[3])
+{
+    if (pc_step_is(curve->node, "LINE")) {
+        double o[3], d[3];
+        if (pc_step_line(t->f, t->arena, curve->inst, o, d) != PROJCURVE_OK)
+            return -1.0;
+        const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const double a = dd > 0.0 ? ((p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1] + (p[2] - o[2]) * d[2]) / dd : 0.0;
+        const double q[3] = {o[0] + a * d[0], o[1] + a * d[1], o[2] + a * d[2]};
+        return dist3(p, q);
+    }
+    pc_io_curve c;
+    const char *skip = NULL;
+    int planar = 0;
+    projcurve_curve *h = NULL;
+    if (pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar) != PROJCURVE_OK ||
+        skip != NULL || planar ||
+        projcurve_curve_create_nurbs(NULL, c.degree, c.n_ctrl, c.ctrl, c.weights, c.knots, &h) != PROJCURVE_OK)
+        return -1.0;
+    double tt = 0.0, d = -1.0;
+    if (projcurve_curve_closest_point(NULL, h, p, &tt, NULL, &d) != PROJCURVE_OK)
+        d = -1.0;
+    projcurve_curve_destroy(h);
+    return d;
+}
+
+/* A pcurve whose surface image leaves its edge's 3D curve by more than
+ * PC_STEP_PCURVE_CHECK_FACTOR precisions (at a quarter, half and three
+ * quarters of it) is reported on the model. */
+static projcurve_status check_against_curve(const stopo *t, const projcurve_surface *s,
+                                            long surface_id, long edge_id,
+                                            const pc_piece_input *piece, const inst_node *curve)
+{
+    double worst = 0.0;
+    for (int k = 1; k <= 3; ++k) {
+        double uv[2], p[3];
+        if (!piece_at(piece, 0.25 * k, uv) || !surface_point(s, uv, p))
+            return PROJCURVE_OK;
+        const double d = curve_distance(t, curve, p);
+        if (d < 0.0)
+            return PROJCURVE_OK; /* a curve kind not read: nothing to compare with */
+        worst = fmax(worst, d);
+    }
+    const double prec = precision_of(t, s);
+    if (worst <= PC_STEP_PCURVE_CHECK_FACTOR * prec)
+        return PROJCURVE_OK;
+    return pc_model_add_skipped(t->f->ctx, t->model,
+                                "STEP #%ld EDGE_CURVE: its pcurve on surface #%ld is %.3g from "
+                                "its 3D curve (precision %.3g)", edge_id, surface_id, worst, prec);
+}
+
 /* The parameter of a pcurve whose surface point is nearest v: the best
  * of PC_STEP_RANGE_SAMPLES samples per control point, then golden-section
  * steps (a fixed number) between its neighbours. */
@@ -561,6 +615,11 @@ static projcurve_status edge_piece(const stopo *t, const pc_step_node *ref, long
                                          : bspline_piece(t, c, piece);
         if (st == PROJCURVE_OK && !t->reason[0] && !pc_step_is(c->node, "LINE"))
             st = restrict_to_edge(t, s, piece, same > 0 ? va : vb, same > 0 ? vb : va);
+        inst_node curve3;
+        if (st == PROJCURVE_OK && !t->reason[0])
+            st = fetch(t, pc_step_child(geom.node, 1), geom.inst->id, &curve3);
+        if (st == PROJCURVE_OK && !t->reason[0] && curve3.inst != NULL)
+            st = check_against_curve(t, s, surface_id, edge.inst->id, piece, &curve3);
         flags |= seam ? PC_PIECE_SEAM : 0u;
     } else {
         inst_node curve3 = geom;
