@@ -114,49 +114,105 @@ static int clear_of_cell(const pc_classifier *c, size_t cell, double x, double y
     return 1;
 }
 
-/* References: the centres get their winding numbers row by row from the
- * crossings of the row's line; a centre too near a segment is replaced by
- * a clear lattice point whose winding number is counted in full. */
+/* A crossing of a row's line: its x and +1 going up, -1 going down. */
+typedef struct crossing {
+    double x;
+    int sign;
+} crossing;
+
+static int by_x(const void *a, const void *b)
+{
+    const crossing *p = a, *q = b;
+    return (p->x > q->x) - (p->x < q->x);
+}
+
+/* The winding number of (x, row's y): the signs of the crossings with
+ * xc > x (the rule of pc_winding_brute), from suffix sums over the sorted
+ * crossings: the first crossing beyond x by bisection. */
+static int row_winding(const crossing *xs, const int *suffix, size_t n, double x)
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (xs[mid].x > x)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return suffix[lo];
+}
+
+/* The crossings of the line y (the middle of row j) with every segment,
+ * sorted, with suffix sums; returns their number. A segment that crosses
+ * the line does so inside a cell of row j, so it is listed there: only
+ * those are looked at, each once (seen[] holds the last row that looked). */
+static size_t row_crossings(const pc_classifier *c, size_t j, double y, crossing *xs,
+                            int *suffix, size_t *seen)
+{
+    size_t n = 0;
+    for (size_t k = c->cell_start[j * c->nx]; k < c->cell_start[(j + 1) * c->nx]; ++k) {
+        const size_t i = c->cell_seg[k];
+        if (seen[i] == j)
+            continue;
+        seen[i] = j;
+        const double *s = c->seg + 4 * i;
+        if ((s[1] <= y) == (s[3] <= y))
+            continue;
+        xs[n].x = s[0] + (y - s[1]) * (s[2] - s[0]) / (s[3] - s[1]);
+        xs[n++].sign = s[3] > s[1] ? 1 : -1;
+    }
+    qsort(xs, n, sizeof *xs, by_x);
+    suffix[n] = 0;
+    for (size_t k = n; k > 0; --k)
+        suffix[k - 1] = suffix[k] + xs[k - 1].sign;
+    return n;
+}
+
+/* Candidate x positions on a cell's row line, the centre first. */
+#define PC_CLASSIFY_ROW_CANDIDATES 16
+
+/* References: a point of the cell's row line (the centre, else one of
+ * PC_CLASSIFY_ROW_CANDIDATES along it) clear of the cell's segments by
+ * tol, its winding number from the row's sorted crossings; failing that a
+ * clear lattice point of the cell, counted in full. */
 static projcurve_status place_references(projcurve_context *ctx, pc_classifier *c)
 {
     const size_t n_cells = c->nx * c->ny;
     c->ref = malloc(2 * n_cells * sizeof *c->ref);
     c->ref_winding = malloc(n_cells * sizeof *c->ref_winding);
-    int *acc = malloc((c->nx + 1) * sizeof *acc);
-    if (c->ref == NULL || c->ref_winding == NULL || acc == NULL) {
-        free(acc);
+    crossing *xs = malloc((c->n_seg + 1) * sizeof *xs);
+    int *suffix = malloc((c->n_seg + 1) * sizeof *suffix);
+    size_t *seen = malloc((c->n_seg + 1) * sizeof *seen);
+    if (c->ref == NULL || c->ref_winding == NULL || xs == NULL || suffix == NULL || seen == NULL) {
+        free(xs);
+        free(suffix);
+        free(seen);
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory classifying a face");
     }
+    for (size_t i = 0; i <= c->n_seg; ++i)
+        seen[i] = (size_t)-1;
     for (size_t j = 0; j < c->ny; ++j) {
         const double y = c->y0 + ((double)j + 0.5) * c->dy;
-        memset(acc, 0, (c->nx + 1) * sizeof *acc);
-        for (size_t i = 0; i < c->n_seg; ++i) {
-            const double *s = c->seg + 4 * i;
-            if ((s[1] <= y) == (s[3] <= y))
-                continue;
-            const double xc = s[0] + (y - s[1]) * (s[2] - s[0]) / (s[3] - s[1]);
-            /* the cells whose centre x < xc see this crossing */
-            const double guess = ceil((xc - c->x0) / c->dx - 0.5);
-            size_t k = guess <= 0.0 ? 0 : (guess >= (double)c->nx ? c->nx : (size_t)guess);
-            while (k > 0 && !(c->x0 + ((double)k - 0.5) * c->dx < xc))
-                --k; /* the estimate corrected by the comparison itself */
-            while (k < c->nx && c->x0 + ((double)k + 0.5) * c->dx < xc)
-                ++k;
-            acc[0] += s[3] > s[1] ? 1 : -1;
-            acc[k] -= s[3] > s[1] ? 1 : -1;
-        }
-        int w = 0;
+        const size_t n = row_crossings(c, j, y, xs, suffix, seen);
         for (size_t i = 0; i < c->nx; ++i) {
-            w += acc[i];
             const size_t cell = j * c->nx + i;
-            c->ref[2 * cell] = c->x0 + ((double)i + 0.5) * c->dx;
-            c->ref[2 * cell + 1] = y;
-            c->ref_winding[cell] = w;
+            c->ref[2 * cell] = NAN;
+            for (int a = -1; a < PC_CLASSIFY_ROW_CANDIDATES && isnan(c->ref[2 * cell]); ++a) {
+                const double f = a < 0 ? 0.5 : (a + 0.5) / PC_CLASSIFY_ROW_CANDIDATES;
+                const double x = c->x0 + ((double)i + f) * c->dx;
+                if (!clear_of_cell(c, cell, x, y))
+                    continue;
+                c->ref[2 * cell] = x;
+                c->ref[2 * cell + 1] = y;
+                c->ref_winding[cell] = row_winding(xs, suffix, n, x);
+            }
         }
     }
-    free(acc);
+    free(xs);
+    free(suffix);
+    free(seen);
     for (size_t cell = 0; cell < n_cells; ++cell) {
-        if (clear_of_cell(c, cell, c->ref[2 * cell], c->ref[2 * cell + 1]))
+        if (!isnan(c->ref[2 * cell]))
             continue;
         const double cx = c->x0 + (double)(cell % c->nx) * c->dx;
         const double cy = c->y0 + (double)(cell / c->nx) * c->dy;
@@ -173,8 +229,7 @@ static projcurve_status place_references(projcurve_context *ctx, pc_classifier *
                         c->ref_winding[cell] = pc_winding_brute(c->seg, c->n_seg, x, y);
                     }
                 }
-        if (!found)
-            c->ref[2 * cell] = NAN; /* no reference: count in full */
+        /* none: ref stays NaN, the cell's queries count in full */
     }
     return PROJCURVE_OK;
 }

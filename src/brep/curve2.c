@@ -178,13 +178,14 @@ static size_t multiplicity(const hspline *s, double t)
     return m;
 }
 
-static double point_segment_distance(const double p[2], const double a[2], const double b[2])
+static double point_segment_distance2(const double p[2], const double a[2], const double b[2])
 {
     const double dx = b[0] - a[0], dy = b[1] - a[1];
     const double len2 = dx * dx + dy * dy;
     double s = len2 > 0.0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2 : 0.0;
-    s = fmin(fmax(s, 0.0), 1.0);
-    return hypot(p[0] - a[0] - s * dx, p[1] - a[1] - s * dy);
+    s = s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s);
+    const double ex = p[0] - a[0] - s * dx, ey = p[1] - a[1] - s * dy;
+    return ex * ex + ey * ey;
 }
 
 typedef struct flattener {
@@ -206,7 +207,7 @@ static projcurve_status flatten_bezier(flattener *fl, const double *b, int depth
     int flat = 1;
     for (size_t j = 1; j < p && flat; ++j) {
         const double q[2] = {b[3 * j] / b[3 * j + 2], b[3 * j + 1] / b[3 * j + 2]};
-        flat = point_segment_distance(q, a, z) <= fl->err;
+        flat = point_segment_distance2(q, a, z) <= fl->err * fl->err;
     }
     if (flat)
         return fl->line->count >= fl->limit

@@ -533,8 +533,9 @@ static double project_samples(const projcurve_surface *s, const projcurve_curve 
 /* The pcurve of an edge that has none: its 3D curve projected onto the
  * surface at n + 1 samples, n doubling from PC_STEP_PROJECT_SAMPLES until
  * the chords are within the precision or n reaches
- * PC_STEP_PROJECT_MAX_SAMPLES (then the error reached is reported). A
- * degree-1 piece over the edge's parameters. */
+ * PC_STEP_PROJECT_MAX_SAMPLES, or the error no longer halves (the edge
+ * lies off the surface); the error reached is then reported. A degree-1
+ * piece over the edge's parameters. */
 static projcurve_status edge_projection(const stopo *t, const inst_node *curve,
                                         const projcurve_surface *s, const double v0[3],
                                         const double v1[3], pc_piece_input *out)
@@ -552,10 +553,13 @@ static projcurve_status edge_projection(const stopo *t, const inst_node *curve,
         uv = pc_arena_calloc(t->arena, 2 * (n + 1), sizeof *uv);
         if (uv == NULL)
             break;
+        const double before = err;
         err = project_samples(s, c, t0, t1, n, uv, &off);
         if (closed) /* a closed edge: one point, one (u, v) */
             uv[2 * n] = uv[0], uv[2 * n + 1] = uv[1];
-        if (err <= prec || n >= PC_STEP_PROJECT_MAX_SAMPLES)
+        /* chords shrink the error 4 times a doubling; when it stops
+         * halving, the edge's own distance from the surface dominates */
+        if (err <= prec || n >= PC_STEP_PROJECT_MAX_SAMPLES || err > 0.5 * before)
             break;
     }
     projcurve_curve_destroy(c);
@@ -753,6 +757,32 @@ static projcurve_status read_face(stopo *t, const inst_node *face)
     return pc_model_add_face(t->f->ctx, t->model, f);
 }
 
+/* 1 when a simple instance is of one of the names (NULL-terminated list),
+ * read from its text without parsing it: the passes below look at a few
+ * kinds among thousands of points. */
+static int named(const pc_step_file *f, const pc_step_instance *inst, const char *const *names)
+{
+    size_t pos = inst->begin;
+    while (pos < inst->end && (f->text[pos] == ' ' || f->text[pos] == '\n' ||
+                               f->text[pos] == '\r' || f->text[pos] == '\t'))
+        ++pos;
+    size_t len = 0;
+    while (pos + len < inst->end && (f->text[pos + len] == '_' ||
+                                     (f->text[pos + len] >= 'A' && f->text[pos + len] <= 'Z') ||
+                                     (f->text[pos + len] >= '0' && f->text[pos + len] <= '9')))
+        ++len;
+    for (; *names != NULL; ++names)
+        if (strlen(*names) == len && strncmp(f->text + pos, *names, len) == 0)
+            return 1;
+    return 0;
+}
+
+static const char *const face_names[] = {"ADVANCED_FACE", "FACE_SURFACE", NULL};
+static const char *const shape_names[] = {"MANIFOLD_SOLID_BREP", "BREP_WITH_VOIDS",
+                                          "SHELL_BASED_SURFACE_MODEL", "CLOSED_SHELL",
+                                          "OPEN_SHELL", NULL};
+static const char *const precision_names[] = {"UNCERTAINTY_MEASURE_WITH_UNIT", NULL};
+
 /* The largest UNCERTAINTY_MEASURE_WITH_UNIT length (0 if none). */
 static double file_precision(const stopo *t, const pc_step_node *node)
 {
@@ -817,6 +847,8 @@ static projcurve_status read_shapes(stopo *t, size_t *idx, unsigned char *used)
         for (size_t i = 0; i < t->f->n_instances && st == PROJCURVE_OK; ++i) {
             const pc_step_instance *inst = &t->f->instances[i];
             pc_step_node *node;
+            if (!named(t->f, inst, shape_names))
+                continue;
             if ((st = pc_step_parse(t->f, inst, t->arena, &node)) != PROJCURVE_OK)
                 break;
             size_t n = 0;
@@ -866,6 +898,8 @@ projcurve_status pc_step_read_topology(pc_step_file *f, projcurve_model *model)
         t.face_of[i] = -1;
     for (size_t i = 0; st == PROJCURVE_OK && i < f->n_instances; ++i) {
         pc_step_node *node;
+        if (!named(f, &f->instances[i], precision_names))
+            continue;
         st = pc_step_parse(f, &f->instances[i], &arena, &node);
         if (st == PROJCURVE_OK)
             t.precision = file_precision(&t, node);
@@ -873,6 +907,8 @@ projcurve_status pc_step_read_topology(pc_step_file *f, projcurve_model *model)
     }
     for (size_t i = 0; st == PROJCURVE_OK && i < f->n_instances; ++i) {
         pc_step_node *node;
+        if (!named(f, &f->instances[i], face_names))
+            continue;
         st = pc_step_parse(f, &f->instances[i], &arena, &node);
         if (st == PROJCURVE_OK && (pc_step_is(node, "ADVANCED_FACE") || pc_step_is(node, "FACE_SURFACE"))) {
             const inst_node face = {&f->instances[i], node};
