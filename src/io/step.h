@@ -96,6 +96,10 @@ projcurve_status pc_step_curve_geometry(pc_step_file *f, pc_arena *arena,
 /* LINE: origin and direction times magnitude (2D lines have z = 0). */
 projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
                               double origin[3], double dir[3]);
+/* CIRCLE: centre and the frame x, y of its angle (*skip set when the
+ * placement is not read). */
+projcurve_status pc_step_circle(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
+                                double centre[3], double x[3], double y[3], const char **skip);
 /* The CARTESIAN_POINT that ref points at (z = 0 for 2D points). */
 projcurve_status pc_step_point(pc_step_file *f, pc_arena *arena, const pc_step_instance *from,
                                const pc_step_node *ref, double p[3]);

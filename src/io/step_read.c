@@ -761,6 +761,23 @@ projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_in
     return line_frame(&r, &loc, origin, dir);
 }
 
+projcurve_status pc_step_circle(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
+                                double centre[3], double x[3], double y[3], const char **skip)
+{
+    reader r = {.f = f, .arena = arena};
+    located loc = {.inst = inst};
+    pc_step_node *node;
+    projcurve_status st = pc_step_parse(f, inst, arena, &node);
+    if (st != PROJCURVE_OK)
+        return st;
+    loc.node = node;
+    *skip = NULL;
+    if (!pc_step_is(node, "CIRCLE"))
+        return bad(&r, inst, "expected a CIRCLE");
+    double radius = 0.0;
+    return circle_frame(&r, &loc, centre, x, y, &radius, skip);
+}
+
 projcurve_status pc_step_point(pc_step_file *f, pc_arena *arena, const pc_step_instance *from,
                                const pc_step_node *ref, double p[3])
 {

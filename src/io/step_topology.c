@@ -26,6 +26,10 @@
 #include "common/error.h"
 #include "io/step.h"
 
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
 /* The precision when the file gives no UNCERTAINTY_MEASURE_WITH_UNIT, as
  * a fraction of the surface's size. */
 #define PC_STEP_DEFAULT_PRECISION_REL 1e-7
@@ -409,12 +413,55 @@ static double nearest_parameter(const projcurve_surface *s, const pc_curve2 *c, 
     return 0.5 * (a + b);
 }
 
+/* The parameter of v on the edge's 3D curve, which the pcurve shares
+ * (ISO 10303-42 SURFACE_CURVE): a LINE's and a CIRCLE's (its angle, moved
+ * by turns into [t0, t1] of the pcurve) in closed form, a B-spline's by
+ * closest point. 0 when the curve is of another kind. */
+static int curve3_parameter(const stopo *t, const inst_node *curve, const double v[3], double t0,
+                            double t1, double *out)
+{
+    if (pc_step_is(curve->node, "LINE")) {
+        double o[3], d[3];
+        if (pc_step_line(t->f, t->arena, curve->inst, o, d) != PROJCURVE_OK)
+            return 0;
+        const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        *out = ((v[0] - o[0]) * d[0] + (v[1] - o[1]) * d[1] + (v[2] - o[2]) * d[2]) / dd;
+        return dd > 0.0;
+    }
+    if (pc_step_is(curve->node, "CIRCLE")) {
+        double o[3], x[3], y[3];
+        const char *skip = NULL;
+        if (pc_step_circle(t->f, t->arena, curve->inst, o, x, y, &skip) != PROJCURVE_OK || skip)
+            return 0;
+        const double r[3] = {v[0] - o[0], v[1] - o[1], v[2] - o[2]};
+        double a = atan2(r[0] * y[0] + r[1] * y[1] + r[2] * y[2], r[0] * x[0] + r[1] * x[1] + r[2] * x[2]);
+        const double turn = 2.0 * M_PI, slack = 1e-9 * turn;
+        while (a < t0 - slack)
+            a += turn;
+        while (a > t1 + slack && a - turn >= t0 - slack)
+            a -= turn;
+        *out = a;
+        return 1;
+    }
+    pc_io_curve c;
+    const char *skip = NULL;
+    int planar = 0;
+    projcurve_curve *h = NULL;
+    if (pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar) != PROJCURVE_OK ||
+        skip != NULL || planar ||
+        projcurve_curve_create_nurbs(NULL, c.degree, c.n_ctrl, c.ctrl, c.weights, c.knots, &h) != PROJCURVE_OK)
+        return 0;
+    const int ok = projcurve_curve_closest_point(NULL, h, v, out, NULL, NULL) == PROJCURVE_OK;
+    projcurve_curve_destroy(h);
+    return ok;
+}
+
 /* A pcurve may run past its edge (it shares the 3D curve's parameter, and
  * the vertices bound the edge): when its ends are not at the vertices it
  * is cut, exactly (knot insertion), to the parameters nearest them. */
 static projcurve_status restrict_to_edge(const stopo *t, const projcurve_surface *s,
                                          pc_piece_input *piece, const double v0[3],
-                                         const double v1[3])
+                                         const double v1[3], const inst_node *curve3)
 {
     pc_curve2 c;
     if (pc_curve2_init(NULL, &c, piece->degree, piece->n_ctrl, piece->ctrl, piece->weights,
@@ -431,7 +478,17 @@ static projcurve_status restrict_to_edge(const stopo *t, const projcurve_surface
         pc_curve2_free(&c);
         return PROJCURVE_OK;
     }
-    const double a = nearest_parameter(s, &c, v0), b = nearest_parameter(s, &c, v1);
+    /* the 3D curve's parameter first (well conditioned where the surface
+     * is not: near a pole every u is nearly the same point) */
+    double a = 0.0, b = 0.0;
+    const double slack = 1e-9 * (t1 - t0);
+    if (curve3->inst == NULL || !curve3_parameter(t, curve3, v0, t0, t1, &a) ||
+        !curve3_parameter(t, curve3, v1, t0, t1, &b) || a < t0 - slack || b > t1 + slack) {
+        a = nearest_parameter(s, &c, v0);
+        b = nearest_parameter(s, &c, v1);
+    }
+    a = fmax(a, t0);
+    b = fmin(b, t1);
     pc_curve2_free(&c);
     if (!(b > a))
         return PROJCURVE_OK; /* left whole: check_piece reports the mismatch */
@@ -617,11 +674,11 @@ static projcurve_status edge_piece(const stopo *t, const pc_step_node *ref, long
         const inst_node *c = &found[(seam && n_found == 2 && oe_sense < 0) ? 1 : 0];
         st = pc_step_is(c->node, "LINE") ? line_piece(t, c, s, same > 0 ? va : vb, same > 0 ? vb : va, piece)
                                          : bspline_piece(t, c, piece);
-        if (st == PROJCURVE_OK && !t->reason[0] && !pc_step_is(c->node, "LINE"))
-            st = restrict_to_edge(t, s, piece, same > 0 ? va : vb, same > 0 ? vb : va);
-        inst_node curve3;
+        inst_node curve3 = {NULL, NULL};
         if (st == PROJCURVE_OK && !t->reason[0])
             st = fetch(t, pc_step_child(geom.node, 1), geom.inst->id, &curve3);
+        if (st == PROJCURVE_OK && !t->reason[0] && !pc_step_is(c->node, "LINE"))
+            st = restrict_to_edge(t, s, piece, same > 0 ? va : vb, same > 0 ? vb : va, &curve3);
         if (st == PROJCURVE_OK && !t->reason[0] && curve3.inst != NULL)
             st = check_against_curve(t, s, surface_id, edge.inst->id, piece, &curve3);
         flags |= seam ? PC_PIECE_SEAM : 0u;
