@@ -11,7 +11,7 @@
 /* Samples per direction of the periodicity test and of the speed used for
  * the (u, v) tolerance. */
 #define PC_FACE_PERIODIC_SAMPLES 9
-#define PC_FACE_SPEED_SAMPLES 33
+#define PC_FACE_SPEED_SAMPLES 17
 
 void pc_piece_ends(const pc_face_piece *p, double start[2], double end[2])
 {
@@ -48,9 +48,11 @@ double pc_face_uv_tolerance(const projcurve_surface *surface, double tol_model)
             double e[9];
             if (projcurve_surface_eval(NULL, surface, u, v, 1, e) != PROJCURVE_OK)
                 continue;
-            speed = fmax(speed, fmax(hypot(hypot(e[3], e[4]), e[5]), hypot(hypot(e[6], e[7]), e[8])));
+            /* squared speeds: the root once, at the end */
+            speed = fmax(speed, fmax(e[3] * e[3] + e[4] * e[4] + e[5] * e[5],
+                                     e[6] * e[6] + e[7] * e[7] + e[8] * e[8]));
         }
-    return speed > 0.0 ? tol_model / speed : tol_model;
+    return speed > 0.0 ? tol_model / sqrt(speed) : tol_model;
 }
 
 /* 1 when S(lo, t) = S(hi, t) (dir 0: across u) at every sample t. */

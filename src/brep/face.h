@@ -103,7 +103,7 @@ projcurve_status pc_face_build(projcurve_context *ctx, const projcurve_surface *
 void pc_face_free(projcurve_face *face);
 
 /* The ON tolerance in (u, v) that keeps within tol_model in 3D: tol_model
- * over the largest |Su|, |Sv| of a 33 x 33 sample of the domain (a sample,
+ * over the largest |Su|, |Sv| of a 17 x 17 sample of the domain (a sample,
  * not a bound: stated as such in docs/brep.md). */
 double pc_face_uv_tolerance(const projcurve_surface *surface, double tol_model);
 

@@ -15,7 +15,8 @@ typedef struct sew_piece {
 
 static double dist3(const double *a, const double *b)
 {
-    return hypot(hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]);
+    const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
+    return sqrt(x * x + y * y + z * z);
 }
 
 static int sample(const projcurve_face *f, pc_face_piece *piece, sew_piece *out)
