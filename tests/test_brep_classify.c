@@ -8,6 +8,7 @@
  * loops a caller can give.
  */
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -343,6 +344,54 @@ static void bad_loops(const projcurve_surface *s)
     CHECK_STATUS(projcurve_face_classify(NULL, NULL, 0.5, 0.5, &w), PROJCURVE_ERR_NULL_ARGUMENT);
 }
 
+/* One face read by several threads at once: every thread gets the
+ * answers of a single-threaded pass (the face is immutable). */
+enum { THREADS = 4, THREAD_POINTS = 20000 };
+typedef struct thread_job {
+    const projcurve_face *face;
+    const double *uv;
+    projcurve_where *out;
+} thread_job;
+
+static void *classify_all(void *arg)
+{
+    thread_job *job = arg;
+    for (int i = 0; i < THREAD_POINTS; ++i)
+        projcurve_face_classify(NULL, job->face, job->uv[2 * i], job->uv[2 * i + 1], &job->out[i]);
+    return NULL;
+}
+
+static void threads(const projcurve_surface *s)
+{
+    loops L = {0};
+    add_square(&L, 0, 0, 1, 1);
+    begin_loop(&L);
+    add_circle(&L, 0.5, 0.5, 0.25, 1);
+    projcurve_face *f = NULL;
+    CHECK_OK(make_face(NULL, s, &L, &f));
+    static double uv[2 * THREAD_POINTS];
+    static projcurve_where single[THREAD_POINTS], multi[THREADS][THREAD_POINTS];
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 5);
+    for (int i = 0; i < 2 * THREAD_POINTS; ++i)
+        uv[i] = pc_test_rng_uniform(&rng, -0.1, 1.1);
+    thread_job one = {f, uv, single};
+    classify_all(&one);
+    pthread_t t[THREADS];
+    thread_job jobs[THREADS];
+    for (int k = 0; k < THREADS; ++k) {
+        jobs[k] = (thread_job){f, uv, multi[k]};
+        CHECK(pthread_create(&t[k], NULL, classify_all, &jobs[k]) == 0);
+    }
+    for (int k = 0; k < THREADS; ++k)
+        pthread_join(t[k], NULL);
+    int differ = 0;
+    for (int k = 0; k < THREADS; ++k)
+        differ += memcmp(single, multi[k], sizeof single) != 0;
+    CHECK(differ == 0);
+    projcurve_face_destroy(f);
+}
+
 int main(void)
 {
     projcurve_surface *s = unit_square();
@@ -351,6 +400,7 @@ int main(void)
     star(s);
     natural_boundary(s);
     bad_loops(s);
+    threads(s);
     projcurve_surface_destroy(s);
     return pc_test_finish("test_brep_classify");
 }
