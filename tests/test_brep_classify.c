@@ -4,8 +4,8 @@
  * classified against the analytic answer on dense grids: a square with a
  * circular hole (exact rational arcs), a square with several holes, a
  * star of 600 line pieces against an independent even-odd count, points on
- * and near the boundary, loops given in the wrong orientation, and the bad
- * loops a caller can give.
+ * and near the boundary, loops given in the wrong orientation, the bad
+ * loops a caller can give, and one face classified by four threads at once.
  */
 #include <math.h>
 #include <pthread.h>
