@@ -5,7 +5,8 @@
  * every expected answer is exact: a square face with a square hole whose
  * edges have no pcurve (projected), edges shared by two faces, and bad
  * input (an open loop, a hole outside its outer loop, a reference to a
- * missing instance, a loop that holds itself, a surface kind not built),
+ * missing instance, a loop that holds itself, a loop whose text does not
+ * parse, a surface kind not built),
  * each listed with a message naming the face while the other faces load.
  */
 #include <math.h>
@@ -203,6 +204,9 @@ static void bad_face(const char *what, const char *words, int kind)
         const int l = t.next;
         add(&t, "EDGE_LOOP('',(#%d))", l);
         bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
+    } else if (kind == 5) { /* a loop whose text does not parse */
+        const int l = add(&t, "EDGE_LOOP('',(#%d #%d))", good[0], good[1]);
+        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
     } else { /* a plane */
         const int o = add(&t, "CARTESIAN_POINT('',(0.,0.,0.))");
         const int z = add(&t, "DIRECTION('',(0.,0.,1.))"), x = add(&t, "DIRECTION('',(1.,0.,0.))");
@@ -232,7 +236,8 @@ int main(void)
     bad_face("hole outside", "loop 1 (a hole) is outside the outer loop", 1);
     bad_face("missing reference", "refers to #9999, which is not defined", 2);
     bad_face("loop in itself", "a loop member is not an ORIENTED_EDGE", 3);
-    bad_face("plane", "surface kind plane not built", 4);
+    bad_face("plane", "surface kind plane not built", 6);
+    bad_face("malformed loop", "expected ',' or ')' in a list", 5);
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_topology_step");
 }

@@ -50,6 +50,8 @@ projcurve_status pc_step_fetch(const stopo *t, const pc_step_node *ref, long fro
     }
     pc_step_node *node;
     projcurve_status st = pc_step_parse(t->f, inst, t->arena, &node);
+    if (st == PROJCURVE_ERR_PARSE) /* a malformed instance spoils this face only */
+        return pc_step_give_up(t, "#%ld: %s", ref->ref, projcurve_context_message(t->f->ctx));
     if (st != PROJCURVE_OK)
         return st;
     out->inst = inst;
@@ -416,7 +418,14 @@ static projcurve_status read_shapes(stopo *t, size_t *idx, unsigned char *used)
             pc_step_node *node;
             if (!named(t->f, inst, shape_names))
                 continue;
-            if ((st = pc_step_parse(t->f, inst, t->arena, &node)) != PROJCURVE_OK)
+            st = pc_step_parse(t->f, inst, t->arena, &node);
+            if (st == PROJCURVE_ERR_PARSE) { /* listed; the other shapes go on */
+                st = pc_model_add_skipped(t->f->ctx, t->model, "STEP #%ld (a shape): %s", inst->id,
+                                          projcurve_context_message(t->f->ctx));
+                pc_arena_release(t->arena);
+                continue;
+            }
+            if (st != PROJCURVE_OK)
                 break;
             size_t n = 0;
             projcurve_shape_kind kind = PROJCURVE_SHAPE_SOLID;
@@ -477,7 +486,10 @@ projcurve_status pc_step_read_topology(pc_step_file *f, projcurve_model *model)
         if (!named(f, &f->instances[i], face_names))
             continue;
         st = pc_step_parse(f, &f->instances[i], &arena, &node);
-        if (st == PROJCURVE_OK && (pc_step_is(node, "ADVANCED_FACE") || pc_step_is(node, "FACE_SURFACE"))) {
+        if (st == PROJCURVE_ERR_PARSE) /* listed; the other faces go on */
+            st = pc_model_add_unbuilt(f->ctx, model, "other", "STEP #%ld (a face): %s",
+                                      f->instances[i].id, projcurve_context_message(f->ctx));
+        else if (st == PROJCURVE_OK && (pc_step_is(node, "ADVANCED_FACE") || pc_step_is(node, "FACE_SURFACE"))) {
             const inst_node face = {&f->instances[i], node};
             st = read_face(&t, &face);
         }
