@@ -21,7 +21,7 @@
 #include "projcurve.h"
 
 #define TOL_UV 1e-6
-#define MAX_PIECES 1024
+#define MAX_PIECES 4096
 
 static projcurve_surface *unit_square(void)
 {
@@ -278,6 +278,44 @@ static void star(const projcurve_surface *s)
     projcurve_face_destroy(f);
 }
 
+/* A star of 3000 vertices alternating between radius 0.05 and 0.45: every
+ * spike's box covers a good part of the face, so the grid's lists would
+ * grow quadratically; the grid is coarsened instead (classify.c), and
+ * the answers still agree with the independent even-odd count. */
+static void long_spikes(const projcurve_surface *s)
+{
+    enum { N = 3000 };
+    static double p[N][2];
+    for (int k = 0; k < N; ++k) {
+        const double a = 2.0 * M_PI * k / N, r = (k % 2) ? 0.45 : 0.05;
+        p[k][0] = 0.5 + r * cos(a);
+        p[k][1] = 0.5 + r * sin(a);
+    }
+    static loops L;
+    memset(&L, 0, sizeof L);
+    begin_loop(&L);
+    for (int k = 0; k < N; ++k)
+        add_line(&L, p[k][0], p[k][1], p[(k + 1) % N][0], p[(k + 1) % N][1]);
+    projcurve_face *f = NULL;
+    CHECK_OK(projcurve_face_create(NULL, s, L.n_loops, L.loop_pieces, L.degree, L.n_ctrl,
+                                   L.ctrl_p, L.weights_p, L.knots_p, 1e-9, &f));
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 23);
+    int wrong = 0;
+    for (int q = 0; q < 20000 && f != NULL; ++q) {
+        const double x = pc_test_rng_uniform(&rng, 0.0, 1.0), y = pc_test_rng_uniform(&rng, 0.0, 1.0);
+        const double d = star_distance(p, N, x, y);
+        projcurve_where w;
+        CHECK_OK(projcurve_face_classify(NULL, f, x, y, &w));
+        const projcurve_where expect = d <= 1e-9 ? PROJCURVE_ON
+                                       : (star_inside(p, N, x, y) ? PROJCURVE_IN : PROJCURVE_OUT);
+        if (w != expect && wrong++ < 5)
+            pc_test_fail_at(__FILE__, __LINE__, "spikes (%.17g, %.17g) d %g: %d, expected %d", x, y, d, (int)w, (int)expect);
+    }
+    CHECK(wrong == 0);
+    projcurve_face_destroy(f);
+}
+
 static void natural_boundary(const projcurve_surface *s)
 {
     projcurve_face *f = NULL;
@@ -398,6 +436,7 @@ int main(void)
     square_with_hole(s);
     several_holes(s);
     star(s);
+    long_spikes(s);
     natural_boundary(s);
     bad_loops(s);
     threads(s);

@@ -70,6 +70,36 @@ static void segment_cells(const pc_classifier *c, const double *s, size_t r[4])
     r[3] = cell_of(fmax(s[1], s[3]) + c->tol, c->y0, c->dy, c->ny);
 }
 
+/* The cell lists' total length on the current grid. */
+static size_t registrations(const pc_classifier *c)
+{
+    size_t total = 0;
+    for (size_t i = 0; i < c->n_seg; ++i) {
+        size_t r[4];
+        segment_cells(c, c->seg + 4 * i, r);
+        total += (r[1] - r[0] + 1) * (r[3] - r[2] + 1);
+    }
+    return total;
+}
+
+/* Long segments across the grid are listed in every cell of their box: a
+ * loop of many of them (a zigzag over the face) would list them
+ * quadratically often. The grid is coarsened, halving each side, until
+ * the lists hold at most PC_CLASSIFY_MAX_LISTED_PER_SEGMENT entries a
+ * segment (one cell at worst: then n_seg entries), so memory stays linear
+ * and the build ends after at most log2 of the cells halvings. */
+static void coarsen_grid(pc_classifier *c)
+{
+    const size_t limit = PC_CLASSIFY_MAX_LISTED_PER_SEGMENT * (c->n_seg + 1);
+    while ((c->nx > 1 || c->ny > 1) && registrations(c) > limit) {
+        const double w = c->dx * (double)c->nx, h = c->dy * (double)c->ny;
+        c->nx = c->nx > 1 ? (c->nx + 1) / 2 : 1;
+        c->ny = c->ny > 1 ? (c->ny + 1) / 2 : 1;
+        c->dx = w / (double)c->nx;
+        c->dy = h / (double)c->ny;
+    }
+}
+
 static projcurve_status fill_cells(projcurve_context *ctx, pc_classifier *c)
 {
     const size_t n_cells = c->nx * c->ny;
@@ -277,6 +307,7 @@ projcurve_status pc_classifier_build(projcurve_context *ctx, pc_classifier *c, s
     const double grow = 2.0 * tol + 1e-300;
     box[0] -= grow, box[1] += grow, box[2] -= grow, box[3] += grow;
     size_grid(c, box);
+    coarsen_grid(c);
     projcurve_status st = fill_cells(ctx, c);
     if (st == PROJCURVE_OK)
         st = place_references(ctx, c);

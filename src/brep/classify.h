@@ -40,6 +40,9 @@ typedef enum pc_where { PC_OUT = 0, PC_IN = 1, PC_ON = 2 } pc_where;
 /* Cells per segment aimed at: a few segments a cell on average. */
 #define PC_CLASSIFY_CELLS_PER_SEGMENT 1.0
 #define PC_CLASSIFY_MAX_CELLS ((size_t)1 << 22)
+/* Cell-list entries a segment may cost on average before the grid is
+ * coarsened (classify.c, coarsen_grid). */
+#define PC_CLASSIFY_MAX_LISTED_PER_SEGMENT 64
 
 /* Builds the classifier of the closed polygons polys[k] (n_pts[k] points,
  * 2 doubles each, the closing segment implied). tol > 0. Statuses: OK,
