@@ -5,7 +5,8 @@
  * classification grids, shapes), and nanoseconds per point classified on
  * its faces (projcurve_face_classify), beside the same points counted over
  * every segment of the face's loops (the winding number without the grid)
- * in the same run.
+ * in the same run; and, where Open CASCADE's data exchange toolkits are
+ * installed, its reader on the same file (time, faces, wires).
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +15,9 @@
 #include "brep/face.h"
 #include "json.h"
 #include "svg.h"
+#ifdef PCB_HAVE_OCCT_READ
+#include "occt_read.h"
+#endif
 
 #define BREP_POINTS 4096 /* sample points per face, cycled through */
 #define BREP_REPS 9
@@ -47,6 +51,25 @@ typedef struct classify_work {
     double *uv; /* 2 * BREP_POINTS per face */
     size_t next;
 } classify_work;
+
+#ifdef PCB_HAVE_OCCT_READ
+/* Median CPU ms of Open CASCADE's reader over reps runs (one untimed). */
+static int occt_read_ms(const char *path, int reps, double *ms, int *faces, int *wires)
+{
+    double t[PCB_MAX_REPS];
+    if (reps > PCB_MAX_REPS)
+        reps = PCB_MAX_REPS;
+    for (int i = 0; i <= reps; ++i) {
+        double s = 0.0;
+        if (pcb_occt_read(path, &s, faces, wires) != 0)
+            return -1;
+        if (i > 0)
+            t[i - 1] = s;
+    }
+    *ms = 1e3 * pcb_median(t, (size_t)reps);
+    return 0;
+}
+#endif
 
 static int work_classify(void *user, size_t n)
 {
@@ -91,8 +114,14 @@ int pcb_cmd_brep(const pcb_args *args)
     enum { N_MODELS = sizeof brep_models / sizeof *brep_models };
     double xs[N_MODELS], grid_ns[N_MODELS], brute_ns[N_MODELS];
     size_t n_plotted = 0;
-    printf("%-26s %6s %6s %8s %10s %12s %12s %8s\n", "model", "faces", "loops", "segments",
-           "read ms", "classify ns", "brute ns", "brute/x");
+    printf("%-26s %6s %6s %8s %10s %12s %12s %8s%s\n", "model", "faces", "loops", "segments",
+           "read ms", "classify ns", "brute ns", "brute/x",
+#ifdef PCB_HAVE_OCCT_READ
+           "    occt ms faces/wires"
+#else
+           ""
+#endif
+    );
     for (size_t m = 0; m < sizeof brep_models / sizeof *brep_models; ++m) {
         char path[4096];
         pcb_join_path(path, sizeof path, args->data_dir, brep_models[m]);
@@ -127,8 +156,17 @@ int pcb_cmd_brep(const pcb_args *args)
                        pcb_time_pair(&timing, work_classify, &cw, work_brute, &cw, &pair) == 0;
         failed |= !ok && faces > 0;
         const char *name = brep_models[m] + 5;
-        printf("%-26s %6zu %6zu %8zu %10.2f %12.1f %12.1f %8.1f\n", name, faces, loops, segments,
+        double occt_ms = -1.0;
+        int occt_faces = -1, occt_wires = -1;
+#ifdef PCB_HAVE_OCCT_READ
+        if (occt_read_ms(path, args->quick ? 1 : 5, &occt_ms, &occt_faces, &occt_wires) != 0)
+            failed = 1;
+#endif
+        printf("%-26s %6zu %6zu %8zu %10.2f %12.1f %12.1f %8.1f", name, faces, loops, segments,
                1e3 * read_s, 1e9 * pair.a_s, 1e9 * pair.b_s, pair.a_s > 0 ? pair.b_s / pair.a_s : 0.0);
+        if (occt_ms >= 0.0)
+            printf(" %10.1f %5d/%d", occt_ms, occt_faces, occt_wires);
+        printf("\n");
         if (ok) {
             xs[n_plotted] = (double)segments / (double)faces;
             grid_ns[n_plotted] = 1e9 * pair.a_s;
@@ -143,6 +181,13 @@ int pcb_cmd_brep(const pcb_args *args)
         pcb_json_number(&json, "read_ms", 1e3 * read_s);
         pcb_json_number(&json, "classify_ns", 1e9 * pair.a_s);
         pcb_json_number(&json, "brute_ns", 1e9 * pair.b_s);
+        if (occt_ms >= 0.0) {
+            pcb_json_number(&json, "occt_read_ms", occt_ms);
+            pcb_json_int(&json, "occt_faces", occt_faces);
+            pcb_json_int(&json, "occt_wires", occt_wires);
+        } else {
+            pcb_json_null(&json, "occt_read_ms");
+        }
         pcb_json_object_end(&json);
         free(cw.uv);
         projcurve_model_destroy(model);
