@@ -33,6 +33,7 @@ static const pcb_command commands[] = {
     {"table1", pcb_cmd_table1, "the paper's Table 1: RK4 vs second-order tracing on Example 1"},
     {"cases", pcb_cmd_cases, "every test case: time, branches, pieces, measured deviation"},
     {"scaling", pcb_cmd_scaling, "time against 1/eps_D, patches and curve length"},
+    {"brep", pcb_cmd_brep, "read + build of each real model, face classification ns per point"},
 #ifdef PCB_HAVE_OCCT
     {"occt", pcb_cmd_occt, "the cases through Open CASCADE, side by side"},
 #endif

@@ -799,6 +799,157 @@ PROJCURVE_API int projcurve_model_length_unit(const projcurve_model *model,
  * minimum resolution), else 0. Thread-safe. */
 PROJCURVE_API int projcurve_model_precision(const projcurve_model *model, double *precision);
 
+/* ======================================================================== */
+/* Faces and shapes: trimmed surfaces and the edges they share               */
+/* ======================================================================== */
+
+/* A face is a surface with trimming loops in its (u, v) domain: one outer
+ * loop (the domain's boundary when none is given) and any number of holes,
+ * each a closed chain of 2D NURBS pieces. A shape is a set of faces of a
+ * model (a solid, a shell, or faces sewn by geometry) with the edges they
+ * share. Both are immutable and may be read by many threads at once; a
+ * face borrows its surface, which must outlive it. */
+typedef struct projcurve_face projcurve_face;
+typedef struct projcurve_shape projcurve_shape;
+
+/* Where a (u, v) point is with respect to a face. ON: within the face's
+ * (u, v) tolerance (projcurve_face_tolerance) of a loop. */
+typedef enum projcurve_where {
+    PROJCURVE_OUT = 0,
+    PROJCURVE_IN = 1,
+    PROJCURVE_ON = 2
+} projcurve_where;
+
+typedef enum projcurve_shape_kind {
+    PROJCURVE_SHAPE_SOLID = 0,        /* MANIFOLD_SOLID_BREP, BREP_WITH_VOIDS, IGES 186 */
+    PROJCURVE_SHAPE_CLOSED_SHELL = 1, /* a CLOSED_SHELL of a surface model */
+    PROJCURVE_SHAPE_OPEN_SHELL = 2,   /* an OPEN_SHELL */
+    PROJCURVE_SHAPE_FACE_SET = 3      /* independent faces (IGES 144/143, untrimmed surfaces) */
+} projcurve_shape_kind;
+
+/* Piece flags (projcurve_face_piece_edge). */
+#define PROJCURVE_PIECE_SEAM 1u       /* its edge appears twice in the loop */
+#define PROJCURVE_PIECE_DEGENERATE 2u /* its edge is a point in 3D (a pole) */
+#define PROJCURVE_PIECE_NATURAL 4u    /* a side of the domain, not an edge of the file */
+
+/* Creates a face on surface from n_loops loops, the first the outer one
+ * (n_loops = 0: the whole domain). Loop k has loop_pieces[k] pieces; piece
+ * j (counted over all loops) is a 2D NURBS curve of degree degrees[j] with
+ * n_ctrl[j] (u, v) control points ctrl[j] (2 doubles each), weights[j]
+ * (NULL, or weights itself NULL, for polynomial pieces) and n_ctrl[j] +
+ * degrees[j] + 1 knots[j]; each runs from the end of the one before, the
+ * last back to the start of the first, within 100 tol_uv. tol_uv (> 0) is the width of ON;
+ * 0 takes 1e-9 of the domain's size. Arrays are copied; the surface is
+ * borrowed. Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (tol_uv), BAD_DEGREE,
+ * BAD_COUNT, BAD_KNOTS, NOT_FINITE, BAD_WEIGHT, INVALID_ARGUMENT (an open
+ * loop, a hole outside the outer loop, a loop of no area), LIMIT_REACHED
+ * (a piece that needs more than 2^20 segments), NO_MEMORY; the message
+ * names the loop and piece. Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_face_create(
+    projcurve_context *ctx, const projcurve_surface *surface, size_t n_loops,
+    const size_t *loop_pieces, const int *degrees, const size_t *n_ctrl,
+    const double *const *ctrl, const double *const *weights, const double *const *knots,
+    double tol_uv, projcurve_face **out);
+
+/* Releases a face made by projcurve_face_create (NULL is ignored). Faces of
+ * a model belong to the model. */
+PROJCURVE_API void projcurve_face_destroy(projcurve_face *face);
+
+/* The face's surface (borrowed; NULL for NULL). */
+PROJCURVE_API const projcurve_surface *projcurve_face_surface(const projcurve_face *face);
+/* Loops, the outer one first (0 for NULL). */
+PROJCURVE_API size_t projcurve_face_loop_count(const projcurve_face *face);
+/* Statuses of the queries below: OK, NULL_ARGUMENT, INDEX (a loop or piece
+ * past the end). Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_face_loop_piece_count(projcurve_context *ctx,
+                                                               const projcurve_face *face,
+                                                               size_t loop, size_t *count);
+/* A piece's curve as stored (borrowed arrays, valid while the face lives;
+ * ctrl has 2 doubles a point, *weights is NULL for a polynomial piece). Any
+ * output pointer may be NULL. *sense is +1 when the loop runs along the
+ * curve's parameter, -1 against it. */
+PROJCURVE_API projcurve_status projcurve_face_piece_curve(
+    projcurve_context *ctx, const projcurve_face *face, size_t loop, size_t piece, int *degree,
+    size_t *n_ctrl, const double **ctrl, const double **weights, const double **knots,
+    int *sense);
+/* The 3D edge of a piece: *edge the model's id (the STEP instance number of
+ * its EDGE_CURVE, or -1 when the piece has no edge), *edge_sense +1 when
+ * the curve runs along the edge, *flags PROJCURVE_PIECE_*. Any output
+ * pointer may be NULL. */
+PROJCURVE_API projcurve_status projcurve_face_piece_edge(projcurve_context *ctx,
+                                                         const projcurve_face *face, size_t loop,
+                                                         size_t piece, long *edge,
+                                                         int *edge_sense, unsigned *flags);
+/* Where (u, v) is: IN, OUT, or ON within the face's (u, v) tolerance of a
+ * loop (exactly: within tol_uv of the loops' polygons, which lie within
+ * tol_uv / 4 of the loops). A point outside the domain is OUT unless it is
+ * ON. Statuses: OK, NULL_ARGUMENT, NOT_FINITE. Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_face_classify(projcurve_context *ctx,
+                                                       const projcurve_face *face, double u,
+                                                       double v, projcurve_where *where);
+/* The box of the outer loop in (u, v), {u0, u1, v0, v1}, and a 3D box
+ * {x0, y0, z0, x1, y1, z1} that holds the face; either may be NULL. */
+PROJCURVE_API projcurve_status projcurve_face_bounds(projcurve_context *ctx,
+                                                     const projcurve_face *face,
+                                                     double box_uv[4], double box[6]);
+/* The face's tolerances: *tol_uv the width of ON in (u, v), *tol_model the
+ * model precision it was made for (0 for a caller's face). Either may be
+ * NULL. */
+PROJCURVE_API projcurve_status projcurve_face_tolerance(projcurve_context *ctx,
+                                                        const projcurve_face *face,
+                                                        double *tol_uv, double *tol_model);
+/* *same_sense +1 when the face's normal is Su x Sv, -1 when opposite;
+ * periodic[0], periodic[1]: the surface closes on itself across u, across
+ * v; *kind the surface kind as read from the file ("bspline", "plane",
+ * ...; borrowed). Any output pointer may be NULL. */
+PROJCURVE_API projcurve_status projcurve_face_info(projcurve_context *ctx,
+                                                   const projcurve_face *face, int *same_sense,
+                                                   int periodic[2], const char **kind);
+
+/* Faces and shapes of a model (borrowed, valid while the model lives; NULL
+ * past the end, counts 0 for NULL). A face the reader could not build is
+ * listed with its reason instead ("STEP #53 ADVANCED_FACE: surface kind
+ * plane not built"). */
+PROJCURVE_API size_t projcurve_model_face_count(const projcurve_model *model);
+PROJCURVE_API const projcurve_face *projcurve_model_face(const projcurve_model *model,
+                                                         size_t index);
+PROJCURVE_API size_t projcurve_model_shape_count(const projcurve_model *model);
+PROJCURVE_API const projcurve_shape *projcurve_model_shape(const projcurve_model *model,
+                                                           size_t index);
+PROJCURVE_API size_t projcurve_model_unbuilt_face_count(const projcurve_model *model);
+PROJCURVE_API const char *projcurve_model_unbuilt_face(const projcurve_model *model,
+                                                       size_t index);
+/* The file's surface kind of an unbuilt face ("plane", ...; NULL past the end). */
+PROJCURVE_API const char *projcurve_model_unbuilt_face_kind(const projcurve_model *model,
+                                                            size_t index);
+
+/* A shape's kind and, for faces sewn by geometry, the tolerance their
+ * edges were matched with (0 when the file gave the edges); either may be
+ * NULL. Statuses: OK, NULL_ARGUMENT. */
+PROJCURVE_API projcurve_status projcurve_shape_info(projcurve_context *ctx,
+                                                    const projcurve_shape *shape,
+                                                    projcurve_shape_kind *kind, double *sew_tol);
+/* Faces of a shape (0 / NULL past the end), and the model's index of each. */
+PROJCURVE_API size_t projcurve_shape_face_count(const projcurve_shape *shape);
+PROJCURVE_API const projcurve_face *projcurve_shape_face(const projcurve_shape *shape,
+                                                         size_t index);
+PROJCURVE_API projcurve_status projcurve_shape_face_model_index(projcurve_context *ctx,
+                                                                const projcurve_shape *shape,
+                                                                size_t index, size_t *model_index);
+/* Edges of a shape, by increasing id: edge i has id *id and is used by
+ * *n_uses face pieces (2 for an edge between two faces, 1 on a free
+ * border, 2 in one face for a seam). Use k of it is piece *piece of loop
+ * *loop of the shape's face *face; *sense +1 when that loop runs along the
+ * edge. Output pointers may be NULL. Statuses: OK, NULL_ARGUMENT, INDEX. */
+PROJCURVE_API size_t projcurve_shape_edge_count(const projcurve_shape *shape);
+PROJCURVE_API projcurve_status projcurve_shape_edge(projcurve_context *ctx,
+                                                    const projcurve_shape *shape, size_t edge,
+                                                    long *id, size_t *n_uses);
+PROJCURVE_API projcurve_status projcurve_shape_edge_use(projcurve_context *ctx,
+                                                        const projcurve_shape *shape,
+                                                        size_t edge, size_t use, size_t *face,
+                                                        size_t *loop, size_t *piece, int *sense);
+
 /* An IGES writer: collect surfaces, curves and projection results, then
  * write them as one IGES 5.3 file. */
 typedef struct projcurve_iges_writer projcurve_iges_writer;

@@ -461,6 +461,81 @@ static void skipped_entities(void)
     free(text);
 }
 
+/* 144 trimmed surfaces on one bilinear 128: the natural boundary (N1 = 0)
+ * is a face; an outer 142 without parameter-space curve (BPTR 0) and an
+ * outer boundary that points at no entity are listed with the reason,
+ * naming the 144, and do not stop the file. */
+static void trimmed_surfaces(void)
+{
+    static const char plane[] = "1,1,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.,1.,1.,1.,1.,"
+                                "0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,0.,1.,0.,1.;";
+    const entity e[] = {
+        {128, 0, 0, "00010000", plane},
+        {144, 0, 0, NULL, "1,0,0,0;"},
+        {142, 0, 0, "00010000", "0,1,0,0,1;"},
+        {144, 0, 0, NULL, "1,1,0,5;"},
+        {144, 0, 0, NULL, "1,1,0,99;"},
+    };
+    char *text = format_iges(e, 5, NULL, ',');
+    projcurve_model *m = read_text(text);
+    if (m) {
+        CHECK(projcurve_model_face_count(m) == 1);
+        CHECK(projcurve_model_unbuilt_face_count(m) == 2);
+        CHECK(projcurve_face_loop_count(projcurve_model_face(m, 0)) == 1);
+        const char *expect[] = {"IGES entity 144 at DE 7: its curve on surface DE 5 has no "
+                                "parameter-space curve",
+                                "IGES entity 144 at DE 9"};
+        for (size_t k = 0; k < 2; ++k) {
+            const char *why = projcurve_model_unbuilt_face(m, k);
+            if (why == NULL || strstr(why, expect[k]) == NULL)
+                pc_test_fail_at(__FILE__, __LINE__, "unbuilt face %zu: \"%s\", expected \"%s\"", k,
+                                why ? why : "(none)", expect[k]);
+            ++pc_test_checks;
+        }
+        const char *why = projcurve_model_unbuilt_face(m, 1);
+        CHECK(why != NULL && strstr(why, "99") != NULL);
+        projcurve_where w;
+        CHECK_OK(projcurve_face_classify(ctx, projcurve_model_face(m, 0), 0.5, 0.5, &w));
+        CHECK(w == PROJCURVE_IN);
+        projcurve_model_destroy(m);
+    }
+    free(text);
+}
+
+/* A 143 bounded surface: one 141 boundary whose parameter-space curve is
+ * a closed degree-1 126 around [0.25, 0.75]^2 of a bilinear 128. */
+static void bounded_surface(void)
+{
+    static const char plane[] = "1,1,1,1,0,0,1,0,0,0.,0.,1.,1.,0.,0.,1.,1.,1.,1.,1.,1.,"
+                                "0.,0.,0.,1.,0.,0.,0.,1.,0.,1.,1.,0.,0.,1.,0.,1.;";
+    static const char square[] = "4,1,0,0,1,0,0.,0.,1.,2.,3.,4.,4.,1.,1.,1.,1.,1.,"
+                                 "0.25,0.25,0.,0.75,0.25,0.,0.75,0.75,0.,0.25,0.75,0.,"
+                                 "0.25,0.25,0.,0.,4.,0.,0.,1.;";
+    const entity e[] = {
+        {128, 0, 0, "00010000", plane},
+        {126, 0, 0, "00010500", square},
+        {141, 0, 0, "00010000", "1,1,1,1,3,1,1,3;"},
+        {143, 0, 0, NULL, "1,1,1,5;"},
+    };
+    char *text = format_iges(e, 4, NULL, ',');
+    projcurve_model *m = read_text(text);
+    if (m) {
+        CHECK(projcurve_model_face_count(m) == 1);
+        CHECK(projcurve_model_unbuilt_face_count(m) == 0);
+        const projcurve_face *f = projcurve_model_face(m, 0);
+        CHECK(projcurve_face_loop_count(f) == 1);
+        const double pts[3][2] = {{0.5, 0.5}, {0.1, 0.1}, {0.25, 0.5}};
+        const projcurve_where want[3] = {PROJCURVE_IN, PROJCURVE_OUT, PROJCURVE_ON};
+        for (int k = 0; k < 3; ++k) {
+            projcurve_where w = PROJCURVE_OUT;
+            CHECK_OK(projcurve_face_classify(ctx, f, pts[k][0], pts[k][1], &w));
+            CHECK(w == want[k]);
+        }
+        projcurve_model_destroy(m);
+    }
+    free(text);
+}
+
 static void custom_delimiters(void)
 {
     /* Parameter delimiter '/', record delimiter '!'; a Hollerith string
@@ -496,6 +571,8 @@ int main(void)
     surface_subdomain();
     skipped_entities();
     custom_delimiters();
+    trimmed_surfaces();
+    bounded_surface();
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_iges_entities");
 }

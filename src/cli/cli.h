@@ -98,6 +98,10 @@ void cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out);
 
 /* ---- commands ---- */
 int cli_cmd_info(int argc, char **argv);
+/* The shapes, faces, loops and edges of a model (info_topology.c), as text
+ * lines or as the JSON object of projcurve info --json. */
+void cli_print_topology(const projcurve_model *m);
+void cli_print_info_json(const char *path, const projcurve_model *m);
 int cli_cmd_project(int argc, char **argv);
 int cli_cmd_demo(int argc, char **argv);
 

@@ -58,6 +58,9 @@ typedef struct pc_iges_file {
      * taking quadratic time. */
     size_t *work_done;
     size_t work_limit;
+    /* The model's surface index of each entry read as a surface, -1 for
+     * the others (the faces of iges_topology.c look their surfaces up). */
+    long *surface_of;
 } pc_iges_file;
 
 /* The parameters of one entity. */
@@ -118,5 +121,10 @@ projcurve_status pc_iges_analytic_surface(const pc_iges_file *f, size_t de, cons
  * into the model (iges_units.c); fields that are missing or not understood
  * leave the model's unit or precision unset. */
 projcurve_status pc_iges_read_units(const pc_iges_file *f, projcurve_model *model);
+
+/* Faces and the shape of the file (iges_topology.c), after the entities:
+ * marks what it reads in consumed. */
+projcurve_status pc_iges_read_topology(pc_iges_file *f, projcurve_model *model,
+                                       unsigned char *consumed);
 
 #endif /* PC_IO_IGES_H */

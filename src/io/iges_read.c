@@ -113,7 +113,11 @@ static projcurve_status read_entity(pc_iges_file *f, projcurve_model *model, siz
     if (e->type == 128) {
         pc_io_surface s;
         projcurve_status st = pc_iges_surface(f, de, &s);
-        return st != PROJCURVE_OK ? st : pc_model_add_surface(f->ctx, model, &s, origin);
+        if (st == PROJCURVE_OK)
+            st = pc_model_add_surface(f->ctx, model, &s, origin);
+        if (st == PROJCURVE_OK)
+            f->surface_of[index] = (long)model->n_surfaces - 1;
+        return st;
     }
     if (pc_iges_is_analytic_surface(e->type))
         return analytic_surface(f, model, index, consumed, origin);
@@ -170,11 +174,16 @@ projcurve_status pc_iges_read(projcurve_context *ctx, const char *data, size_t l
     unsigned char *consumed = NULL;
     if (st == PROJCURVE_OK) {
         consumed = pc_arena_calloc(&arena, f.n_entries + 1, 1);
-        if (consumed == NULL)
+        f.surface_of = pc_arena_calloc(&arena, f.n_entries + 1, sizeof *f.surface_of);
+        for (size_t i = 0; f.surface_of != NULL && i <= f.n_entries; ++i)
+            f.surface_of[i] = -1;
+        if (consumed == NULL || f.surface_of == NULL)
             st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
     }
     for (size_t i = 0; st == PROJCURVE_OK && i < f.n_entries; ++i)
         st = read_entity(&f, model, i, consumed);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_read_topology(&f, model, consumed);
     /* Everything neither read nor used by what was read is listed; 124
      * matrices are used through field 7 and 0 is the null entity. */
     for (size_t i = 0; st == PROJCURVE_OK && i < f.n_entries; ++i) {

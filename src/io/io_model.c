@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 #include "io/io_model.h"
 
+#include "brep/face.h"
+#include "brep/shape.h"
+
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -21,6 +24,16 @@ void pc_model_free(projcurve_model *model)
         projcurve_curve_destroy(model->curves[i]);
     for (size_t i = 0; i < model->n_skipped; ++i)
         free(model->skipped[i]);
+    for (size_t i = 0; i < model->n_shapes; ++i)
+        pc_shape_free(model->shapes[i]);
+    for (size_t i = 0; i < model->n_faces; ++i)
+        pc_face_free(model->faces[i]);
+    for (size_t i = 0; i < model->n_unbuilt; ++i)
+        free(model->unbuilt[i]);
+    free(model->shapes);
+    free(model->faces);
+    free(model->unbuilt);
+    free(model->unbuilt_kind);
     free(model->surfaces);
     free(model->surface_kinds);
     free(model->curves);

@@ -17,6 +17,7 @@
 /* More skipped entities than this are counted in one summary line. */
 #define PC_MODEL_MAX_SKIPPED_LISTED 100000
 #define PC_MODEL_SKIPPED_TEXT 160
+#define PC_MODEL_KIND_TEXT 24
 
 struct projcurve_model {
     projcurve_surface **surfaces;
@@ -33,6 +34,15 @@ struct projcurve_model {
     char **skipped;
     size_t n_skipped, cap_skipped;
     size_t n_skipped_unlisted;
+    /* Topology (io_topology.c): faces and shapes the model owns, and the
+     * faces that could not be built, each with its file kind and reason. */
+    projcurve_face **faces;
+    size_t n_faces, cap_faces;
+    projcurve_shape **shapes;
+    size_t n_shapes, cap_shapes;
+    char **unbuilt;
+    char (*unbuilt_kind)[PC_MODEL_KIND_TEXT];
+    size_t n_unbuilt, cap_unbuilt;
 };
 
 /* An empty model (NULL on allocation failure). */
@@ -58,6 +68,16 @@ projcurve_status pc_model_add_skipped(projcurve_context *ctx, projcurve_model *m
 
 /* Adds the line "... and N more skipped entities" once the list is full. */
 projcurve_status pc_model_note_unlisted(projcurve_context *ctx, projcurve_model *model);
+
+/* Takes a face / shape into the model (on failure, NO_MEMORY, it is
+ * released). */
+projcurve_status pc_model_add_face(projcurve_context *ctx, projcurve_model *model,
+                                   projcurve_face *face);
+projcurve_status pc_model_add_shape(projcurve_context *ctx, projcurve_model *model,
+                                    projcurve_shape *shape);
+/* Lists a face that could not be built: its file kind ("plane") and why. */
+projcurve_status pc_model_add_unbuilt(projcurve_context *ctx, projcurve_model *model,
+                                      const char *kind, const char *fmt, ...) PC_PRINTF(4, 5);
 
 /* The readers, one per format. Each fills model from data[0..len) (data is
  * NUL-terminated at len) and returns OK or the first error, with a message

@@ -651,7 +651,11 @@ static projcurve_status read_instance(reader *r, const pc_step_instance *inst, c
             pc_io_surface s;
             st = bspline_surface(r, inst, &b, &s, &skip);
             if (st == PROJCURVE_OK && skip == NULL)
-                return pc_model_add_surface(r->f->ctx, r->model, &s, origin);
+                st = pc_model_add_surface(r->f->ctx, r->model, &s, origin);
+            if (st == PROJCURVE_OK && skip == NULL && r->f->surface_of != NULL)
+                r->f->surface_of[inst - r->f->instances] = (long)r->model->n_surfaces - 1;
+            if (st != PROJCURVE_OK || skip == NULL)
+                return st;
         } else {
             if (is_trim_basis(r, inst->id))
                 return PROJCURVE_OK;
@@ -741,6 +745,74 @@ projcurve_status pc_step_read_geometry(pc_step_file *f, projcurve_model *model)
     return st;
 }
 
+projcurve_status pc_step_curve_geometry(pc_step_file *f, pc_arena *arena,
+                                       const pc_step_instance *inst, pc_io_curve *out,
+                                       const char **skip, int *planar)
+{
+    reader r = {.f = f, .arena = arena};
+    located loc = {.inst = inst};
+    pc_step_node *node;
+    projcurve_status st = pc_step_parse(f, inst, arena, &node);
+    if (st != PROJCURVE_OK)
+        return st;
+    loc.node = node;
+    *skip = NULL;
+    *planar = 0;
+    bspline_nodes b;
+    if (bspline_parts(node, &b) && b.dim == 1) {
+        st = bspline_curve(&r, inst, &b, out, skip);
+        if (st == PROJCURVE_OK && *skip != NULL && strstr(*skip, "2D") == *skip)
+            *skip = NULL, *planar = 1; /* the caller asked for parameter-space curves too */
+        return st;
+    }
+    if (pc_step_is(node, "CIRCLE"))
+        return full_circle(&r, &loc, out, skip);
+    if (pc_step_is(node, "TRIMMED_CURVE"))
+        return trimmed_curve(&r, &loc, out, skip);
+    *skip = "a curve kind not read";
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
+                              double origin[3], double dir[3])
+{
+    reader r = {.f = f, .arena = arena};
+    located loc = {.inst = inst};
+    pc_step_node *node;
+    projcurve_status st = pc_step_parse(f, inst, arena, &node);
+    if (st != PROJCURVE_OK)
+        return st;
+    loc.node = node;
+    if (!pc_step_is(node, "LINE"))
+        return bad(&r, inst, "expected a LINE");
+    return line_frame(&r, &loc, origin, dir);
+}
+
+projcurve_status pc_step_circle(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
+                                double centre[3], double x[3], double y[3], const char **skip)
+{
+    reader r = {.f = f, .arena = arena};
+    located loc = {.inst = inst};
+    pc_step_node *node;
+    projcurve_status st = pc_step_parse(f, inst, arena, &node);
+    if (st != PROJCURVE_OK)
+        return st;
+    loc.node = node;
+    *skip = NULL;
+    if (!pc_step_is(node, "CIRCLE"))
+        return bad(&r, inst, "expected a CIRCLE");
+    double radius = 0.0;
+    return circle_frame(&r, &loc, centre, x, y, &radius, skip);
+}
+
+projcurve_status pc_step_point(pc_step_file *f, pc_arena *arena, const pc_step_instance *from,
+                               const pc_step_node *ref, double p[3])
+{
+    reader r = {.f = f, .arena = arena};
+    size_t dim = 0;
+    return point(&r, from, ref, p, &dim);
+}
+
 projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t len,
                               projcurve_model *model)
 {
@@ -749,10 +821,20 @@ projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t l
                       .work_limit = PC_STEP_WORK_FACTOR * len + PC_STEP_WORK_MIN,
                       .radians_per_angle_unit = 1.0};
     projcurve_status st = pc_step_index(&f);
+    if (st == PROJCURVE_OK) {
+        f.surface_of = malloc((f.n_instances + 1) * sizeof *f.surface_of);
+        for (size_t i = 0; f.surface_of != NULL && i <= f.n_instances; ++i)
+            f.surface_of[i] = -1;
+        if (f.surface_of == NULL)
+            st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    }
     if (st == PROJCURVE_OK)
         st = pc_step_read_units(&f, model);
     if (st == PROJCURVE_OK)
         st = pc_step_read_geometry(&f, model);
+    if (st == PROJCURVE_OK)
+        st = pc_step_read_topology(&f, model);
+    free(f.surface_of);
     pc_step_index_free(&f);
     return st;
 }

@@ -149,7 +149,25 @@ def part_info(exe, shared, work):
         out = run([exe, "info", os.path.join(shared, "real", name)], 0, name).stdout
         check(f": {n} surface(s)" in out, f"info {name} reports {n} surfaces:\n{out[:300]}")
     out = run([exe, "info", os.path.join(shared, "real", "hammer.iges")], 0, "").stdout
-    check("skipped" in out and "IGES entity 144" in out, "info lists skipped trimmed surfaces")
+    check("45 face(s) (0 not built), 48 loop(s)" in out,
+          f"info lists hammer's 144 trimmed surfaces as 45 faces of 48 loops:\n{out[-600:]}")
+    # --json: the counts of Open CASCADE's reading and the face kinds of
+    # linkrods.step (6 planes, 4 cylinders, 9 tori, 18 B-spline faces)
+    for name, faces, kinds in (("hammer.iges", 45, {"bspline": 45}),
+                               ("linkrods.step", 37,
+                                {"bspline": 18, "plane": 6, "cylinder": 4, "torus": 9}),
+                               ("test_pipe_out_true.step", 6, {"bspline": 6})):
+        proc = run([exe, "info", "--json", os.path.join(shared, "real", name)], 0, name)
+        try:
+            doc = json.loads(proc.stdout)
+        except ValueError as e:
+            failures.append(f"info --json {name}: not JSON ({e}):\n{proc.stdout[:300]}")
+            continue
+        check(all(k in doc for k in ("faces", "loops", "edges", "shapes", "face_kinds")),
+              f"info --json {name}: keys {sorted(doc)}")
+        check(doc.get("faces") == faces and doc.get("face_kinds") == kinds,
+              f"info --json {name}: faces {doc.get('faces')}, kinds {doc.get('face_kinds')}; "
+              f"expected {faces}, {kinds}")
 
 
 def part_demo(exe, shared, work):

@@ -1,0 +1,502 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * IGES topology: trimmed surfaces (144: a base surface, an outer curve on
+ * surface 142 or the natural boundary, inner 142s), bounded surfaces (143
+ * with 141 boundaries) and untrimmed surfaces (a 128 that bounds no 144 or
+ * 143 is a face on its whole domain, as CAD readers take it). The loops
+ * are the parameter-space curves (BPTR of 142, PSCPT of 141); each member
+ * of a composite 102 is a piece of its own. All faces of a file make one
+ * shape of independent faces: IGES 144 shares no edge records.
+ *
+ * A face that cannot be built (a surface kind not built, a loop without
+ * parameter-space curve, an open loop, a hole outside) is listed on the
+ * model with the reason, and the rest of the file still loads.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "brep/face.h"
+#include "brep/sew.h"
+#include "brep/shape.h"
+#include "common/error.h"
+#include "io/iges.h"
+
+/* Global field 19, the minimum user-intended resolution, when the file
+ * does not give one: a fraction of the model's size. */
+#define PC_IGES_DEFAULT_RESOLUTION_REL 1e-7
+#define PC_IGES_GLOBAL_RESOLUTION_FIELD 19
+/* Pieces of a loop may miss each other by this many ON tolerances. */
+#define PC_IGES_CLOSE_FACTOR 10.0
+#define PC_IGES_MAX_LOOP_PIECES 100000
+#define PC_IGES_REASON 160
+
+typedef struct topo {
+    pc_iges_file *f;
+    projcurve_model *model;
+    unsigned char *consumed;
+    double resolution;
+} topo;
+
+/* Field 19 of the global section (0 when absent or unreadable). Fields are
+ * separated by the parameter delimiter; Hollerith strings (nH...) may hold
+ * it, so their n characters are skipped whole. */
+static double global_resolution(const pc_iges_file *f)
+{
+    const pc_iges_section *g = &f->sec[1];
+    char text[PC_IGES_DATA_COLUMNS * 64 + 1];
+    size_t len = 0;
+    for (size_t r = 0; r < g->count && len + PC_IGES_DATA_COLUMNS < sizeof text; ++r) {
+        memcpy(text + len, g->records[r], PC_IGES_DATA_COLUMNS);
+        len += PC_IGES_DATA_COLUMNS;
+    }
+    text[len] = '\0';
+    size_t field = 1, pos = 0;
+    while (pos < len && field < PC_IGES_GLOBAL_RESOLUTION_FIELD) {
+        size_t digits = pos;
+        while (digits < len && text[digits] == ' ')
+            ++digits;
+        size_t end = digits;
+        while (end < len && text[end] >= '0' && text[end] <= '9')
+            ++end;
+        if (end > digits && end < len && text[end] == 'H')
+            pos = end + 1 + (size_t)strtoul(text + digits, NULL, 10);
+        while (pos < len && text[pos] != f->param_delim && text[pos] != f->record_delim)
+            ++pos;
+        if (pos >= len || text[pos] == f->record_delim)
+            return 0.0;
+        ++pos;
+        ++field;
+    }
+    const double r = strtod(text + pos, NULL);
+    return isfinite(r) && r > 0.0 ? r : 0.0;
+}
+
+static void mark(const topo *t, long de)
+{
+    if (de > 0 && de % 2 == 1 && (size_t)(de - 1) / 2 < t->f->n_entries)
+        t->consumed[(de - 1) / 2] = 1;
+}
+
+static const char *surface_kind_name(int type)
+{
+    switch (type) {
+    case 128: return "bspline";
+    case 108: case 190: return "plane";
+    case 192: return "cylinder";
+    case 194: return "cone";
+    case 196: return "sphere";
+    case 198: return "torus";
+    case 118: return "ruled";
+    case 120: return "revolution";
+    case 122: return "extrusion";
+    case 140: return "offset";
+    default: return "other";
+    }
+}
+
+/* The model surface of the surface entity at DE de: the one place where a
+ * file's surface entity becomes the surface of a face. B-spline surfaces
+ * (128) are the model surfaces read by iges_read.c; any other kind gives
+ * its name in *kind and a reason. */
+static projcurve_status face_surface(const topo *t, long de, size_t from_de,
+                                     const projcurve_surface **out, const char **kind,
+                                     char reason[PC_IGES_REASON])
+{
+    *out = NULL;
+    *kind = "other";
+    const pc_iges_entry *e = pc_iges_entry_at(t->f, de, from_de);
+    if (e == NULL) {
+        snprintf(reason, PC_IGES_REASON, "its surface DE %ld is not an entity", de);
+        return PROJCURVE_OK;
+    }
+    *kind = surface_kind_name(e->type);
+    const long index = t->f->surface_of[(de - 1) / 2];
+    if (e->type != 128 || index < 0) {
+        snprintf(reason, PC_IGES_REASON, "surface kind %s (IGES %d at DE %ld) not built", *kind,
+                 e->type, de);
+        return PROJCURVE_OK;
+    }
+    *out = t->model->surfaces[index];
+    return PROJCURVE_OK;
+}
+
+/* The pieces read so far for one face, in the read's arena. */
+typedef struct pieces {
+    pc_piece_input *items;
+    size_t count, capacity;
+    pc_loop_input *loops;
+    size_t n_loops, cap_loops;
+} pieces;
+
+static int push_piece(const topo *t, pieces *p, const pc_io_curve *c, long edge, int sense)
+{
+    if (p->count == p->capacity) {
+        const size_t fresh = p->capacity ? 2 * p->capacity : 16;
+        pc_piece_input *items = pc_arena_calloc(t->f->arena, fresh, sizeof *items);
+        if (items == NULL)
+            return 0;
+        if (p->count)
+            memcpy(items, p->items, p->count * sizeof *items);
+        p->items = items;
+        p->capacity = fresh;
+    }
+    double *uv = pc_arena_calloc(t->f->arena, 2 * c->n_ctrl, sizeof *uv);
+    if (uv == NULL)
+        return 0;
+    for (size_t i = 0; i < c->n_ctrl; ++i)
+        uv[2 * i] = c->ctrl[3 * i], uv[2 * i + 1] = c->ctrl[3 * i + 1];
+    p->items[p->count++] = (pc_piece_input){.degree = c->degree, .n_ctrl = c->n_ctrl,
+                                            .ctrl = uv, .weights = c->weights,
+                                            .knots = c->knots, .edge = edge, .sense = sense,
+                                            .edge_sense = 1};
+    return 1;
+}
+
+/* Appends the pieces of the parameter-space curve at DE de (a 102's
+ * members one by one, or one curve). */
+static projcurve_status curve_pieces(const topo *t, long de, size_t from_de, int sense,
+                                     pieces *p, char reason[PC_IGES_REASON])
+{
+    const pc_iges_entry *e = pc_iges_entry_at(t->f, de, from_de);
+    if (e == NULL)
+        return PROJCURVE_ERR_PARSE;
+    size_t n = 1;
+    pc_iges_params params;
+    if (e->type == 102) {
+        projcurve_status st = pc_iges_params_of(t->f, (size_t)de, &params);
+        long count = 0;
+        if (st == PROJCURVE_OK)
+            st = pc_iges_int(&params, 1, &count);
+        if (st != PROJCURVE_OK)
+            return st;
+        if (count < 1 || count > PC_IGES_MAX_LOOP_PIECES || (size_t)count + 2 > params.count)
+            return pc_fail(t->f->ctx, PROJCURVE_ERR_PARSE,
+                           "IGES entity 102 at DE %ld: %ld curves, but %zu parameters", de, count,
+                           params.count);
+        n = (size_t)count;
+        mark(t, de);
+    }
+    const size_t first = p->count;
+    for (size_t i = 0; i < n; ++i) {
+        long member = de;
+        if (e->type == 102) {
+            projcurve_status st = pc_iges_int(&params, 2 + i, &member);
+            if (st != PROJCURVE_OK)
+                return st;
+            if (pc_iges_entry_at(t->f, member, (size_t)de) == NULL)
+                return PROJCURVE_ERR_PARSE;
+        }
+        pc_io_curve c;
+        const char *skip = NULL;
+        projcurve_status st = pc_iges_curve(t->f, (size_t)member, &c, &skip);
+        if (st != PROJCURVE_OK)
+            return st;
+        if (skip != NULL) {
+            snprintf(reason, PC_IGES_REASON, "its parameter curve DE %ld: %s", member, skip);
+            return PROJCURVE_OK;
+        }
+        mark(t, member);
+        if (!push_piece(t, p, &c, member, 1))
+            return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+    }
+    if (sense < 0) { /* the loop runs the whole chain backwards */
+        for (size_t i = first, j = p->count - 1; i < j; ++i, --j) {
+            const pc_piece_input tmp = p->items[i];
+            p->items[i] = p->items[j];
+            p->items[j] = tmp;
+        }
+        for (size_t i = first; i < p->count; ++i)
+            p->items[i].sense = -1;
+    }
+    return PROJCURVE_OK;
+}
+
+static int push_loop(const topo *t, pieces *p, size_t first, int outer)
+{
+    if (p->n_loops == p->cap_loops) {
+        const size_t fresh = p->cap_loops ? 2 * p->cap_loops : 8;
+        pc_loop_input *loops = pc_arena_calloc(t->f->arena, fresh, sizeof *loops);
+        if (loops == NULL)
+            return 0;
+        if (p->n_loops)
+            memcpy(loops, p->loops, p->n_loops * sizeof *loops);
+        p->loops = loops;
+        p->cap_loops = fresh;
+    }
+    /* pieces are placed once all loops are read: items may move */
+    p->loops[p->n_loops++] = (pc_loop_input){.pieces = NULL, .n_pieces = p->count - first,
+                                             .outer = outer};
+    return 1;
+}
+
+/* A loop from a 142 curve on surface: its BPTR. */
+static projcurve_status loop_of_142(const topo *t, long de, size_t from_de, int outer, pieces *p,
+                                    char reason[PC_IGES_REASON])
+{
+    const pc_iges_entry *e = pc_iges_entry_at(t->f, de, from_de);
+    if (e == NULL)
+        return PROJCURVE_ERR_PARSE;
+    if (e->type != 142) {
+        snprintf(reason, PC_IGES_REASON, "its boundary DE %ld is IGES %d, not a curve on surface", de,
+                 e->type);
+        return PROJCURVE_OK;
+    }
+    pc_iges_params params;
+    long bptr = 0, cptr = 0;
+    projcurve_status st = pc_iges_params_of(t->f, (size_t)de, &params);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&params, 3, &bptr);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&params, 4, &cptr);
+    if (st != PROJCURVE_OK)
+        return st;
+    mark(t, de);
+    if (cptr != 0 && pc_iges_entry_at(t->f, cptr, (size_t)de) != NULL) {
+        mark(t, cptr); /* read through the face */
+        const pc_iges_entry *c = pc_iges_entry_at(t->f, cptr, (size_t)de);
+        if (c->type == 102) {
+            pc_iges_params m;
+            long n = 0;
+            if (pc_iges_params_of(t->f, (size_t)cptr, &m) == PROJCURVE_OK &&
+                pc_iges_int(&m, 1, &n) == PROJCURVE_OK)
+                for (long i = 0; i < n && (size_t)(2 + i) < m.count; ++i) {
+                    long member = 0;
+                    if (pc_iges_int(&m, 2 + (size_t)i, &member) == PROJCURVE_OK)
+                        mark(t, member);
+                }
+        }
+    }
+    if (bptr == 0) {
+        snprintf(reason, PC_IGES_REASON,
+                 "its curve on surface DE %ld has no parameter-space curve (BPTR 0)", de);
+        return PROJCURVE_OK;
+    }
+    const size_t first = p->count;
+    st = curve_pieces(t, bptr, (size_t)de, 1, p, reason);
+    if (st != PROJCURVE_OK || reason[0])
+        return st;
+    return push_loop(t, p, first, outer)
+               ? PROJCURVE_OK
+               : pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+}
+
+/* Builds the face from the loops read, or lists why it cannot be. */
+static projcurve_status finish_face(const topo *t, const projcurve_surface *surface,
+                                    const char *kind, pieces *p, size_t de, int type,
+                                    const char *reason)
+{
+    char what[64];
+    snprintf(what, sizeof what, "IGES entity %d at DE %zu", type, de);
+    if (reason[0]) {
+        t->consumed[(de - 1) / 2] = 0; /* also listed as skipped, as before faces were read */
+        return pc_model_add_unbuilt(t->f->ctx, t->model, kind, "%s: %s", what, reason);
+    }
+    size_t at = 0;
+    for (size_t l = 0; l < p->n_loops; ++l) {
+        p->loops[l].pieces = p->items + at;
+        at += p->loops[l].n_pieces;
+    }
+    double box[6];
+    projcurve_surface_bounds(NULL, surface, box);
+    const double size = hypot(hypot(box[3] - box[0], box[4] - box[1]), box[5] - box[2]);
+    const double tol_model = t->resolution > 0.0 ? t->resolution
+                                                 : PC_IGES_DEFAULT_RESOLUTION_REL * size;
+    const double tol_uv = pc_face_uv_tolerance(surface, tol_model);
+    const pc_face_params fp = {.tol_uv = tol_uv, .tol_model = tol_model,
+                               .close_tol = PC_IGES_CLOSE_FACTOR * tol_uv, .same_sense = 1,
+                               .id = (long)de, .kind = kind, .what = what};
+    projcurve_face *face = NULL;
+    projcurve_context scratch = {.magic = PC_CONTEXT_MAGIC};
+    const projcurve_status st = pc_face_build(&scratch, surface, p->loops, p->n_loops, &fp, &face);
+    if (st == PROJCURVE_ERR_NO_MEMORY)
+        return pc_fail(t->f->ctx, st, "%s", scratch.last_message);
+    if (st != PROJCURVE_OK) {
+        t->consumed[(de - 1) / 2] = 0;
+        return pc_model_add_unbuilt(t->f->ctx, t->model, kind, "%s", scratch.last_message);
+    }
+    return pc_model_add_face(t->f->ctx, t->model, face);
+}
+
+/* 144 (PTS, N1, N2, PTO, PTI(1..N2)). */
+static projcurve_status read_144(const topo *t, size_t de)
+{
+    pc_iges_params params;
+    long pts = 0, n1 = 0, n2 = 0, pto = 0;
+    projcurve_status st = pc_iges_params_of(t->f, de, &params);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&params, 1, &pts);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&params, 2, &n1);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&params, 3, &n2);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&params, 4, &pto);
+    if (st != PROJCURVE_OK)
+        return st;
+    mark(t, (long)de);
+    char reason[PC_IGES_REASON] = "";
+    const projcurve_surface *surface = NULL;
+    const char *kind = "other";
+    if ((st = face_surface(t, pts, de, &surface, &kind, reason)) != PROJCURVE_OK)
+        return st;
+    if (n2 < 0 || (size_t)n2 + 5 > params.count)
+        snprintf(reason, PC_IGES_REASON, "%ld inner boundaries, but %zu parameters", n2,
+                 params.count - 1);
+    pieces p = {0};
+    if (!reason[0] && n1 != 0 && pto != 0)
+        st = loop_of_142(t, pto, de, 1, &p, reason);
+    for (long k = 0; st == PROJCURVE_OK && !reason[0] && k < n2; ++k) {
+        long pti = 0;
+        st = pc_iges_int(&params, 5 + (size_t)k, &pti);
+        if (st == PROJCURVE_OK)
+            st = loop_of_142(t, pti, de, 0, &p, reason);
+    }
+    if (st == PROJCURVE_ERR_PARSE) { /* a reference to nothing: this face only */
+        snprintf(reason, PC_IGES_REASON, "%s", projcurve_context_message(t->f->ctx));
+        st = PROJCURVE_OK;
+    }
+    if (st != PROJCURVE_OK)
+        return st;
+    return finish_face(t, surface, kind, &p, de, 144, reason);
+}
+
+/* 143 (TYPE, SPTR, N, BDPT(1..N)) with 141 boundaries (TYPE, PREF, SPTR,
+ * N, then per curve CRVPT, SENSE, K, PSCPT(1..K)); the first boundary is
+ * the outer one. */
+static projcurve_status read_143(const topo *t, size_t de)
+{
+    pc_iges_params params;
+    long sptr = 0, n = 0;
+    projcurve_status st = pc_iges_params_of(t->f, de, &params);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&params, 2, &sptr);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&params, 3, &n);
+    if (st != PROJCURVE_OK)
+        return st;
+    mark(t, (long)de);
+    char reason[PC_IGES_REASON] = "";
+    const projcurve_surface *surface = NULL;
+    const char *kind = "other";
+    if ((st = face_surface(t, sptr, de, &surface, &kind, reason)) != PROJCURVE_OK)
+        return st;
+    pieces p = {0};
+    for (long b = 0; st == PROJCURVE_OK && !reason[0] && b < n; ++b) {
+        long bd = 0;
+        pc_iges_params bp;
+        if ((st = pc_iges_int(&params, 4 + (size_t)b, &bd)) != PROJCURVE_OK)
+            break;
+        const pc_iges_entry *e = pc_iges_entry_at(t->f, bd, de);
+        if (e == NULL || e->type != 141) {
+            snprintf(reason, PC_IGES_REASON, "its boundary DE %ld is not a 141 boundary", bd);
+            break;
+        }
+        mark(t, bd);
+        long n_curves = 0;
+        if ((st = pc_iges_params_of(t->f, (size_t)bd, &bp)) != PROJCURVE_OK ||
+            (st = pc_iges_int(&bp, 4, &n_curves)) != PROJCURVE_OK)
+            break;
+        const size_t first = p.count;
+        size_t at = 5;
+        for (long c = 0; st == PROJCURVE_OK && !reason[0] && c < n_curves; ++c) {
+            long crvpt = 0, sense = 1, k = 0, pscpt = 0;
+            if ((st = pc_iges_int(&bp, at, &crvpt)) != PROJCURVE_OK ||
+                (st = pc_iges_int(&bp, at + 1, &sense)) != PROJCURVE_OK ||
+                (st = pc_iges_int(&bp, at + 2, &k)) != PROJCURVE_OK)
+                break;
+            mark(t, crvpt);
+            if (k < 1) {
+                snprintf(reason, PC_IGES_REASON,
+                         "boundary DE %ld curve %ld has no parameter-space curve", bd, c);
+                break;
+            }
+            for (long j = 0; st == PROJCURVE_OK && !reason[0] && j < k; ++j)
+                if ((st = pc_iges_int(&bp, at + 3 + (size_t)j, &pscpt)) == PROJCURVE_OK)
+                    st = curve_pieces(t, pscpt, (size_t)bd, sense == 2 ? -1 : 1, &p, reason);
+            at += 3 + (size_t)k;
+        }
+        if (st == PROJCURVE_OK && !reason[0] && !push_loop(t, &p, first, b == 0))
+            st = pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+    }
+    if (st == PROJCURVE_ERR_PARSE) {
+        snprintf(reason, PC_IGES_REASON, "%s", projcurve_context_message(t->f->ctx));
+        st = PROJCURVE_OK;
+    }
+    if (st != PROJCURVE_OK)
+        return st;
+    return finish_face(t, surface, kind, &p, de, 143, reason);
+}
+
+/* Independent surfaces that bound no 144 / 143 are faces on their whole
+ * domain (a physically dependent one is part of something else). */
+static projcurve_status natural_faces(const topo *t, const unsigned char *is_base)
+{
+    for (size_t i = 0; i < t->f->n_entries; ++i) {
+        if (is_base[i] || t->f->surface_of[i] < 0 || t->f->entries[i].subordinate == 1)
+            continue;
+        pieces p = {0};
+        const projcurve_surface *surface = t->model->surfaces[t->f->surface_of[i]];
+        projcurve_status st = finish_face(t, surface, surface_kind_name(t->f->entries[i].type),
+                                          &p, 2 * i + 1, t->f->entries[i].type, "");
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    return PROJCURVE_OK;
+}
+
+static projcurve_status face_set(const topo *t)
+{
+    projcurve_model *m = t->model;
+    if (m->n_faces == 0)
+        return PROJCURVE_OK;
+    size_t *index = malloc(m->n_faces * sizeof *index);
+    if (index == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+    for (size_t i = 0; i < m->n_faces; ++i)
+        index[i] = i;
+    /* edges shared by geometry, within the file's resolution (else the
+     * default fraction of the faces' own precision) */
+    double tol = t->resolution;
+    for (size_t i = 0; tol <= 0.0 && i < m->n_faces; ++i)
+        tol = m->faces[i]->tol_model;
+    size_t shared = 0;
+    projcurve_status st = pc_sew_faces(t->f->ctx, m->faces, m->n_faces, tol, &shared);
+    projcurve_shape *shape = NULL;
+    if (st == PROJCURVE_OK)
+        st = pc_shape_build(t->f->ctx, PROJCURVE_SHAPE_FACE_SET, -1,
+                            (const projcurve_face *const *)m->faces, index, m->n_faces, &shape);
+    free(index);
+    if (st != PROJCURVE_OK)
+        return st;
+    shape->sew_tol = tol;
+    return pc_model_add_shape(t->f->ctx, m, shape);
+}
+
+projcurve_status pc_iges_read_topology(pc_iges_file *f, projcurve_model *model,
+                                       unsigned char *consumed)
+{
+    topo t = {.f = f, .model = model, .consumed = consumed, .resolution = global_resolution(f)};
+    unsigned char *is_base = pc_arena_calloc(f->arena, f->n_entries + 1, 1);
+    if (is_base == NULL)
+        return pc_fail(f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+    projcurve_status st = PROJCURVE_OK;
+    for (size_t i = 0; st == PROJCURVE_OK && i < f->n_entries; ++i) {
+        const int type = f->entries[i].type;
+        if (type != 144 && type != 143)
+            continue;
+        pc_iges_params params;
+        long base = 0;
+        if (pc_iges_params_of(f, 2 * i + 1, &params) == PROJCURVE_OK &&
+            pc_iges_int(&params, type == 144 ? 1 : 2, &base) == PROJCURVE_OK && base > 0 &&
+            base % 2 == 1 && (size_t)(base - 1) / 2 < f->n_entries)
+            is_base[(base - 1) / 2] = 1;
+        st = type == 144 ? read_144(&t, 2 * i + 1) : read_143(&t, 2 * i + 1);
+    }
+    if (st == PROJCURVE_OK)
+        st = natural_faces(&t, is_base);
+    if (st == PROJCURVE_OK)
+        st = face_set(&t);
+    return st;
+}

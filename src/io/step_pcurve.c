@@ -1,0 +1,349 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * STEP loop pieces from PCURVEs: 2D B-splines and LINEs, cut to their
+ * edge at the parameters of its vertices on the 3D curve they share, and
+ * checked against that curve (reported on the model when they leave it by
+ * more than PC_STEP_PCURVE_CHECK_FACTOR precisions).
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "common/error.h"
+#include "io/step_topology.h"
+
+/* The precision of a face on surface s: the file's, else a fraction of
+ * the surface's size. */
+double pc_step_precision(const stopo *t, const projcurve_surface *s)
+{
+    if (t->precision > 0.0 || s == NULL)
+        return t->precision;
+    double box[6];
+    projcurve_surface_bounds(NULL, s, box);
+    return PC_STEP_DEFAULT_PRECISION_REL * pc_step_dist3(box, box + 3);
+}
+
+/* Evaluates a piece (as given, along its parameter) at fraction a of its
+ * domain; 0 when it is not a valid curve. */
+int pc_step_piece_at(const pc_piece_input *p, double a, double uv[2])
+{
+    pc_curve2 c;
+    if (pc_curve2_init(NULL, &c, p->degree, p->n_ctrl, p->ctrl, p->weights, p->knots, "") != PROJCURVE_OK)
+        return 0;
+    double t0, t1;
+    pc_curve2_domain(&c, &t0, &t1);
+    pc_curve2_eval(&c, t0 + a * (t1 - t0), uv);
+    pc_curve2_free(&c);
+    return 1;
+}
+
+int pc_step_surface_point(const projcurve_surface *s, const double uv[2], double p[3])
+{
+    double d[4];
+    projcurve_surface_domain(NULL, s, d);
+    return projcurve_surface_eval(NULL, s, fmin(fmax(uv[0], d[0]), d[1]),
+                                  fmin(fmax(uv[1], d[2]), d[3]), 0, p) == PROJCURVE_OK;
+}
+
+/* A 2D LINE pcurve between the (u, v) of the edge's vertices. */
+projcurve_status pc_step_line_piece(const stopo *t, const inst_node *curve,
+                                   const projcurve_surface *s, const double va[3],
+                                   const double vb[3], pc_piece_input *out)
+{
+    double o[3], d[3], uv[2][2];
+    projcurve_status st = pc_step_line(t->f, t->arena, curve->inst, o, d);
+    if (st != PROJCURVE_OK)
+        return st;
+    const double dd = d[0] * d[0] + d[1] * d[1];
+    if (!(dd > 0.0))
+        return pc_step_give_up(t, "#%ld: a LINE of no length%s", curve->inst->id, "");
+    double par[2];
+    for (int k = 0; k < 2; ++k) {
+        if (projcurve_surface_closest_point(NULL, s, k ? vb : va, uv[k], NULL, NULL) != PROJCURVE_OK)
+            return pc_step_give_up(t, "#%ld: a vertex cannot be placed on the surface%s", curve->inst->id, "");
+        par[k] = ((uv[k][0] - o[0]) * d[0] + (uv[k][1] - o[1]) * d[1]) / dd;
+    }
+    const double lo = fmin(par[0], par[1]), hi = fmax(par[0], par[1]);
+    if (!(hi > lo))
+        return pc_step_give_up(t, "#%ld: its edge has no length on the LINE%s", curve->inst->id, "");
+    double *ctrl = pc_arena_calloc(t->arena, 4, sizeof *ctrl);
+    double *knots = pc_arena_calloc(t->arena, 4, sizeof *knots);
+    if (ctrl == NULL || knots == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    ctrl[0] = o[0] + lo * d[0], ctrl[1] = o[1] + lo * d[1];
+    ctrl[2] = o[0] + hi * d[0], ctrl[3] = o[1] + hi * d[1];
+    knots[0] = knots[1] = lo;
+    knots[2] = knots[3] = hi;
+    *out = (pc_piece_input){.degree = 1, .n_ctrl = 2, .ctrl = ctrl, .knots = knots};
+    return PROJCURVE_OK;
+}
+
+/* A 2D B-spline pcurve over its whole domain. */
+projcurve_status pc_step_bspline_piece(const stopo *t, const inst_node *curve, pc_piece_input *out)
+{
+    pc_io_curve c;
+    const char *skip = NULL;
+    int planar = 0;
+    projcurve_status st = pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar);
+    if (st != PROJCURVE_OK)
+        return st;
+    if (skip != NULL || !planar)
+        return pc_step_give_up(t, "pcurve #%ld: %s", curve->inst->id, skip ? skip : "not a 2D curve");
+    double *uv = pc_arena_calloc(t->arena, 2 * c.n_ctrl, sizeof *uv);
+    if (uv == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    for (size_t i = 0; i < c.n_ctrl; ++i)
+        uv[2 * i] = c.ctrl[3 * i], uv[2 * i + 1] = c.ctrl[3 * i + 1];
+    *out = (pc_piece_input){.degree = c.degree, .n_ctrl = c.n_ctrl, .ctrl = uv,
+                            .weights = c.weights, .knots = c.knots};
+    return PROJCURVE_OK;
+}
+
+/* The PCURVEs of a SURFACE_CURVE / SEAM_CURVE on the surface #surface_id:
+ * their 2D curves, at most two. */
+projcurve_status pc_step_pcurves_on(const stopo *t, const inst_node *geom, long surface_id,
+                                   inst_node found[2], size_t *n)
+{
+    *n = 0;
+    const pc_step_node *list = pc_step_child(geom->node, 2);
+    if (list == NULL || list->kind != PC_STEP_LIST)
+        return PROJCURVE_OK;
+    for (const pc_step_node *r = list->first; r != NULL && *n < 2; r = r->next) {
+        inst_node pc, rep, curve;
+        projcurve_status st = pc_step_fetch(t, r, geom->inst->id, &pc);
+        if (st != PROJCURVE_OK || pc.inst == NULL)
+            return st;
+        const pc_step_node *surf = pc_step_child(pc.node, 1);
+        if (!pc_step_is(pc.node, "PCURVE") || surf == NULL || surf->kind != PC_STEP_REF ||
+            surf->ref != surface_id)
+            continue;
+        if ((st = pc_step_fetch(t, pc_step_child(pc.node, 2), pc.inst->id, &rep)) != PROJCURVE_OK ||
+            rep.inst == NULL)
+            return st;
+        const pc_step_node *items = pc_step_child(rep.node, 1);
+        if (items == NULL || items->kind != PC_STEP_LIST || items->first == NULL)
+            return pc_step_give_up(t, "#%ld: a representation without items%s", rep.inst->id, "");
+        if ((st = pc_step_fetch(t, items->first, rep.inst->id, &curve)) != PROJCURVE_OK || curve.inst == NULL)
+            return st;
+        found[(*n)++] = curve;
+    }
+    return PROJCURVE_OK;
+}
+
+/* A pcurve whose ends land away from its edge's vertices is reported
+ * (listed on the model); a piece whose 3D image is one point is a pole. */
+projcurve_status pc_step_check_piece(const stopo *t, const projcurve_surface *s, long surface_id,
+                                    long edge_id, pc_piece_input *piece, const double v0[3],
+                                    const double v1[3], unsigned *flags)
+{
+    double uv[3][2], p[3][3];
+    if (!pc_step_piece_at(piece, 0.0, uv[0]) || !pc_step_piece_at(piece, 1.0, uv[1]) || !pc_step_piece_at(piece, 0.5, uv[2]))
+        return pc_step_give_up(t, "#%ld: its pcurve is not a valid curve%s", edge_id, "");
+    for (int k = 0; k < 3; ++k)
+        if (!pc_step_surface_point(s, uv[k], p[k]))
+            return pc_step_give_up(t, "#%ld: its pcurve leaves the surface%s", edge_id, "");
+    const double prec = pc_step_precision(t, s);
+    const double off = fmax(pc_step_dist3(p[0], v0), pc_step_dist3(p[1], v1));
+    if (off > PC_STEP_PCURVE_CHECK_FACTOR * prec) {
+        projcurve_status st = pc_model_add_skipped(
+            t->f->ctx, t->model,
+            "STEP #%ld EDGE_CURVE: its pcurve on surface #%ld ends %.3g from its vertices "
+            "(precision %.3g)", edge_id, surface_id, off, prec);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    if (pc_step_dist3(p[0], p[1]) <= prec && pc_step_dist3(p[0], p[2]) <= prec && hypot(uv[0][0] - uv[1][0], uv[0][1] - uv[1][1]) > 0.0)
+        *flags |= PC_PIECE_DEGENERATE;
+    return PROJCURVE_OK;
+}
+
+/* The distance of p from the 3D curve of an edge (LINE: the unbounded
+ * line; B-spline, CIRCLE, TRIMMED_CURVE: their closest point), or -1
+ * when the curve is of another kind. */
+static double curve_distance(const stopo *t, const inst_node *curve, const double p[3])
+{
+    if (pc_step_is(curve->node, "LINE")) {
+        double o[3], d[3];
+        if (pc_step_line(t->f, t->arena, curve->inst, o, d) != PROJCURVE_OK)
+            return -1.0;
+        const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        const double a = dd > 0.0 ? ((p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1] + (p[2] - o[2]) * d[2]) / dd : 0.0;
+        const double q[3] = {o[0] + a * d[0], o[1] + a * d[1], o[2] + a * d[2]};
+        return pc_step_dist3(p, q);
+    }
+    pc_io_curve c;
+    const char *skip = NULL;
+    int planar = 0;
+    projcurve_curve *h = NULL;
+    if (pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar) != PROJCURVE_OK ||
+        skip != NULL || planar ||
+        projcurve_curve_create_nurbs(NULL, c.degree, c.n_ctrl, c.ctrl, c.weights, c.knots, &h) != PROJCURVE_OK)
+        return -1.0;
+    double tt = 0.0, d = -1.0;
+    if (projcurve_curve_closest_point(NULL, h, p, &tt, NULL, &d) != PROJCURVE_OK)
+        d = -1.0;
+    projcurve_curve_destroy(h);
+    return d;
+}
+
+/* A pcurve whose surface image leaves its edge's 3D curve by more than
+ * PC_STEP_PCURVE_CHECK_FACTOR precisions (at a quarter, half and three
+ * quarters of it) is reported on the model. */
+projcurve_status pc_step_check_against_curve(const stopo *t, const projcurve_surface *s,
+                                            long surface_id, long edge_id,
+                                            const pc_piece_input *piece, const inst_node *curve)
+{
+    double worst = 0.0;
+    for (int k = 1; k <= 3; ++k) {
+        double uv[2], p[3];
+        if (!pc_step_piece_at(piece, 0.25 * k, uv) || !pc_step_surface_point(s, uv, p))
+            return PROJCURVE_OK;
+        const double d = curve_distance(t, curve, p);
+        if (d < 0.0)
+            return PROJCURVE_OK; /* a curve kind not read: nothing to compare with */
+        worst = fmax(worst, d);
+    }
+    const double prec = pc_step_precision(t, s);
+    if (worst <= PC_STEP_PCURVE_CHECK_FACTOR * prec)
+        return PROJCURVE_OK;
+    return pc_model_add_skipped(t->f->ctx, t->model,
+                                "STEP #%ld EDGE_CURVE: its pcurve on surface #%ld is %.3g from "
+                                "its 3D curve (precision %.3g)", edge_id, surface_id, worst, prec);
+}
+
+/* The parameter of a pcurve whose surface point is nearest v: the best
+ * of PC_STEP_RANGE_SAMPLES samples per control point, then golden-section
+ * steps (a fixed number) between its neighbours. */
+#define PC_STEP_RANGE_SAMPLES 16
+#define PC_STEP_RANGE_REFINE 60
+static double nearest_parameter(const projcurve_surface *s, const pc_curve2 *c, const double v[3])
+{
+    double t0, t1, uv[2], p[3];
+    pc_curve2_domain(c, &t0, &t1);
+    const size_t n = PC_STEP_RANGE_SAMPLES * c->n_ctrl;
+    size_t best = 0;
+    double best_d = INFINITY;
+    for (size_t i = 0; i <= n; ++i) {
+        pc_curve2_eval(c, t0 + (t1 - t0) * (double)i / (double)n, uv);
+        if (pc_step_surface_point(s, uv, p) && pc_step_dist3(p, v) < best_d)
+            best_d = pc_step_dist3(p, v), best = i;
+    }
+    double a = t0 + (t1 - t0) * (double)(best > 0 ? best - 1 : 0) / (double)n;
+    double b = t0 + (t1 - t0) * (double)(best < n ? best + 1 : n) / (double)n;
+    const double g = 0.5 * (sqrt(5.0) - 1.0);
+    for (int k = 0; k < PC_STEP_RANGE_REFINE; ++k) {
+        const double x = b - g * (b - a), y = a + g * (b - a);
+        double px[3], py[3];
+        pc_curve2_eval(c, x, uv);
+        const int okx = pc_step_surface_point(s, uv, px);
+        pc_curve2_eval(c, y, uv);
+        const int oky = pc_step_surface_point(s, uv, py);
+        if (okx && oky && pc_step_dist3(px, v) < pc_step_dist3(py, v))
+            b = y;
+        else
+            a = x;
+    }
+    return 0.5 * (a + b);
+}
+
+/* The parameter of v on the edge's 3D curve, which the pcurve shares
+ * (ISO 10303-42 SURFACE_CURVE): a LINE's and a CIRCLE's (its angle, moved
+ * by turns into [t0, t1] of the pcurve) in closed form, a B-spline's by
+ * closest point. 0 when the curve is of another kind. */
+static int curve3_parameter(const stopo *t, const inst_node *curve, const double v[3], double t0,
+                            double t1, double *out)
+{
+    if (pc_step_is(curve->node, "LINE")) {
+        double o[3], d[3];
+        if (pc_step_line(t->f, t->arena, curve->inst, o, d) != PROJCURVE_OK)
+            return 0;
+        const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        *out = ((v[0] - o[0]) * d[0] + (v[1] - o[1]) * d[1] + (v[2] - o[2]) * d[2]) / dd;
+        return dd > 0.0;
+    }
+    if (pc_step_is(curve->node, "CIRCLE")) {
+        double o[3], x[3], y[3];
+        const char *skip = NULL;
+        if (pc_step_circle(t->f, t->arena, curve->inst, o, x, y, &skip) != PROJCURVE_OK || skip)
+            return 0;
+        const double r[3] = {v[0] - o[0], v[1] - o[1], v[2] - o[2]};
+        double a = atan2(r[0] * y[0] + r[1] * y[1] + r[2] * y[2], r[0] * x[0] + r[1] * x[1] + r[2] * x[2]);
+        const double turn = 2.0 * M_PI, slack = 1e-9 * turn;
+        while (a < t0 - slack)
+            a += turn;
+        while (a > t1 + slack && a - turn >= t0 - slack)
+            a -= turn;
+        *out = a;
+        return 1;
+    }
+    pc_io_curve c;
+    const char *skip = NULL;
+    int planar = 0;
+    projcurve_curve *h = NULL;
+    if (pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar) != PROJCURVE_OK ||
+        skip != NULL || planar ||
+        projcurve_curve_create_nurbs(NULL, c.degree, c.n_ctrl, c.ctrl, c.weights, c.knots, &h) != PROJCURVE_OK)
+        return 0;
+    const int ok = projcurve_curve_closest_point(NULL, h, v, out, NULL, NULL) == PROJCURVE_OK;
+    projcurve_curve_destroy(h);
+    return ok;
+}
+
+/* A pcurve may run past its edge (it shares the 3D curve's parameter, and
+ * the vertices bound the edge): when its ends are not at the vertices it
+ * is cut, exactly (knot insertion), to the parameters nearest them. */
+projcurve_status pc_step_restrict_to_edge(const stopo *t, const projcurve_surface *s,
+                                         pc_piece_input *piece, const double v0[3],
+                                         const double v1[3], const inst_node *curve3)
+{
+    pc_curve2 c;
+    if (pc_curve2_init(NULL, &c, piece->degree, piece->n_ctrl, piece->ctrl, piece->weights,
+                       piece->knots, "") != PROJCURVE_OK)
+        return PROJCURVE_OK; /* pc_step_check_piece names it */
+    double t0, t1, uv[2], p0[3], p1[3];
+    pc_curve2_domain(&c, &t0, &t1);
+    pc_curve2_eval(&c, t0, uv);
+    int ok = pc_step_surface_point(s, uv, p0);
+    pc_curve2_eval(&c, t1, uv);
+    ok = ok && pc_step_surface_point(s, uv, p1);
+    const double prec = PC_STEP_PCURVE_CHECK_FACTOR * pc_step_precision(t, s);
+    if (!ok || (pc_step_dist3(p0, v0) <= prec && pc_step_dist3(p1, v1) <= prec) || pc_step_dist3(v0, v1) <= prec) {
+        pc_curve2_free(&c);
+        return PROJCURVE_OK;
+    }
+    /* the 3D curve's parameter first (well conditioned where the surface
+     * is not: near a pole every u is nearly the same point) */
+    double a = 0.0, b = 0.0;
+    const double slack = 1e-9 * (t1 - t0);
+    if (curve3->inst == NULL || !curve3_parameter(t, curve3, v0, t0, t1, &a) ||
+        !curve3_parameter(t, curve3, v1, t0, t1, &b) || a < t0 - slack || b > t1 + slack) {
+        a = nearest_parameter(s, &c, v0);
+        b = nearest_parameter(s, &c, v1);
+    }
+    a = fmax(a, t0);
+    b = fmin(b, t1);
+    pc_curve2_free(&c);
+    if (!(b > a))
+        return PROJCURVE_OK; /* left whole: pc_step_check_piece reports the mismatch */
+    pc_io_curve whole = {.degree = piece->degree, .n_ctrl = piece->n_ctrl,
+                         .weights = (double *)piece->weights, .knots = (double *)piece->knots};
+    whole.ctrl = pc_arena_calloc(t->arena, 3 * piece->n_ctrl, sizeof *whole.ctrl);
+    if (whole.ctrl == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    for (size_t i = 0; i < piece->n_ctrl; ++i)
+        whole.ctrl[3 * i] = piece->ctrl[2 * i], whole.ctrl[3 * i + 1] = piece->ctrl[2 * i + 1];
+    pc_io_curve part;
+    projcurve_status st = pc_io_curve_restrict(t->f->ctx, t->arena, &whole, a, b, &part);
+    if (st != PROJCURVE_OK)
+        return st;
+    double *ctrl = pc_arena_calloc(t->arena, 2 * part.n_ctrl, sizeof *ctrl);
+    if (ctrl == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    for (size_t i = 0; i < part.n_ctrl; ++i)
+        ctrl[2 * i] = part.ctrl[3 * i], ctrl[2 * i + 1] = part.ctrl[3 * i + 1];
+    piece->n_ctrl = part.n_ctrl;
+    piece->ctrl = ctrl;
+    piece->weights = part.weights;
+    piece->knots = part.knots;
+    return PROJCURVE_OK;
+}

@@ -1,0 +1,243 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * STEP faces from small files written here, on the plane z = 0 as a
+ * bilinear B-spline S(u, v) = (u, v, 0), so that (u, v) and 3D agree and
+ * every expected answer is exact: a square face with a square hole whose
+ * edges have no pcurve (projected), edges shared by two faces, and bad
+ * input (an open loop, a hole outside its outer loop, a reference to a
+ * missing instance, a loop that holds itself, a loop whose text does not
+ * parse, a surface kind not built),
+ * each listed with a message naming the face while the other faces load.
+ */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "projcurve.h"
+
+static projcurve_context *ctx;
+
+/* Text of instances, appended to. */
+typedef struct text {
+    char buf[65536];
+    size_t len;
+    int next; /* next free instance number */
+} text;
+
+static int add(text *t, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+static int add(text *t, const char *fmt, ...)
+{
+    const int id = t->next++;
+    t->len += (size_t)snprintf(t->buf + t->len, sizeof t->buf - t->len, "#%d=", id);
+    va_list a;
+    va_start(a, fmt);
+    t->len += (size_t)vsnprintf(t->buf + t->len, sizeof t->buf - t->len, fmt, a);
+    va_end(a);
+    t->len += (size_t)snprintf(t->buf + t->len, sizeof t->buf - t->len, ";\n");
+    return id;
+}
+
+static int unit_square_surface(text *t)
+{
+    const int p00 = add(t, "CARTESIAN_POINT('',(0.,0.,0.))"), p01 = add(t, "CARTESIAN_POINT('',(0.,1.,0.))");
+    const int p10 = add(t, "CARTESIAN_POINT('',(1.,0.,0.))"), p11 = add(t, "CARTESIAN_POINT('',(1.,1.,0.))");
+    return add(t, "B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#%d,#%d),(#%d,#%d)),.UNSPECIFIED.,.F.,.F.,.F.,"
+                  "(2,2),(2,2),(0.,1.),(0.,1.),.UNSPECIFIED.)", p00, p01, p10, p11);
+}
+
+/* An edge from a to b on z = 0: a LINE, with a 2D LINE pcurve on surface
+ * `on` when on > 0. Returns the EDGE_CURVE. */
+static int edge(text *t, const double a[2], const double b[2], int on)
+{
+    const int pa = add(t, "CARTESIAN_POINT('',(%.17g,%.17g,0.))", a[0], a[1]);
+    const int pb = add(t, "CARTESIAN_POINT('',(%.17g,%.17g,0.))", b[0], b[1]);
+    const int va = add(t, "VERTEX_POINT('',#%d)", pa), vb = add(t, "VERTEX_POINT('',#%d)", pb);
+    const double dx = b[0] - a[0], dy = b[1] - a[1], len = hypot(dx, dy);
+    const int dir = add(t, "DIRECTION('',(%.17g,%.17g,0.))", dx / len, dy / len);
+    const int vec = add(t, "VECTOR('',#%d,%.17g)", dir, len);
+    const int line = add(t, "LINE('',#%d,#%d)", pa, vec);
+    if (on <= 0)
+        return add(t, "EDGE_CURVE('',#%d,#%d,#%d,.T.)", va, vb, line);
+    const int p2 = add(t, "CARTESIAN_POINT('',(%.17g,%.17g))", a[0], a[1]);
+    const int d2 = add(t, "DIRECTION('',(%.17g,%.17g))", dx / len, dy / len);
+    const int v2 = add(t, "VECTOR('',#%d,%.17g)", d2, len);
+    const int l2 = add(t, "LINE('',#%d,#%d)", p2, v2);
+    const int rep = add(t, "DEFINITIONAL_REPRESENTATION('',(#%d),#%d)", l2, line);
+    const int pc = add(t, "PCURVE('',#%d,#%d)", on, rep);
+    const int sc = add(t, "SURFACE_CURVE('',#%d,(#%d),.PCURVE_S1.)", line, pc);
+    return add(t, "EDGE_CURVE('',#%d,#%d,#%d,.T.)", va, vb, sc);
+}
+
+/* An EDGE_LOOP of the square [x0, x1] x [y0, y1] counter-clockwise; the
+ * edges' ids in e[4] (given ones, > 0, are reused reversed). */
+static int square_loop(text *t, double x0, double y0, double x1, double y1, int on, int e[4],
+                       int skip_one)
+{
+    const double c[5][2] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}};
+    int oe[4];
+    for (int k = 0; k < 4; ++k) {
+        if (e[k] == 0)
+            e[k] = edge(t, c[k], c[k + 1], on);
+        oe[k] = add(t, "ORIENTED_EDGE('',*,*,#%d,.T.)", e[k]);
+    }
+    if (skip_one)
+        return add(t, "EDGE_LOOP('',(#%d,#%d,#%d))", oe[0], oe[1], oe[2]);
+    return add(t, "EDGE_LOOP('',(#%d,#%d,#%d,#%d))", oe[0], oe[1], oe[2], oe[3]);
+}
+
+static projcurve_model *read_step(const text *t)
+{
+    static char doc[70000];
+    snprintf(doc, sizeof doc,
+             "ISO-10303-21;\nHEADER;\nFILE_NAME('x','',(''),(''),'','','');\nENDSEC;\nDATA;\n%s"
+             "ENDSEC;\nEND-ISO-10303-21;\n", t->buf);
+    projcurve_model *m = NULL;
+    if (projcurve_model_read_memory(ctx, doc, strlen(doc), &m) != PROJCURVE_OK)
+        pc_test_fail_at(__FILE__, __LINE__, "read failed: %s", projcurve_context_message(ctx));
+    return m;
+}
+
+static void expect_where(const projcurve_face *f, double u, double v, projcurve_where want)
+{
+    projcurve_where w = PROJCURVE_ON;
+    CHECK_OK(projcurve_face_classify(ctx, f, u, v, &w));
+    if (w != want)
+        pc_test_fail_at(__FILE__, __LINE__, "(%g, %g) is %d, expected %d", u, v, (int)w, (int)want);
+    ++pc_test_checks;
+}
+
+/* Two faces on one surface sharing the edge x = 0.5: [0, 0.5] x [0, 1]
+ * with a projected hole [0.1, 0.3] x [0.4, 0.6], and [0.5, 1] x [0, 1]. */
+static void hole_and_shared_edge(void)
+{
+    text t = {.next = 1};
+    const int s = unit_square_surface(&t);
+    int left[4] = {0}, right[4] = {0}, hole[4] = {0};
+    const int outer = square_loop(&t, 0, 0, 0.5, 1, s, left, 0);
+    const int inner = square_loop(&t, 0.1, 0.4, 0.3, 0.6, 0, hole, 0);
+    right[3] = left[1]; /* x = 0.5, the other way round */
+    const double r[5][2] = {{0.5, 0}, {1, 0}, {1, 1}, {0.5, 1}, {0.5, 0}};
+    int oe[4];
+    for (int k = 0; k < 3; ++k) {
+        right[k] = edge(&t, r[k], r[k + 1], s);
+        oe[k] = add(&t, "ORIENTED_EDGE('',*,*,#%d,.T.)", right[k]);
+    }
+    oe[3] = add(&t, "ORIENTED_EDGE('',*,*,#%d,.F.)", right[3]);
+    const int loop_r = add(&t, "EDGE_LOOP('',(#%d,#%d,#%d,#%d))", oe[0], oe[1], oe[2], oe[3]);
+    const int b1 = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", outer);
+    const int b2 = add(&t, "FACE_BOUND('',#%d,.F.)", inner);
+    const int b3 = add(&t, "FACE_BOUND('',#%d,.T.)", loop_r);
+    const int f1 = add(&t, "ADVANCED_FACE('',(#%d,#%d),#%d,.T.)", b1, b2, s);
+    const int f2 = add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", b3, s);
+    const int shell = add(&t, "CLOSED_SHELL('',(#%d,#%d))", f1, f2);
+    add(&t, "MANIFOLD_SOLID_BREP('',#%d)", shell);
+    projcurve_model *m = read_step(&t);
+    if (m == NULL)
+        return;
+    CHECK(projcurve_model_face_count(m) == 2 && projcurve_model_unbuilt_face_count(m) == 0);
+    CHECK(projcurve_model_shape_count(m) == 1);
+    const projcurve_face *a = projcurve_model_face(m, 0), *b = projcurve_model_face(m, 1);
+    if (a == NULL || b == NULL) {
+        projcurve_model_destroy(m);
+        return;
+    }
+    CHECK(projcurve_face_loop_count(a) == 2 && projcurve_face_loop_count(b) == 1);
+    expect_where(a, 0.05, 0.5, PROJCURVE_IN);
+    expect_where(a, 0.2, 0.5, PROJCURVE_OUT); /* in the hole */
+    expect_where(a, 0.3, 0.5, PROJCURVE_ON);  /* the hole's projected side */
+    expect_where(a, 0.75, 0.5, PROJCURVE_OUT);
+    expect_where(a, 0.5, 0.5, PROJCURVE_ON);
+    expect_where(b, 0.75, 0.5, PROJCURVE_IN);
+    expect_where(b, 0.5, 0.5, PROJCURVE_ON);
+    expect_where(b, 0.25, 0.5, PROJCURVE_OUT);
+    /* the shared edge: two uses, in opposite senses; the others one */
+    const projcurve_shape *sh = projcurve_model_shape(m, 0);
+    projcurve_shape_kind kind = PROJCURVE_SHAPE_FACE_SET;
+    CHECK_OK(projcurve_shape_info(ctx, sh, &kind, NULL));
+    CHECK(kind == PROJCURVE_SHAPE_SOLID);
+    CHECK(projcurve_shape_edge_count(sh) == 11);
+    for (size_t e = 0; e < projcurve_shape_edge_count(sh); ++e) {
+        long id = 0;
+        size_t uses = 0;
+        CHECK_OK(projcurve_shape_edge(ctx, sh, e, &id, &uses));
+        CHECK(uses == (id == left[1] ? 2u : 1u));
+        if (id == left[1]) {
+            int s0 = 0, s1 = 0;
+            size_t f0 = 9, f1i = 9;
+            CHECK_OK(projcurve_shape_edge_use(ctx, sh, e, 0, &f0, NULL, NULL, &s0));
+            CHECK_OK(projcurve_shape_edge_use(ctx, sh, e, 1, &f1i, NULL, NULL, &s1));
+            CHECK(f0 != f1i && s0 == -s1);
+        }
+    }
+    CHECK_STATUS(projcurve_shape_edge(ctx, sh, 99, NULL, NULL), PROJCURVE_ERR_INDEX);
+    projcurve_model_destroy(m);
+}
+
+/* A good face plus one bad face; the bad one is listed with `words`. */
+static void bad_face(const char *what, const char *words, int kind)
+{
+    text t = {.next = 1};
+    const int s = unit_square_surface(&t);
+    int good[4] = {0}, e[4] = {0};
+    const int loop = square_loop(&t, 0, 0, 1, 1, s, good, 0);
+    add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", loop), s);
+    int bounds = 0;
+    int surface = s;
+    if (kind == 0) { /* open loop: its last edge missing */
+        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", square_loop(&t, 0, 0, 1, 1, s, e, 1));
+    } else if (kind == 1) { /* a hole outside its outer loop */
+        int h[4] = {0};
+        const int o = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", square_loop(&t, 0, 0, 0.5, 0.5, 0, e, 0));
+        const int i = add(&t, "FACE_BOUND('',#%d,.T.)", square_loop(&t, 0.7, 0.7, 0.9, 0.9, 0, h, 0));
+        add(&t, "ADVANCED_FACE('',(#%d,#%d),#%d,.T.)", o, i, s); /* two bounds: made here */
+    } else if (kind == 2) { /* a reference to nothing */
+        const int l = add(&t, "EDGE_LOOP('',(#%d,#9999))", add(&t, "ORIENTED_EDGE('',*,*,#%d,.T.)", good[0]));
+        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
+    } else if (kind == 3) { /* a loop that holds itself */
+        const int l = t.next;
+        add(&t, "EDGE_LOOP('',(#%d))", l);
+        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
+    } else if (kind == 5) { /* a loop whose text does not parse */
+        const int l = add(&t, "EDGE_LOOP('',(#%d #%d))", good[0], good[1]);
+        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
+    } else { /* a plane */
+        const int o = add(&t, "CARTESIAN_POINT('',(0.,0.,0.))");
+        const int z = add(&t, "DIRECTION('',(0.,0.,1.))"), x = add(&t, "DIRECTION('',(1.,0.,0.))");
+        surface = add(&t, "PLANE('',#%d)", add(&t, "AXIS2_PLACEMENT_3D('',#%d,#%d,#%d)", o, z, x));
+        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", loop);
+    }
+    if (bounds)
+        add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", bounds, surface);
+    projcurve_model *m = read_step(&t);
+    if (m == NULL)
+        return;
+    CHECK(projcurve_model_face_count(m) == 1);
+    CHECK(projcurve_model_unbuilt_face_count(m) == 1);
+    const char *why = projcurve_model_unbuilt_face(m, 0);
+    if (why == NULL || strstr(why, words) == NULL || strstr(why, "ADVANCED_FACE") == NULL)
+        pc_test_fail_at(__FILE__, __LINE__, "%s: listed as \"%s\", expected the face and \"%s\"",
+                        what, why ? why : "(nothing)", words);
+    ++pc_test_checks;
+    projcurve_model_destroy(m);
+}
+
+int main(void)
+{
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    hole_and_shared_edge();
+    bad_face("open loop", "loop 0 is open", 0);
+    bad_face("hole outside", "loop 1 (a hole) is outside the outer loop", 1);
+    bad_face("missing reference", "refers to #9999, which is not defined", 2);
+    bad_face("loop in itself", "a loop member is not an ORIENTED_EDGE", 3);
+    bad_face("plane", "surface kind plane not built", 6);
+    bad_face("malformed loop", "expected ',' or ')' in a list", 5);
+    projcurve_context_destroy(ctx);
+    return pc_test_finish("test_io_topology_step");
+}
