@@ -100,23 +100,6 @@ projcurve_status pc_step_read_geometry(pc_step_file *f, projcurve_model *model);
  * model as an exact NURBS, an unbounded one over the box of the faces that
  * use it (step_analytic.c). */
 projcurve_status pc_step_read_analytic(pc_step_file *f, projcurve_model *model);
-/* The geometry of a curve instance (step_read.c): B-splines (2D ones too,
- * *planar set, z = 0), CIRCLE, TRIMMED_CURVE; *skip says why another is
- * not read. */
-projcurve_status pc_step_curve_geometry(pc_step_file *f, pc_arena *arena,
-                                       const pc_step_instance *inst, pc_io_curve *out,
-                                       const char **skip, int *planar);
-/* LINE: origin and direction times magnitude (2D lines have z = 0). */
-projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
-                              double origin[3], double dir[3]);
-/* CIRCLE: centre and the frame x, y of its angle (*skip set when the
- * placement is not read). */
-projcurve_status pc_step_circle(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
-                                double centre[3], double x[3], double y[3], const char **skip);
-/* The CARTESIAN_POINT that ref points at (z = 0 for 2D points). */
-projcurve_status pc_step_point(pc_step_file *f, pc_arena *arena, const pc_step_instance *from,
-                               const pc_step_node *ref, double p[3]);
-
 /* Faces and shapes of the file (step_topology.c), after the geometry. */
 projcurve_status pc_step_read_topology(pc_step_file *f, projcurve_model *model);
 

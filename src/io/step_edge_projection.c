@@ -18,27 +18,25 @@
 
 /* The 3D curve of an edge without pcurve, from v0 to v1 along its
  * parameter, as a curve handle over [*t0, *t1]. */
-static projcurve_status edge_curve3(const stopo *t, const inst_node *curve, const double v0[3],
+static projcurve_status edge_curve3(const stopo *t, const pc_step_located *curve, const double v0[3],
                                     const double v1[3], projcurve_curve **out, double *t0,
                                     double *t1, int *closed)
 {
     pc_io_curve c;
     double ends[6];
     const char *skip = NULL;
-    int planar = 0;
     projcurve_status st;
     if (pc_step_is(curve->node, "LINE")) {
         memcpy(ends, v0, 3 * sizeof *ends);
         memcpy(ends + 3, v1, 3 * sizeof *ends);
         st = pc_io_line_curve(t->f->ctx, t->arena, ends, ends + 3, &c);
     } else {
-        st = pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar);
+        st = pc_step_curve(t->f, t->arena, curve, &c, NULL, &skip);
     }
     if (st != PROJCURVE_OK)
         return st;
-    if (skip != NULL || planar)
-        return pc_step_give_up(t, "edge curve #%ld: %s, and no pcurve", curve->inst->id,
-                       skip ? skip : "a 2D curve");
+    if (skip != NULL)
+        return pc_step_give_up(t, "edge curve #%ld: %s, and no pcurve", curve->inst->id, skip);
     if (projcurve_curve_create_nurbs(NULL, c.degree, c.n_ctrl, c.ctrl, c.weights, c.knots, out) != PROJCURVE_OK)
         return pc_step_give_up(t, "edge curve #%ld: %s", curve->inst->id, "not a valid curve");
     projcurve_curve_domain(NULL, *out, t0, t1);
@@ -94,7 +92,7 @@ static double project_samples(const projcurve_surface *s, const projcurve_curve 
  * PC_STEP_PROJECT_MAX_SAMPLES, or the error no longer halves (the edge
  * lies off the surface); the error reached is then reported. A degree-1
  * piece over the edge's parameters. */
-projcurve_status pc_step_edge_projection(const stopo *t, const inst_node *curve,
+projcurve_status pc_step_edge_projection(const stopo *t, const pc_step_located *curve,
                                         const projcurve_surface *s, const double v0[3],
                                         const double v1[3], pc_piece_input *out)
 {

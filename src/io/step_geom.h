@@ -39,6 +39,10 @@ projcurve_status pc_step_placement(pc_step_file *f, pc_arena *arena,
                                    const pc_step_instance *from, const pc_step_node *ref,
                                    double o[3], double x[3], double y[3], const char **skip);
 
+/* The *skip of pc_step_curve for a B-spline curve of 2D points (a curve
+ * in a parameter space, z = 0): a caller reading pcurves takes it. */
+extern const char *const pc_step_planar_curve;
+
 /* A bounded 3D curve entity as an exact NURBS: a B-spline curve (its own
  * parameter), a CIRCLE or an ELLIPSE (a full turn, *map from the angle to
  * the NURBS parameter) or a TRIMMED_CURVE of a LINE, CIRCLE, ELLIPSE or

@@ -46,12 +46,12 @@ int pc_step_surface_point(const projcurve_surface *s, const double uv[2], double
 }
 
 /* A 2D LINE pcurve between the (u, v) of the edge's vertices. */
-projcurve_status pc_step_line_piece(const stopo *t, const inst_node *curve,
+projcurve_status pc_step_line_piece(const stopo *t, const pc_step_located *curve,
                                    const projcurve_surface *s, const double va[3],
                                    const double vb[3], pc_piece_input *out)
 {
     double o[3], d[3], uv[2][2];
-    projcurve_status st = pc_step_line(t->f, t->arena, curve->inst, o, d);
+    projcurve_status st = pc_step_line(t->f, t->arena, curve, o, d);
     if (st != PROJCURVE_OK)
         return st;
     const double dd = d[0] * d[0] + d[1] * d[1];
@@ -79,15 +79,14 @@ projcurve_status pc_step_line_piece(const stopo *t, const inst_node *curve,
 }
 
 /* A 2D B-spline pcurve over its whole domain. */
-projcurve_status pc_step_bspline_piece(const stopo *t, const inst_node *curve, pc_piece_input *out)
+projcurve_status pc_step_bspline_piece(const stopo *t, const pc_step_located *curve, pc_piece_input *out)
 {
     pc_io_curve c;
     const char *skip = NULL;
-    int planar = 0;
-    projcurve_status st = pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar);
+    projcurve_status st = pc_step_curve(t->f, t->arena, curve, &c, NULL, &skip);
     if (st != PROJCURVE_OK)
         return st;
-    if (skip != NULL || !planar)
+    if (skip != pc_step_planar_curve)
         return pc_step_give_up(t, "pcurve #%ld: %s", curve->inst->id, skip ? skip : "not a 2D curve");
     double *uv = pc_arena_calloc(t->arena, 2 * c.n_ctrl, sizeof *uv);
     if (uv == NULL)
@@ -101,15 +100,15 @@ projcurve_status pc_step_bspline_piece(const stopo *t, const inst_node *curve, p
 
 /* The PCURVEs of a SURFACE_CURVE / SEAM_CURVE on the surface #surface_id:
  * their 2D curves, at most two. */
-projcurve_status pc_step_pcurves_on(const stopo *t, const inst_node *geom, long surface_id,
-                                   inst_node found[2], size_t *n)
+projcurve_status pc_step_pcurves_on(const stopo *t, const pc_step_located *geom, long surface_id,
+                                   pc_step_located found[2], size_t *n)
 {
     *n = 0;
     const pc_step_node *list = pc_step_child(geom->node, 2);
     if (list == NULL || list->kind != PC_STEP_LIST)
         return PROJCURVE_OK;
     for (const pc_step_node *r = list->first; r != NULL && *n < 2; r = r->next) {
-        inst_node pc, rep, curve;
+        pc_step_located pc, rep, curve;
         projcurve_status st = pc_step_fetch(t, r, geom->inst->id, &pc);
         if (st != PROJCURVE_OK || pc.inst == NULL)
             return st;
@@ -160,11 +159,11 @@ projcurve_status pc_step_check_piece(const stopo *t, const projcurve_surface *s,
 /* The distance of p from the 3D curve of an edge (LINE: the unbounded
  * line; B-spline, CIRCLE, TRIMMED_CURVE: their closest point), or -1
  * when the curve is of another kind. */
-static double curve_distance(const stopo *t, const inst_node *curve, const double p[3])
+static double curve_distance(const stopo *t, const pc_step_located *curve, const double p[3])
 {
     if (pc_step_is(curve->node, "LINE")) {
         double o[3], d[3];
-        if (pc_step_line(t->f, t->arena, curve->inst, o, d) != PROJCURVE_OK)
+        if (pc_step_line(t->f, t->arena, curve, o, d) != PROJCURVE_OK)
             return -1.0;
         const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         const double a = dd > 0.0 ? ((p[0] - o[0]) * d[0] + (p[1] - o[1]) * d[1] + (p[2] - o[2]) * d[2]) / dd : 0.0;
@@ -173,10 +172,8 @@ static double curve_distance(const stopo *t, const inst_node *curve, const doubl
     }
     pc_io_curve c;
     const char *skip = NULL;
-    int planar = 0;
     projcurve_curve *h = NULL;
-    if (pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar) != PROJCURVE_OK ||
-        skip != NULL || planar ||
+    if (pc_step_curve(t->f, t->arena, curve, &c, NULL, &skip) != PROJCURVE_OK || skip != NULL ||
         projcurve_curve_create_nurbs(NULL, c.degree, c.n_ctrl, c.ctrl, c.weights, c.knots, &h) != PROJCURVE_OK)
         return -1.0;
     double tt = 0.0, d = -1.0;
@@ -191,7 +188,7 @@ static double curve_distance(const stopo *t, const inst_node *curve, const doubl
  * quarters of it) is reported on the model. */
 projcurve_status pc_step_check_against_curve(const stopo *t, const projcurve_surface *s,
                                             long surface_id, long edge_id,
-                                            const pc_piece_input *piece, const inst_node *curve)
+                                            const pc_piece_input *piece, const pc_step_located *curve)
 {
     double worst = 0.0;
     for (int k = 1; k <= 3; ++k) {
@@ -250,21 +247,21 @@ static double nearest_parameter(const projcurve_surface *s, const pc_curve2 *c, 
  * (ISO 10303-42 SURFACE_CURVE): a LINE's and a CIRCLE's (its angle, moved
  * by turns into [t0, t1] of the pcurve) in closed form, a B-spline's by
  * closest point. 0 when the curve is of another kind. */
-static int curve3_parameter(const stopo *t, const inst_node *curve, const double v[3], double t0,
+static int curve3_parameter(const stopo *t, const pc_step_located *curve, const double v[3], double t0,
                             double t1, double *out)
 {
     if (pc_step_is(curve->node, "LINE")) {
         double o[3], d[3];
-        if (pc_step_line(t->f, t->arena, curve->inst, o, d) != PROJCURVE_OK)
+        if (pc_step_line(t->f, t->arena, curve, o, d) != PROJCURVE_OK)
             return 0;
         const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         *out = ((v[0] - o[0]) * d[0] + (v[1] - o[1]) * d[1] + (v[2] - o[2]) * d[2]) / dd;
         return dd > 0.0;
     }
     if (pc_step_is(curve->node, "CIRCLE")) {
-        double o[3], x[3], y[3];
+        double o[3], x[3], y[3], ra = 0.0, rb = 0.0;
         const char *skip = NULL;
-        if (pc_step_circle(t->f, t->arena, curve->inst, o, x, y, &skip) != PROJCURVE_OK || skip)
+        if (pc_step_conic(t->f, t->arena, curve, o, x, y, &ra, &rb, &skip) != PROJCURVE_OK || skip)
             return 0;
         const double r[3] = {v[0] - o[0], v[1] - o[1], v[2] - o[2]};
         double a = atan2(r[0] * y[0] + r[1] * y[1] + r[2] * y[2], r[0] * x[0] + r[1] * x[1] + r[2] * x[2]);
@@ -278,10 +275,8 @@ static int curve3_parameter(const stopo *t, const inst_node *curve, const double
     }
     pc_io_curve c;
     const char *skip = NULL;
-    int planar = 0;
     projcurve_curve *h = NULL;
-    if (pc_step_curve_geometry(t->f, t->arena, curve->inst, &c, &skip, &planar) != PROJCURVE_OK ||
-        skip != NULL || planar ||
+    if (pc_step_curve(t->f, t->arena, curve, &c, NULL, &skip) != PROJCURVE_OK || skip != NULL ||
         projcurve_curve_create_nurbs(NULL, c.degree, c.n_ctrl, c.ctrl, c.weights, c.knots, &h) != PROJCURVE_OK)
         return 0;
     const int ok = projcurve_curve_closest_point(NULL, h, v, out, NULL, NULL) == PROJCURVE_OK;
@@ -294,7 +289,7 @@ static int curve3_parameter(const stopo *t, const inst_node *curve, const double
  * is cut, exactly (knot insertion), to the parameters nearest them. */
 projcurve_status pc_step_restrict_to_edge(const stopo *t, const projcurve_surface *s,
                                          pc_piece_input *piece, const double v0[3],
-                                         const double v1[3], const inst_node *curve3)
+                                         const double v1[3], const pc_step_located *curve3)
 {
     pc_curve2 c;
     if (pc_curve2_init(NULL, &c, piece->degree, piece->n_ctrl, piece->ctrl, piece->weights,

@@ -173,6 +173,8 @@ static projcurve_status placement(const reader *r, const pc_step_instance *from,
     return PROJCURVE_OK;
 }
 
+const char *const pc_step_planar_curve = "2D, a curve in a parameter space";
+
 /* ---- B-splines ----------------------------------------------------------- */
 
 typedef struct bspline_nodes {
@@ -372,7 +374,7 @@ static projcurve_status bspline_curve(const reader *r, const pc_step_instance *a
         st = knot_vector(r, at, b, 0, out->degree, n[0], &out->knots);
     out->n_ctrl = n[0];
     if (st == PROJCURVE_OK && planar)
-        *skip = "2D, a curve in a parameter space";
+        *skip = pc_step_planar_curve;
     return st;
 }
 
@@ -743,74 +745,6 @@ projcurve_status pc_step_read_geometry(pc_step_file *f, projcurve_model *model)
     if (st == PROJCURVE_OK)
         st = pc_step_read_analytic(f, model);
     return st;
-}
-
-projcurve_status pc_step_curve_geometry(pc_step_file *f, pc_arena *arena,
-                                       const pc_step_instance *inst, pc_io_curve *out,
-                                       const char **skip, int *planar)
-{
-    reader r = {.f = f, .arena = arena};
-    located loc = {.inst = inst};
-    pc_step_node *node;
-    projcurve_status st = pc_step_parse(f, inst, arena, &node);
-    if (st != PROJCURVE_OK)
-        return st;
-    loc.node = node;
-    *skip = NULL;
-    *planar = 0;
-    bspline_nodes b;
-    if (bspline_parts(node, &b) && b.dim == 1) {
-        st = bspline_curve(&r, inst, &b, out, skip);
-        if (st == PROJCURVE_OK && *skip != NULL && strstr(*skip, "2D") == *skip)
-            *skip = NULL, *planar = 1; /* the caller asked for parameter-space curves too */
-        return st;
-    }
-    if (pc_step_is(node, "CIRCLE"))
-        return full_circle(&r, &loc, out, skip);
-    if (pc_step_is(node, "TRIMMED_CURVE"))
-        return trimmed_curve(&r, &loc, out, skip);
-    *skip = "a curve kind not read";
-    return PROJCURVE_OK;
-}
-
-projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
-                              double origin[3], double dir[3])
-{
-    reader r = {.f = f, .arena = arena};
-    located loc = {.inst = inst};
-    pc_step_node *node;
-    projcurve_status st = pc_step_parse(f, inst, arena, &node);
-    if (st != PROJCURVE_OK)
-        return st;
-    loc.node = node;
-    if (!pc_step_is(node, "LINE"))
-        return bad(&r, inst, "expected a LINE");
-    return line_frame(&r, &loc, origin, dir);
-}
-
-projcurve_status pc_step_circle(pc_step_file *f, pc_arena *arena, const pc_step_instance *inst,
-                                double centre[3], double x[3], double y[3], const char **skip)
-{
-    reader r = {.f = f, .arena = arena};
-    located loc = {.inst = inst};
-    pc_step_node *node;
-    projcurve_status st = pc_step_parse(f, inst, arena, &node);
-    if (st != PROJCURVE_OK)
-        return st;
-    loc.node = node;
-    *skip = NULL;
-    if (!pc_step_is(node, "CIRCLE"))
-        return bad(&r, inst, "expected a CIRCLE");
-    double radius = 0.0;
-    return circle_frame(&r, &loc, centre, x, y, &radius, skip);
-}
-
-projcurve_status pc_step_point(pc_step_file *f, pc_arena *arena, const pc_step_instance *from,
-                               const pc_step_node *ref, double p[3])
-{
-    reader r = {.f = f, .arena = arena};
-    size_t dim = 0;
-    return point(&r, from, ref, p, &dim);
 }
 
 projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t len,

@@ -36,7 +36,7 @@ projcurve_status pc_step_give_up(const stopo *t, const char *fmt, long id, const
     return PROJCURVE_OK;
 }
 
-projcurve_status pc_step_fetch(const stopo *t, const pc_step_node *ref, long from, inst_node *out)
+projcurve_status pc_step_fetch(const stopo *t, const pc_step_node *ref, long from, pc_step_located *out)
 {
     out->inst = NULL;
     out->node = NULL;
@@ -91,7 +91,7 @@ static projcurve_status face_surface(const stopo *t, const pc_step_node *ref, lo
 {
     *out = NULL;
     *kind = "other";
-    inst_node s;
+    pc_step_located s;
     projcurve_status st = pc_step_fetch(t, ref, from, &s);
     if (st != PROJCURVE_OK || s.inst == NULL)
         return st;
@@ -128,10 +128,10 @@ static pc_piece_input *new_piece(const stopo *t, pieces *p)
 }
 
 /* The vertices of an EDGE_CURVE as 3D points. */
-static projcurve_status vertices(const stopo *t, const inst_node *edge, double a[3], double b[3])
+static projcurve_status vertices(const stopo *t, const pc_step_located *edge, double a[3], double b[3])
 {
     for (int k = 0; k < 2; ++k) {
-        inst_node v;
+        pc_step_located v;
         projcurve_status st = pc_step_fetch(t, pc_step_child(edge->node, 1 + (size_t)k), edge->inst->id, &v);
         if (st != PROJCURVE_OK || v.inst == NULL)
             return st;
@@ -153,7 +153,7 @@ static projcurve_status edge_piece(const stopo *t, const pc_step_node *ref, long
                                    int bound_sense, const projcurve_surface *s, long surface_id,
                                    pieces *p)
 {
-    inst_node oe, edge, geom;
+    pc_step_located oe, edge, geom;
     projcurve_status st = pc_step_fetch(t, ref, loop_id, &oe);
     if (st != PROJCURVE_OK || oe.inst == NULL)
         return st;
@@ -175,7 +175,7 @@ static projcurve_status edge_piece(const stopo *t, const pc_step_node *ref, long
         return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
     unsigned flags = 0;
     const int seam = pc_step_is(geom.node, "SEAM_CURVE");
-    inst_node found[2];
+    pc_step_located found[2];
     size_t n_found = 0;
     if (seam || pc_step_is(geom.node, "SURFACE_CURVE"))
         st = pc_step_pcurves_on(t, &geom, surface_id, found, &n_found);
@@ -183,10 +183,10 @@ static projcurve_status edge_piece(const stopo *t, const pc_step_node *ref, long
         return st;
     if (n_found > 0) {
         /* a seam's first pcurve for the edge used forwards, the second backwards */
-        const inst_node *c = &found[(seam && n_found == 2 && oe_sense < 0) ? 1 : 0];
+        const pc_step_located *c = &found[(seam && n_found == 2 && oe_sense < 0) ? 1 : 0];
         st = pc_step_is(c->node, "LINE") ? pc_step_line_piece(t, c, s, same > 0 ? va : vb, same > 0 ? vb : va, piece)
                                          : pc_step_bspline_piece(t, c, piece);
-        inst_node curve3 = {NULL, NULL};
+        pc_step_located curve3 = {NULL, NULL};
         if (st == PROJCURVE_OK && !t->reason[0])
             st = pc_step_fetch(t, pc_step_child(geom.node, 1), geom.inst->id, &curve3);
         if (st == PROJCURVE_OK && !t->reason[0] && !pc_step_is(c->node, "LINE"))
@@ -195,7 +195,7 @@ static projcurve_status edge_piece(const stopo *t, const pc_step_node *ref, long
             st = pc_step_check_against_curve(t, s, surface_id, edge.inst->id, piece, &curve3);
         flags |= seam ? PC_PIECE_SEAM : 0u;
     } else {
-        inst_node curve3 = geom;
+        pc_step_located curve3 = geom;
         if (seam || pc_step_is(geom.node, "SURFACE_CURVE"))
             st = pc_step_fetch(t, pc_step_child(geom.node, 1), geom.inst->id, &curve3);
         if (st == PROJCURVE_OK && curve3.inst != NULL)
@@ -233,7 +233,7 @@ static int push_loop(const stopo *t, pieces *p, size_t first, int outer)
 static projcurve_status read_bound(const stopo *t, const pc_step_node *ref, long face_id,
                                    const projcurve_surface *s, long surface_id, pieces *p)
 {
-    inst_node bound, loop;
+    pc_step_located bound, loop;
     projcurve_status st = pc_step_fetch(t, ref, face_id, &bound);
     if (st != PROJCURVE_OK || bound.inst == NULL)
         return st;
@@ -282,7 +282,7 @@ static void mark_seams(pieces *p)
     }
 }
 
-static projcurve_status read_face(stopo *t, const inst_node *face)
+static projcurve_status read_face(stopo *t, const pc_step_located *face)
 {
     char reason[PC_STEP_REASON] = "";
     t->reason = reason;
@@ -371,7 +371,7 @@ static projcurve_status shell_faces(stopo *t, const pc_step_node *ref, long from
 {
     char reason[PC_STEP_REASON] = "";
     t->reason = reason;
-    inst_node shell;
+    pc_step_located shell;
     projcurve_status st = pc_step_fetch(t, ref, from, &shell);
     if (st != PROJCURVE_OK || shell.inst == NULL)
         return st;
@@ -490,7 +490,7 @@ projcurve_status pc_step_read_topology(pc_step_file *f, projcurve_model *model)
             st = pc_model_add_unbuilt(f->ctx, model, "other", "STEP #%ld (a face): %s",
                                       f->instances[i].id, projcurve_context_message(f->ctx));
         else if (st == PROJCURVE_OK && (pc_step_is(node, "ADVANCED_FACE") || pc_step_is(node, "FACE_SURFACE"))) {
-            const inst_node face = {&f->instances[i], node};
+            const pc_step_located face = {&f->instances[i], node};
             st = read_face(&t, &face);
         }
         pc_arena_release(&arena);

@@ -15,7 +15,7 @@
 #include <math.h>
 
 #include "brep/face.h"
-#include "io/step.h"
+#include "io/step_geom.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -38,11 +38,6 @@ typedef struct stopo {
     char *reason;      /* why the face being read cannot be built */
 } stopo;
 
-typedef struct inst_node {
-    const pc_step_instance *inst;
-    const pc_step_node *node;
-} inst_node;
-
 static inline double pc_step_dist3(const double a[3], const double b[3])
 {
     return hypot(hypot(a[0] - b[0], a[1] - b[1]), a[2] - b[2]);
@@ -53,7 +48,7 @@ static inline double pc_step_dist3(const double a[3], const double b[3])
 projcurve_status pc_step_give_up(const stopo *t, const char *fmt, long id, const char *what);
 /* The instance ref points at, parsed; out->inst is NULL (and the face's
  * reason set) when ref is no reference or names no instance. */
-projcurve_status pc_step_fetch(const stopo *t, const pc_step_node *ref, long from, inst_node *out);
+projcurve_status pc_step_fetch(const stopo *t, const pc_step_node *ref, long from, pc_step_located *out);
 
 /* step_pcurve.c. The precision of a face on s (s may be NULL: the file's
  * only). */
@@ -64,21 +59,21 @@ int pc_step_piece_at(const pc_piece_input *p, double a, double uv[2]);
 /* S(uv), uv clamped to the domain; 0 on failure. */
 int pc_step_surface_point(const projcurve_surface *s, const double uv[2], double p[3]);
 /* A 2D LINE pcurve between the (u, v) of the vertices v0 -> v1. */
-projcurve_status pc_step_line_piece(const stopo *t, const inst_node *curve,
+projcurve_status pc_step_line_piece(const stopo *t, const pc_step_located *curve,
                                     const projcurve_surface *s, const double v0[3],
                                     const double v1[3], pc_piece_input *out);
 /* A 2D B-spline pcurve over its whole domain. */
-projcurve_status pc_step_bspline_piece(const stopo *t, const inst_node *curve,
+projcurve_status pc_step_bspline_piece(const stopo *t, const pc_step_located *curve,
                                        pc_piece_input *out);
 /* The 2D curves of the PCURVEs of a SURFACE_CURVE / SEAM_CURVE on the
  * surface #surface_id, at most two. */
-projcurve_status pc_step_pcurves_on(const stopo *t, const inst_node *geom, long surface_id,
-                                    inst_node found[2], size_t *n);
+projcurve_status pc_step_pcurves_on(const stopo *t, const pc_step_located *geom, long surface_id,
+                                    pc_step_located found[2], size_t *n);
 /* Cuts a B-spline pcurve to its edge v0 -> v1 (curve3: the edge's 3D
  * curve, whose parameter the pcurve shares; its inst may be NULL). */
 projcurve_status pc_step_restrict_to_edge(const stopo *t, const projcurve_surface *s,
                                           pc_piece_input *piece, const double v0[3],
-                                          const double v1[3], const inst_node *curve3);
+                                          const double v1[3], const pc_step_located *curve3);
 /* Reports a pcurve whose ends are off its vertices (and marks a pole). */
 projcurve_status pc_step_check_piece(const stopo *t, const projcurve_surface *s, long surface_id,
                                      long edge_id, pc_piece_input *piece, const double v0[3],
@@ -86,11 +81,11 @@ projcurve_status pc_step_check_piece(const stopo *t, const projcurve_surface *s,
 /* Reports a pcurve whose surface image is off its edge's 3D curve. */
 projcurve_status pc_step_check_against_curve(const stopo *t, const projcurve_surface *s,
                                              long surface_id, long edge_id,
-                                             const pc_piece_input *piece, const inst_node *curve);
+                                             const pc_piece_input *piece, const pc_step_located *curve);
 
 /* step_edge_projection.c. The pcurve of an edge without one: its 3D curve
  * v0 -> v1 projected onto s. */
-projcurve_status pc_step_edge_projection(const stopo *t, const inst_node *curve,
+projcurve_status pc_step_edge_projection(const stopo *t, const pc_step_located *curve,
                                          const projcurve_surface *s, const double v0[3],
                                          const double v1[3], pc_piece_input *out);
 
