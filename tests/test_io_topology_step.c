@@ -207,10 +207,8 @@ static void bad_face(const char *what, const char *words, int kind)
     } else if (kind == 5) { /* a loop whose text does not parse */
         const int l = add(&t, "EDGE_LOOP('',(#%d #%d))", good[0], good[1]);
         bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
-    } else { /* a plane */
-        const int o = add(&t, "CARTESIAN_POINT('',(0.,0.,0.))");
-        const int z = add(&t, "DIRECTION('',(0.,0.,1.))"), x = add(&t, "DIRECTION('',(1.,0.,0.))");
-        surface = add(&t, "PLANE('',#%d)", add(&t, "AXIS2_PLACEMENT_3D('',#%d,#%d,#%d)", o, z, x));
+    } else { /* an offset surface, a kind that is not converted */
+        surface = add(&t, "OFFSET_SURFACE('',#%d,0.5,.F.)", surface);
         bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", loop);
     }
     if (bounds)
@@ -236,7 +234,7 @@ int main(void)
     bad_face("hole outside", "loop 1 (a hole) is outside the outer loop", 1);
     bad_face("missing reference", "refers to #9999, which is not defined", 2);
     bad_face("loop in itself", "a loop member is not an ORIENTED_EDGE", 3);
-    bad_face("plane", "surface kind plane not built", 6);
+    bad_face("offset surface", "surface kind offset not built", 6);
     bad_face("malformed loop", "expected ',' or ')' in a list", 5);
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_topology_step");

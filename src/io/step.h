@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 
+#include "analytic/analytic.h"
 #include "common/arena.h"
 #include "io/io_model.h"
 
@@ -67,6 +68,10 @@ typedef struct pc_step_file {
     /* The model's surface index of each instance read as a surface, -1
      * for the others (the faces of step_topology.c look them up). */
     long *surface_of;
+    /* Per instance read as an analytic surface, the maps from the file's
+     * (u, v) to its NURBS's (s, t) (maps_of[2 i], maps_of[2 i + 1]);
+     * is_angle = 0 in both otherwise. */
+    pc_angle_map *maps_of;
 } pc_step_file;
 
 /* Indexes the DATA section (step_lexer.c). instances is malloc'ed: release

@@ -216,7 +216,17 @@ static projcurve_status read_one(pc_step_file *f, pc_arena *arena, projcurve_mod
                                     f->ctx ? projcurve_context_message(f->ctx) : skip);
     if (skip != NULL)
         return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin, skip);
-    return pc_model_add_surface_kind(f->ctx, model, &a.nurbs, origin, a.kind);
+    if ((st = pc_model_add_surface_kind(f->ctx, model, &a.nurbs, origin, a.kind)) != PROJCURVE_OK)
+        return st;
+    /* the faces on it find it, with the maps their pcurves go through */
+    const size_t at = (size_t)(inst - f->instances);
+    if (f->surface_of != NULL)
+        f->surface_of[at] = (long)model->n_surfaces - 1;
+    if (f->maps_of != NULL) {
+        f->maps_of[2 * at] = a.map_u;
+        f->maps_of[2 * at + 1] = a.map_v;
+    }
+    return PROJCURVE_OK;
 }
 
 projcurve_status pc_step_read_analytic(pc_step_file *f, projcurve_model *model)

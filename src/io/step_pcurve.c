@@ -45,7 +45,46 @@ int pc_step_surface_point(const projcurve_surface *s, const double uv[2], double
                                   fmin(fmax(uv[1], d[2]), d[3]), 0, p) == PROJCURVE_OK;
 }
 
-/* A 2D LINE pcurve between the (u, v) of the edge's vertices. */
+/* The parameter on the LINE o + t d of a vertex at (s, t) uv of the face's
+ * NURBS: on an analytic surface its (u, v) is moved by the whole turns
+ * (of each full-turn angle direction, PC_STEP_LINE_TURNS either way) that
+ * bring it nearest the line, and of those equally near, the turn giving
+ * the parameter above after (when after is finite) or nearest 0. */
+#define PC_STEP_LINE_TURNS 2
+static double line_parameter(const stopo *t, const double o[3], const double d[3], double dd,
+                             const double st[2], double after)
+{
+    double uv[2] = {st[0], st[1]};
+    if (t->maps == NULL)
+        return ((uv[0] - o[0]) * d[0] + (uv[1] - o[1]) * d[1]) / dd;
+    pc_step_uv_to_analytic(t->f, t->maps, st, uv);
+    const double unit = t->f->radians_per_angle_unit > 0.0 ? t->f->radians_per_angle_unit : 1.0;
+    double turn[2];
+    int range[2];
+    for (int k = 0; k < 2; ++k) {
+        const pc_angle_map *m = &t->maps[k];
+        const int full = m->is_angle && m->a1 - m->a0 >= 2.0 * M_PI * (1.0 - 1e-9);
+        turn[k] = 2.0 * M_PI / unit;
+        range[k] = full ? PC_STEP_LINE_TURNS : 0;
+    }
+    double best = 0.0, best_off = INFINITY, best_key = INFINITY;
+    for (int i = -range[0]; i <= range[0]; ++i)
+        for (int j = -range[1]; j <= range[1]; ++j) {
+            const double q[2] = {uv[0] + i * turn[0] - o[0], uv[1] + j * turn[1] - o[1]};
+            const double par = (q[0] * d[0] + q[1] * d[1]) / dd;
+            const double off = hypot(q[0] - par * d[0], q[1] - par * d[1]);
+            const double key = isfinite(after) ? (par > after ? par - after : INFINITY) : fabs(par);
+            const double near = 1e-9 * (1.0 + fabs(turn[0]) + fabs(turn[1]));
+            if (off < best_off - near || (off <= best_off + near && key < best_key))
+                best = par, best_off = fmin(off, best_off), best_key = key;
+        }
+    return best;
+}
+
+/* A 2D LINE pcurve between the (u, v) of the edge's vertices va -> vb,
+ * along the line's direction (the parameter it shares with the edge's 3D
+ * curve); on an analytic surface, in its (u, v), a closed edge (va = vb)
+ * once round the turn the line runs along. */
 projcurve_status pc_step_line_piece(const stopo *t, const pc_step_located *curve,
                                    const projcurve_surface *s, const double va[3],
                                    const double vb[3], pc_piece_input *out)
@@ -57,13 +96,23 @@ projcurve_status pc_step_line_piece(const stopo *t, const pc_step_located *curve
     const double dd = d[0] * d[0] + d[1] * d[1];
     if (!(dd > 0.0))
         return pc_step_give_up(t, "#%ld: a LINE of no length%s", curve->inst->id, "");
-    double par[2];
-    for (int k = 0; k < 2; ++k) {
+    for (int k = 0; k < 2; ++k)
         if (projcurve_surface_closest_point(NULL, s, k ? vb : va, uv[k], NULL, NULL) != PROJCURVE_OK)
             return pc_step_give_up(t, "#%ld: a vertex cannot be placed on the surface%s", curve->inst->id, "");
-        par[k] = ((uv[k][0] - o[0]) * d[0] + (uv[k][1] - o[1]) * d[1]) / dd;
+    double lo, hi;
+    if (t->maps == NULL) {
+        const double p0 = line_parameter(t, o, d, dd, uv[0], NAN), p1 = line_parameter(t, o, d, dd, uv[1], NAN);
+        lo = fmin(p0, p1), hi = fmax(p0, p1);
+    } else {
+        lo = line_parameter(t, o, d, dd, uv[0], NAN);
+        const int closed = pc_step_dist3(va, vb) <= PC_STEP_PCURVE_CHECK_FACTOR * pc_step_precision(t, s);
+        hi = closed ? lo : line_parameter(t, o, d, dd, uv[1], lo);
+        if (closed) { /* once round: the turn of the angle the line moves along */
+            const double unit = t->f->radians_per_angle_unit > 0.0 ? t->f->radians_per_angle_unit : 1.0;
+            const int k = fabs(d[0]) >= fabs(d[1]) ? 0 : 1;
+            hi = lo + 2.0 * M_PI / unit / fabs(d[k]);
+        }
     }
-    const double lo = fmin(par[0], par[1]), hi = fmax(par[0], par[1]);
     if (!(hi > lo))
         return pc_step_give_up(t, "#%ld: its edge has no length on the LINE%s", curve->inst->id, "");
     double *ctrl = pc_arena_calloc(t->arena, 4, sizeof *ctrl);
@@ -243,6 +292,44 @@ static double nearest_parameter(const projcurve_surface *s, const pc_curve2 *c, 
     return 0.5 * (a + b);
 }
 
+/* The parameter of a pcurve whose surface point is nearest v within
+ * PC_STEP_NEAR_WIDTH of its domain around guess, by golden-section
+ * steps (a fixed number). */
+#define PC_STEP_NEAR_WIDTH (1.0 / 16.0)
+static double nearest_parameter_near(const projcurve_surface *s, const pc_curve2 *c,
+                                     const double v[3], double guess)
+{
+    double t0, t1, uv[2];
+    pc_curve2_domain(c, &t0, &t1);
+    const double w = PC_STEP_NEAR_WIDTH * (t1 - t0);
+    double a = fmax(t0, guess - w), b = fmin(t1, guess + w);
+    const double g = 0.5 * (sqrt(5.0) - 1.0);
+    for (int k = 0; k < PC_STEP_RANGE_REFINE; ++k) {
+        const double x = b - g * (b - a), y = a + g * (b - a);
+        double px[3], py[3];
+        pc_curve2_eval(c, x, uv);
+        const int okx = pc_step_surface_point(s, uv, px);
+        pc_curve2_eval(c, y, uv);
+        const int oky = pc_step_surface_point(s, uv, py);
+        if (okx && oky && pc_step_dist3(px, v) < pc_step_dist3(py, v))
+            b = y;
+        else
+            a = x;
+    }
+    return 0.5 * (a + b);
+}
+
+/* 1 when the pcurve's surface point at parameter a is farther than prec
+ * from v (only then is a refined: near a pole the surface point hardly
+ * moves with the parameter, and the 3D curve's is the better). */
+static int off_vertex(const projcurve_surface *s, const pc_curve2 *c, const double v[3], double a,
+                      double prec)
+{
+    double uv[2], p[3];
+    pc_curve2_eval(c, a, uv);
+    return pc_step_surface_point(s, uv, p) && pc_step_dist3(p, v) > prec;
+}
+
 /* The parameter of v on the edge's 3D curve, which the pcurve shares
  * (ISO 10303-42 SURFACE_CURVE): a LINE's and a CIRCLE's (its angle, moved
  * by turns into [t0, t1] of the pcurve) in closed form, a B-spline's by
@@ -310,10 +397,19 @@ projcurve_status pc_step_restrict_to_edge(const stopo *t, const projcurve_surfac
      * is not: near a pole every u is nearly the same point) */
     double a = 0.0, b = 0.0;
     const double slack = 1e-9 * (t1 - t0);
+    const int circle = curve3->inst != NULL && pc_step_is(curve3->node, "CIRCLE");
     if (curve3->inst == NULL || !curve3_parameter(t, curve3, v0, t0, t1, &a) ||
         !curve3_parameter(t, curve3, v1, t0, t1, &b) || a < t0 - slack || b > t1 + slack) {
         a = nearest_parameter(s, &c, v0);
         b = nearest_parameter(s, &c, v1);
+    } else if (circle && t->analytic) {
+        /* an arc past the angle 0 ends a turn on; a pcurve that is a
+         * rational B-spline of the circle has the angle as its parameter
+         * at its knots only: a vertex off it is found near its angle */
+        if (b <= a && b + 2.0 * M_PI <= t1 + slack)
+            b += 2.0 * M_PI;
+        a = off_vertex(s, &c, v0, a, prec) ? nearest_parameter_near(s, &c, v0, a) : a;
+        b = off_vertex(s, &c, v1, b, prec) ? nearest_parameter_near(s, &c, v1, b) : b;
     }
     a = fmax(a, t0);
     b = fmin(b, t1);

@@ -757,9 +757,10 @@ projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t l
     projcurve_status st = pc_step_index(&f);
     if (st == PROJCURVE_OK) {
         f.surface_of = malloc((f.n_instances + 1) * sizeof *f.surface_of);
+        f.maps_of = calloc(2 * (f.n_instances + 1), sizeof *f.maps_of);
         for (size_t i = 0; f.surface_of != NULL && i <= f.n_instances; ++i)
             f.surface_of[i] = -1;
-        if (f.surface_of == NULL)
+        if (f.surface_of == NULL || f.maps_of == NULL)
             st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
     }
     if (st == PROJCURVE_OK)
@@ -769,6 +770,7 @@ projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t l
     if (st == PROJCURVE_OK)
         st = pc_step_read_topology(&f, model);
     free(f.surface_of);
+    free(f.maps_of);
     pc_step_index_free(&f);
     return st;
 }

@@ -84,13 +84,16 @@ static const char *surface_kind(const pc_step_node *n)
 
 /* The model surface of the surface instance ref: the one place where a
  * file's surface becomes the surface of a face. B-spline surfaces are the
- * model surfaces read by step_read.c; any other kind gives its name in
- * *kind and the reason. */
+ * model surfaces read by step_read.c, analytic ones those of
+ * step_face_points.c with their maps (*maps, NULL when both are the
+ * identity); any other kind gives its name in *kind and the reason. */
 static projcurve_status face_surface(const stopo *t, const pc_step_node *ref, long from,
-                                     const projcurve_surface **out, const char **kind)
+                                     const projcurve_surface **out, const char **kind,
+                                     const pc_angle_map **maps)
 {
     *out = NULL;
     *kind = "other";
+    *maps = NULL;
     pc_step_located s;
     projcurve_status st = pc_step_fetch(t, ref, from, &s);
     if (st != PROJCURVE_OK || s.inst == NULL)
@@ -100,6 +103,9 @@ static projcurve_status face_surface(const stopo *t, const pc_step_node *ref, lo
     if (index < 0)
         return pc_step_give_up(t, "surface #%ld: surface kind %s not built", s.inst->id, *kind);
     *out = t->model->surfaces[index];
+    const pc_angle_map *m = t->f->maps_of + 2 * (s.inst - t->f->instances);
+    if (m[0].is_angle || m[1].is_angle)
+        *maps = m;
     return PROJCURVE_OK;
 }
 
@@ -186,6 +192,8 @@ static projcurve_status edge_piece(const stopo *t, const pc_step_node *ref, long
         const pc_step_located *c = &found[(seam && n_found == 2 && oe_sense < 0) ? 1 : 0];
         st = pc_step_is(c->node, "LINE") ? pc_step_line_piece(t, c, s, same > 0 ? va : vb, same > 0 ? vb : va, piece)
                                          : pc_step_bspline_piece(t, c, piece);
+        if (st == PROJCURVE_OK && !t->reason[0] && t->maps != NULL)
+            st = pc_step_piece_to_nurbs(t, s, c->inst->id, piece);
         pc_step_located curve3 = {NULL, NULL};
         if (st == PROJCURVE_OK && !t->reason[0])
             st = pc_step_fetch(t, pc_step_child(geom.node, 1), geom.inst->id, &curve3);
@@ -261,6 +269,8 @@ static projcurve_status read_bound(const stopo *t, const pc_step_node *ref, long
             p->items[i] = p->items[j];
             p->items[j] = tmp;
         }
+    if (t->maps != NULL && (st = pc_step_join_turns(t, p->items + first, p->count - first)) != PROJCURVE_OK)
+        return st;
     p->has_outer |= outer;
     return push_loop(t, p, first, outer)
                ? PROJCURVE_OK
@@ -289,7 +299,8 @@ static projcurve_status read_face(stopo *t, const pc_step_located *face)
     const projcurve_surface *s = NULL;
     const char *kind = "other";
     const pc_step_node *sref = pc_step_child(face->node, 2);
-    projcurve_status st = face_surface(t, sref, face->inst->id, &s, &kind);
+    projcurve_status st = face_surface(t, sref, face->inst->id, &s, &kind, &t->maps);
+    t->analytic = strcmp(kind, "bspline") != 0;
     pieces p = {0};
     const pc_step_node *bounds = pc_step_child(face->node, 1);
     if (st == PROJCURVE_OK && !reason[0] && (bounds == NULL || bounds->kind != PC_STEP_LIST))

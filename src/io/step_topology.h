@@ -36,6 +36,10 @@ typedef struct stopo {
     double precision;  /* 0: none in the file */
     long *face_of;     /* per instance: the model's face index, -1 */
     char *reason;      /* why the face being read cannot be built */
+    /* The face's surface is analytic: the maps from its (u, v), in which
+     * the pcurves are given, to its NURBS's (s, t); NULL for B-splines. */
+    const pc_angle_map *maps;
+    int analytic; /* the face's surface is analytic (maps may be NULL) */
 } stopo;
 
 static inline double pc_step_dist3(const double a[3], const double b[3])
@@ -82,6 +86,20 @@ projcurve_status pc_step_check_piece(const stopo *t, const projcurve_surface *s,
 projcurve_status pc_step_check_against_curve(const stopo *t, const projcurve_surface *s,
                                              long surface_id, long edge_id,
                                              const pc_piece_input *piece, const pc_step_located *curve);
+
+/* step_pcurve_map.c. A piece given in the analytic (u, v) of the face's
+ * surface (t->maps set) carried into its NURBS's (s, t), along the same
+ * parameter; the face gives up when its angles do not fit the NURBS's
+ * turn. */
+projcurve_status pc_step_piece_to_nurbs(const stopo *t, const projcurve_surface *s, long curve_id,
+                                        pc_piece_input *piece);
+/* The pieces of one loop on an analytic surface, in (s, t): a piece that
+ * meets its neighbours only a turn away (a seam's pcurve on the other
+ * side, an arc given past the seam) is moved by that turn. */
+projcurve_status pc_step_join_turns(const stopo *t, pc_piece_input *pieces, size_t n);
+/* The file's (u, v) (angles in its angle unit) of a NURBS (s, t). */
+void pc_step_uv_to_analytic(const pc_step_file *f, const pc_angle_map maps[2], const double st[2],
+                            double uv[2]);
 
 /* step_edge_projection.c. The pcurve of an edge without one: its 3D curve
  * v0 -> v1 projected onto s. */
