@@ -257,25 +257,13 @@ projcurve_status pc_step_check_against_curve(const stopo *t, const projcurve_sur
                                 "its 3D curve (precision %.3g)", edge_id, surface_id, worst, prec);
 }
 
-/* The parameter of a pcurve whose surface point is nearest v: the best
- * of PC_STEP_RANGE_SAMPLES samples per control point, then golden-section
- * steps (a fixed number) between its neighbours. */
-#define PC_STEP_RANGE_SAMPLES 16
+/* Golden-section steps (PC_STEP_RANGE_REFINE) in [a, b] towards the
+ * parameter whose surface point is nearest v. */
 #define PC_STEP_RANGE_REFINE 60
-static double nearest_parameter(const projcurve_surface *s, const pc_curve2 *c, const double v[3])
+static double golden_nearest(const projcurve_surface *s, const pc_curve2 *c, const double v[3],
+                             double a, double b)
 {
-    double t0, t1, uv[2], p[3];
-    pc_curve2_domain(c, &t0, &t1);
-    const size_t n = PC_STEP_RANGE_SAMPLES * c->n_ctrl;
-    size_t best = 0;
-    double best_d = INFINITY;
-    for (size_t i = 0; i <= n; ++i) {
-        pc_curve2_eval(c, t0 + (t1 - t0) * (double)i / (double)n, uv);
-        if (pc_step_surface_point(s, uv, p) && pc_step_dist3(p, v) < best_d)
-            best_d = pc_step_dist3(p, v), best = i;
-    }
-    double a = t0 + (t1 - t0) * (double)(best > 0 ? best - 1 : 0) / (double)n;
-    double b = t0 + (t1 - t0) * (double)(best < n ? best + 1 : n) / (double)n;
+    double uv[2];
     const double g = 0.5 * (sqrt(5.0) - 1.0);
     for (int k = 0; k < PC_STEP_RANGE_REFINE; ++k) {
         const double x = b - g * (b - a), y = a + g * (b - a);
@@ -292,6 +280,27 @@ static double nearest_parameter(const projcurve_surface *s, const pc_curve2 *c, 
     return 0.5 * (a + b);
 }
 
+/* The parameter of a pcurve whose surface point is nearest v: the best
+ * of PC_STEP_RANGE_SAMPLES samples per control point, then golden-section
+ * steps (a fixed number) between its neighbours. */
+#define PC_STEP_RANGE_SAMPLES 16
+static double nearest_parameter(const projcurve_surface *s, const pc_curve2 *c, const double v[3])
+{
+    double t0, t1, uv[2], p[3];
+    pc_curve2_domain(c, &t0, &t1);
+    const size_t n = PC_STEP_RANGE_SAMPLES * c->n_ctrl;
+    size_t best = 0;
+    double best_d = INFINITY;
+    for (size_t i = 0; i <= n; ++i) {
+        pc_curve2_eval(c, t0 + (t1 - t0) * (double)i / (double)n, uv);
+        if (pc_step_surface_point(s, uv, p) && pc_step_dist3(p, v) < best_d)
+            best_d = pc_step_dist3(p, v), best = i;
+    }
+    double a = t0 + (t1 - t0) * (double)(best > 0 ? best - 1 : 0) / (double)n;
+    double b = t0 + (t1 - t0) * (double)(best < n ? best + 1 : n) / (double)n;
+    return golden_nearest(s, c, v, a, b);
+}
+
 /* The parameter of a pcurve whose surface point is nearest v within
  * PC_STEP_NEAR_WIDTH of its domain around guess, by golden-section
  * steps (a fixed number). */
@@ -299,24 +308,11 @@ static double nearest_parameter(const projcurve_surface *s, const pc_curve2 *c, 
 static double nearest_parameter_near(const projcurve_surface *s, const pc_curve2 *c,
                                      const double v[3], double guess)
 {
-    double t0, t1, uv[2];
+    double t0, t1;
     pc_curve2_domain(c, &t0, &t1);
     const double w = PC_STEP_NEAR_WIDTH * (t1 - t0);
     double a = fmax(t0, guess - w), b = fmin(t1, guess + w);
-    const double g = 0.5 * (sqrt(5.0) - 1.0);
-    for (int k = 0; k < PC_STEP_RANGE_REFINE; ++k) {
-        const double x = b - g * (b - a), y = a + g * (b - a);
-        double px[3], py[3];
-        pc_curve2_eval(c, x, uv);
-        const int okx = pc_step_surface_point(s, uv, px);
-        pc_curve2_eval(c, y, uv);
-        const int oky = pc_step_surface_point(s, uv, py);
-        if (okx && oky && pc_step_dist3(px, v) < pc_step_dist3(py, v))
-            b = y;
-        else
-            a = x;
-    }
-    return 0.5 * (a + b);
+    return golden_nearest(s, c, v, a, b);
 }
 
 /* 1 when the pcurve's surface point at parameter a is farther than prec
