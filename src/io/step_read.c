@@ -128,6 +128,30 @@ static projcurve_status direction(const reader *r, const pc_step_instance *from,
     return PROJCURVE_OK;
 }
 
+/* AXIS2_PLACEMENT_2D('', location, ref_direction) in z = 0: a curve so
+ * placed is built, in a parameter space (*skip = pc_step_planar_curve). */
+static projcurve_status placement_2d(const reader *r, const located *loc, double o[3],
+                                     double x[3], double y[3], const char **skip)
+{
+    size_t dim = 0;
+    projcurve_status st = point(r, loc->inst, pc_step_child(loc->node, 1), o, &dim);
+    if (st != PROJCURVE_OK)
+        return st;
+    double d[3] = {1.0, 0.0, 0.0};
+    const pc_step_node *refd = pc_step_child(loc->node, 2);
+    if (refd && refd->kind == PC_STEP_REF &&
+        (st = direction(r, loc->inst, refd, "DIRECTION", d)) != PROJCURVE_OK)
+        return st;
+    const double len = hypot(d[0], d[1]);
+    if (!(len > 0.0))
+        return bad(r, loc->inst, "a 2D placement whose direction has no (x, y)");
+    x[0] = d[0] / len, x[1] = d[1] / len, x[2] = 0.0;
+    y[0] = -x[1], y[1] = x[0], y[2] = 0.0;
+    o[2] = 0.0;
+    *skip = pc_step_planar_curve;
+    return PROJCURVE_OK;
+}
+
 /* AXIS2_PLACEMENT_3D: origin and an orthonormal frame x, y (z = axis). */
 static projcurve_status placement(const reader *r, const pc_step_instance *from,
                                   const pc_step_node *ref, double o[3], double x[3], double y[3],
@@ -137,8 +161,10 @@ static projcurve_status placement(const reader *r, const pc_step_instance *from,
     projcurve_status st = resolve(r, from, ref, &loc);
     if (st != PROJCURVE_OK)
         return st;
+    if (pc_step_is(loc.node, "AXIS2_PLACEMENT_2D"))
+        return placement_2d(r, &loc, o, x, y, skip);
     if (!pc_step_is(loc.node, "AXIS2_PLACEMENT_3D")) {
-        *skip = "placed in 2D (a parameter-space curve)";
+        *skip = "placed neither in 2D nor in 3D";
         return PROJCURVE_OK;
     }
     size_t dim = 0;
@@ -405,7 +431,7 @@ static projcurve_status circle_frame(const reader *r, const located *c, double o
 {
     const pc_step_node *rad = pc_step_child(c->node, 2);
     projcurve_status st = placement(r, c->inst, pc_step_child(c->node, 1), o, x, y, skip);
-    if (st != PROJCURVE_OK || *skip != NULL)
+    if (st != PROJCURVE_OK || (*skip != NULL && *skip != pc_step_planar_curve))
         return st;
     if (rad == NULL || rad->kind != PC_STEP_NUMBER || !(rad->number > 0.0))
         return bad(r, c->inst, "circle radius is not a positive number");
@@ -424,7 +450,7 @@ static projcurve_status conic_frame(const reader *r, const located *c, double o[
     }
     const pc_step_node *n1 = pc_step_child(c->node, 2), *n2 = pc_step_child(c->node, 3);
     projcurve_status st = placement(r, c->inst, pc_step_child(c->node, 1), o, x, y, skip);
-    if (st != PROJCURVE_OK || *skip != NULL)
+    if (st != PROJCURVE_OK || (*skip != NULL && *skip != pc_step_planar_curve))
         return st;
     if (n1 == NULL || n1->kind != PC_STEP_NUMBER || !(n1->number > 0.0) || !isfinite(n1->number) ||
         n2 == NULL || n2->kind != PC_STEP_NUMBER || !(n2->number > 0.0) || !isfinite(n2->number))
@@ -439,7 +465,7 @@ static projcurve_status full_circle(const reader *r, const located *c, pc_io_cur
 {
     double o[3], x[3], y[3], a = 0.0, b = 0.0;
     projcurve_status st = conic_frame(r, c, o, x, y, &a, &b, skip);
-    if (st != PROJCURVE_OK || *skip != NULL)
+    if (st != PROJCURVE_OK || (*skip != NULL && *skip != pc_step_planar_curve))
         return st;
     return pc_ellipse_arc(r->f->ctx, r->arena, o, x, y, a, b, 0.0, 2.0 * M_PI, out);
 }

@@ -252,7 +252,8 @@ static projcurve_status read_bound(const stopo *t, const pc_step_node *ref, long
         loop.inst == NULL)
         return st;
     if (pc_step_is(loop.node, "VERTEX_LOOP"))
-        return pc_step_give_up(t, "#%ld: a VERTEX_LOOP (a pole as a loop) is not built%s", loop.inst->id, "");
+        return PROJCURVE_OK; /* a pole: it bounds nothing in (u, v) (a face of such bounds only
+                                has its surface's natural boundary) */
     const pc_step_node *edges = pc_step_child(loop.node, 1);
     if (!pc_step_is(loop.node, "EDGE_LOOP") || edges == NULL || edges->kind != PC_STEP_LIST ||
         edges->first == NULL)
