@@ -10,74 +10,50 @@
  * each listed with a message naming the face while the other faces load.
  */
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
 #include "projcurve.h"
+#include "step_text.h"
 
 static projcurve_context *ctx;
 
-/* Text of instances, appended to. */
-typedef struct text {
-    char buf[65536];
-    size_t len;
-    int next; /* next free instance number */
-} text;
-
-static int add(text *t, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-static int add(text *t, const char *fmt, ...)
+static int unit_square_surface(step_text *t)
 {
-    const int id = t->next++;
-    t->len += (size_t)snprintf(t->buf + t->len, sizeof t->buf - t->len, "#%d=", id);
-    va_list a;
-    va_start(a, fmt);
-    t->len += (size_t)vsnprintf(t->buf + t->len, sizeof t->buf - t->len, fmt, a);
-    va_end(a);
-    t->len += (size_t)snprintf(t->buf + t->len, sizeof t->buf - t->len, ";\n");
-    return id;
-}
-
-static int unit_square_surface(text *t)
-{
-    const int p00 = add(t, "CARTESIAN_POINT('',(0.,0.,0.))"), p01 = add(t, "CARTESIAN_POINT('',(0.,1.,0.))");
-    const int p10 = add(t, "CARTESIAN_POINT('',(1.,0.,0.))"), p11 = add(t, "CARTESIAN_POINT('',(1.,1.,0.))");
-    return add(t, "B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#%d,#%d),(#%d,#%d)),.UNSPECIFIED.,.F.,.F.,.F.,"
+    const int p00 = step_add(t, "CARTESIAN_POINT('',(0.,0.,0.))"), p01 = step_add(t, "CARTESIAN_POINT('',(0.,1.,0.))");
+    const int p10 = step_add(t, "CARTESIAN_POINT('',(1.,0.,0.))"), p11 = step_add(t, "CARTESIAN_POINT('',(1.,1.,0.))");
+    return step_add(t, "B_SPLINE_SURFACE_WITH_KNOTS('',1,1,((#%d,#%d),(#%d,#%d)),.UNSPECIFIED.,.F.,.F.,.F.,"
                   "(2,2),(2,2),(0.,1.),(0.,1.),.UNSPECIFIED.)", p00, p01, p10, p11);
 }
 
 /* An edge from a to b on z = 0: a LINE, with a 2D LINE pcurve on surface
  * `on` when on > 0. Returns the EDGE_CURVE. */
-static int edge(text *t, const double a[2], const double b[2], int on)
+static int edge(step_text *t, const double a[2], const double b[2], int on)
 {
-    const int pa = add(t, "CARTESIAN_POINT('',(%.17g,%.17g,0.))", a[0], a[1]);
-    const int pb = add(t, "CARTESIAN_POINT('',(%.17g,%.17g,0.))", b[0], b[1]);
-    const int va = add(t, "VERTEX_POINT('',#%d)", pa), vb = add(t, "VERTEX_POINT('',#%d)", pb);
+    const int pa = step_add(t, "CARTESIAN_POINT('',(%.17g,%.17g,0.))", a[0], a[1]);
+    const int pb = step_add(t, "CARTESIAN_POINT('',(%.17g,%.17g,0.))", b[0], b[1]);
+    const int va = step_add(t, "VERTEX_POINT('',#%d)", pa), vb = step_add(t, "VERTEX_POINT('',#%d)", pb);
     const double dx = b[0] - a[0], dy = b[1] - a[1], len = hypot(dx, dy);
-    const int dir = add(t, "DIRECTION('',(%.17g,%.17g,0.))", dx / len, dy / len);
-    const int vec = add(t, "VECTOR('',#%d,%.17g)", dir, len);
-    const int line = add(t, "LINE('',#%d,#%d)", pa, vec);
+    const int dir = step_add(t, "DIRECTION('',(%.17g,%.17g,0.))", dx / len, dy / len);
+    const int vec = step_add(t, "VECTOR('',#%d,%.17g)", dir, len);
+    const int line = step_add(t, "LINE('',#%d,#%d)", pa, vec);
     if (on <= 0)
-        return add(t, "EDGE_CURVE('',#%d,#%d,#%d,.T.)", va, vb, line);
-    const int p2 = add(t, "CARTESIAN_POINT('',(%.17g,%.17g))", a[0], a[1]);
-    const int d2 = add(t, "DIRECTION('',(%.17g,%.17g))", dx / len, dy / len);
-    const int v2 = add(t, "VECTOR('',#%d,%.17g)", d2, len);
-    const int l2 = add(t, "LINE('',#%d,#%d)", p2, v2);
-    const int rep = add(t, "DEFINITIONAL_REPRESENTATION('',(#%d),#%d)", l2, line);
-    const int pc = add(t, "PCURVE('',#%d,#%d)", on, rep);
-    const int sc = add(t, "SURFACE_CURVE('',#%d,(#%d),.PCURVE_S1.)", line, pc);
-    return add(t, "EDGE_CURVE('',#%d,#%d,#%d,.T.)", va, vb, sc);
+        return step_add(t, "EDGE_CURVE('',#%d,#%d,#%d,.T.)", va, vb, line);
+    const int p2 = step_add(t, "CARTESIAN_POINT('',(%.17g,%.17g))", a[0], a[1]);
+    const int d2 = step_add(t, "DIRECTION('',(%.17g,%.17g))", dx / len, dy / len);
+    const int v2 = step_add(t, "VECTOR('',#%d,%.17g)", d2, len);
+    const int l2 = step_add(t, "LINE('',#%d,#%d)", p2, v2);
+    const int rep = step_add(t, "DEFINITIONAL_REPRESENTATION('',(#%d),#%d)", l2, line);
+    const int pc = step_add(t, "PCURVE('',#%d,#%d)", on, rep);
+    const int sc = step_add(t, "SURFACE_CURVE('',#%d,(#%d),.PCURVE_S1.)", line, pc);
+    return step_add(t, "EDGE_CURVE('',#%d,#%d,#%d,.T.)", va, vb, sc);
 }
 
 /* An EDGE_LOOP of the square [x0, x1] x [y0, y1] counter-clockwise; the
  * edges' ids in e[4] (given ones, > 0, are reused reversed). */
-static int square_loop(text *t, double x0, double y0, double x1, double y1, int on, int e[4],
+static int square_loop(step_text *t, double x0, double y0, double x1, double y1, int on, int e[4],
                        int skip_one)
 {
     const double c[5][2] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}};
@@ -85,23 +61,16 @@ static int square_loop(text *t, double x0, double y0, double x1, double y1, int 
     for (int k = 0; k < 4; ++k) {
         if (e[k] == 0)
             e[k] = edge(t, c[k], c[k + 1], on);
-        oe[k] = add(t, "ORIENTED_EDGE('',*,*,#%d,.T.)", e[k]);
+        oe[k] = step_add(t, "ORIENTED_EDGE('',*,*,#%d,.T.)", e[k]);
     }
     if (skip_one)
-        return add(t, "EDGE_LOOP('',(#%d,#%d,#%d))", oe[0], oe[1], oe[2]);
-    return add(t, "EDGE_LOOP('',(#%d,#%d,#%d,#%d))", oe[0], oe[1], oe[2], oe[3]);
+        return step_add(t, "EDGE_LOOP('',(#%d,#%d,#%d))", oe[0], oe[1], oe[2]);
+    return step_add(t, "EDGE_LOOP('',(#%d,#%d,#%d,#%d))", oe[0], oe[1], oe[2], oe[3]);
 }
 
-static projcurve_model *read_step(const text *t)
+static projcurve_model *read_step(const step_text *t)
 {
-    static char doc[70000];
-    snprintf(doc, sizeof doc,
-             "ISO-10303-21;\nHEADER;\nFILE_NAME('x','',(''),(''),'','','');\nENDSEC;\nDATA;\n%s"
-             "ENDSEC;\nEND-ISO-10303-21;\n", t->buf);
-    projcurve_model *m = NULL;
-    if (projcurve_model_read_memory(ctx, doc, strlen(doc), &m) != PROJCURVE_OK)
-        pc_test_fail_at(__FILE__, __LINE__, "read failed: %s", projcurve_context_message(ctx));
-    return m;
+    return step_read(ctx, t);
 }
 
 static void expect_where(const projcurve_face *f, double u, double v, projcurve_where want)
@@ -117,7 +86,7 @@ static void expect_where(const projcurve_face *f, double u, double v, projcurve_
  * with a projected hole [0.1, 0.3] x [0.4, 0.6], and [0.5, 1] x [0, 1]. */
 static void hole_and_shared_edge(void)
 {
-    text t = {.next = 1};
+    step_text t = {.next = 1};
     const int s = unit_square_surface(&t);
     int left[4] = {0}, right[4] = {0}, hole[4] = {0};
     const int outer = square_loop(&t, 0, 0, 0.5, 1, s, left, 0);
@@ -127,17 +96,17 @@ static void hole_and_shared_edge(void)
     int oe[4];
     for (int k = 0; k < 3; ++k) {
         right[k] = edge(&t, r[k], r[k + 1], s);
-        oe[k] = add(&t, "ORIENTED_EDGE('',*,*,#%d,.T.)", right[k]);
+        oe[k] = step_add(&t, "ORIENTED_EDGE('',*,*,#%d,.T.)", right[k]);
     }
-    oe[3] = add(&t, "ORIENTED_EDGE('',*,*,#%d,.F.)", right[3]);
-    const int loop_r = add(&t, "EDGE_LOOP('',(#%d,#%d,#%d,#%d))", oe[0], oe[1], oe[2], oe[3]);
-    const int b1 = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", outer);
-    const int b2 = add(&t, "FACE_BOUND('',#%d,.F.)", inner);
-    const int b3 = add(&t, "FACE_BOUND('',#%d,.T.)", loop_r);
-    const int f1 = add(&t, "ADVANCED_FACE('',(#%d,#%d),#%d,.T.)", b1, b2, s);
-    const int f2 = add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", b3, s);
-    const int shell = add(&t, "CLOSED_SHELL('',(#%d,#%d))", f1, f2);
-    add(&t, "MANIFOLD_SOLID_BREP('',#%d)", shell);
+    oe[3] = step_add(&t, "ORIENTED_EDGE('',*,*,#%d,.F.)", right[3]);
+    const int loop_r = step_add(&t, "EDGE_LOOP('',(#%d,#%d,#%d,#%d))", oe[0], oe[1], oe[2], oe[3]);
+    const int b1 = step_add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", outer);
+    const int b2 = step_add(&t, "FACE_BOUND('',#%d,.F.)", inner);
+    const int b3 = step_add(&t, "FACE_BOUND('',#%d,.T.)", loop_r);
+    const int f1 = step_add(&t, "ADVANCED_FACE('',(#%d,#%d),#%d,.T.)", b1, b2, s);
+    const int f2 = step_add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", b3, s);
+    const int shell = step_add(&t, "CLOSED_SHELL('',(#%d,#%d))", f1, f2);
+    step_add(&t, "MANIFOLD_SOLID_BREP('',#%d)", shell);
     projcurve_model *m = read_step(&t);
     if (m == NULL)
         return;
@@ -183,36 +152,36 @@ static void hole_and_shared_edge(void)
 /* A good face plus one bad face; the bad one is listed with `words`. */
 static void bad_face(const char *what, const char *words, int kind)
 {
-    text t = {.next = 1};
+    step_text t = {.next = 1};
     const int s = unit_square_surface(&t);
     int good[4] = {0}, e[4] = {0};
     const int loop = square_loop(&t, 0, 0, 1, 1, s, good, 0);
-    add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", loop), s);
+    step_add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", step_add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", loop), s);
     int bounds = 0;
     int surface = s;
     if (kind == 0) { /* open loop: its last edge missing */
-        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", square_loop(&t, 0, 0, 1, 1, s, e, 1));
+        bounds = step_add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", square_loop(&t, 0, 0, 1, 1, s, e, 1));
     } else if (kind == 1) { /* a hole outside its outer loop */
         int h[4] = {0};
-        const int o = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", square_loop(&t, 0, 0, 0.5, 0.5, 0, e, 0));
-        const int i = add(&t, "FACE_BOUND('',#%d,.T.)", square_loop(&t, 0.7, 0.7, 0.9, 0.9, 0, h, 0));
-        add(&t, "ADVANCED_FACE('',(#%d,#%d),#%d,.T.)", o, i, s); /* two bounds: made here */
+        const int o = step_add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", square_loop(&t, 0, 0, 0.5, 0.5, 0, e, 0));
+        const int i = step_add(&t, "FACE_BOUND('',#%d,.T.)", square_loop(&t, 0.7, 0.7, 0.9, 0.9, 0, h, 0));
+        step_add(&t, "ADVANCED_FACE('',(#%d,#%d),#%d,.T.)", o, i, s); /* two bounds: made here */
     } else if (kind == 2) { /* a reference to nothing */
-        const int l = add(&t, "EDGE_LOOP('',(#%d,#9999))", add(&t, "ORIENTED_EDGE('',*,*,#%d,.T.)", good[0]));
-        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
+        const int l = step_add(&t, "EDGE_LOOP('',(#%d,#9999))", step_add(&t, "ORIENTED_EDGE('',*,*,#%d,.T.)", good[0]));
+        bounds = step_add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
     } else if (kind == 3) { /* a loop that holds itself */
         const int l = t.next;
-        add(&t, "EDGE_LOOP('',(#%d))", l);
-        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
+        step_add(&t, "EDGE_LOOP('',(#%d))", l);
+        bounds = step_add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
     } else if (kind == 5) { /* a loop whose text does not parse */
-        const int l = add(&t, "EDGE_LOOP('',(#%d #%d))", good[0], good[1]);
-        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
+        const int l = step_add(&t, "EDGE_LOOP('',(#%d #%d))", good[0], good[1]);
+        bounds = step_add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", l);
     } else { /* an offset surface, a kind that is not converted */
-        surface = add(&t, "OFFSET_SURFACE('',#%d,0.5,.F.)", surface);
-        bounds = add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", loop);
+        surface = step_add(&t, "OFFSET_SURFACE('',#%d,0.5,.F.)", surface);
+        bounds = step_add(&t, "FACE_OUTER_BOUND('',#%d,.T.)", loop);
     }
     if (bounds)
-        add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", bounds, surface);
+        step_add(&t, "ADVANCED_FACE('',(#%d),#%d,.T.)", bounds, surface);
     projcurve_model *m = read_step(&t);
     if (m == NULL)
         return;

@@ -18,7 +18,8 @@
 
 /* The 3D curve of an edge without pcurve, from v0 to v1 along its
  * parameter, as a curve handle over [*t0, *t1]. */
-static projcurve_status edge_curve3(const stopo *t, const pc_step_located *curve, const double v0[3],
+static projcurve_status edge_curve3(const stopo *t, const pc_step_located *curve,
+                                    const projcurve_surface *s, const double v0[3],
                                     const double v1[3], projcurve_curve **out, double *t0,
                                     double *t1, int *closed)
 {
@@ -45,7 +46,7 @@ static projcurve_status edge_curve3(const stopo *t, const pc_step_located *curve
     double c0[3], c1[3];
     projcurve_curve_eval(NULL, *out, *t0, 0, c0);
     projcurve_curve_eval(NULL, *out, *t1, 0, c1);
-    const double near = PC_STEP_PCURVE_CHECK_FACTOR * pc_step_precision(t, NULL);
+    const double near = PC_STEP_PCURVE_CHECK_FACTOR * pc_step_precision(t, s);
     *closed = pc_step_dist3(v0, v1) <= near && pc_step_dist3(c0, c1) <= near;
     if (!*closed) { /* an open edge: between its vertices */
         double a = *t0, b = *t1;
@@ -99,7 +100,7 @@ projcurve_status pc_step_edge_projection(const stopo *t, const pc_step_located *
     projcurve_curve *c = NULL;
     double t0 = 0.0, t1 = 1.0;
     int closed = 0;
-    projcurve_status st = edge_curve3(t, curve, v0, v1, &c, &t0, &t1, &closed);
+    projcurve_status st = edge_curve3(t, curve, s, v0, v1, &c, &t0, &t1, &closed);
     if (st != PROJCURVE_OK || c == NULL)
         return st;
     const double prec = pc_step_precision(t, s);

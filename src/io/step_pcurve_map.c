@@ -190,6 +190,20 @@ static int fits(const pc_piece_input *p, int k, double shift, const pc_angle_map
     return 1;
 }
 
+/* 1 when piece i moved by shift would lie on the other use of its edge in
+ * the loop (a seam's two sides are a turn apart: their gaps at a pole are
+ * not closed by moving one onto the other). */
+static int onto_partner(const pc_piece_input *pieces, size_t n, size_t i, int k, double shift,
+                        const pc_angle_map *m)
+{
+    const double slack = PC_STEP_MAP_SLACK * (m->a1 - m->a0);
+    for (size_t j = 0; j < n; ++j)
+        if (j != i && pieces[j].edge == pieces[i].edge &&
+            fabs(pieces[i].ctrl[k] + shift - pieces[j].ctrl[k]) <= slack)
+            return 1;
+    return 0;
+}
+
 projcurve_status pc_step_join_turns(const stopo *t, pc_piece_input *pieces, size_t n)
 {
     for (int k = 0; k < 2 && n > 1; ++k) {
@@ -204,7 +218,7 @@ projcurve_status pc_step_join_turns(const stopo *t, pc_piece_input *pieces, size
             for (int sign = -1; sign <= 1; sign += 2) {
                 const double shift = sign * period;
                 const double moved = gap(prev, p, 0.0, shift, k) + gap(p, next, shift, 0.0, k);
-                if (!(moved < 0.5 * now) || !fits(p, k, shift, m))
+                if (!(moved < 0.5 * now) || !fits(p, k, shift, m) || onto_partner(pieces, n, i, k, shift, m))
                     continue;
                 double *ctrl = pc_arena_calloc(t->arena, 2 * p->n_ctrl, sizeof *ctrl);
                 if (ctrl == NULL)
@@ -216,6 +230,43 @@ projcurve_status pc_step_join_turns(const stopo *t, pc_piece_input *pieces, size
                 break;
             }
         }
+    }
+    return PROJCURVE_OK;
+}
+
+/* A degenerate piece a -> b in (s, t): the pole between two pieces. */
+static projcurve_status pole_piece(const stopo *t, const double a[2], const double b[2],
+                                   pc_piece_input *out)
+{
+    double *ctrl = pc_arena_calloc(t->arena, 4, sizeof *ctrl);
+    double *knots = pc_arena_calloc(t->arena, 4, sizeof *knots);
+    if (ctrl == NULL || knots == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    ctrl[0] = a[0], ctrl[1] = a[1], ctrl[2] = b[0], ctrl[3] = b[1];
+    knots[0] = knots[1] = 0.0;
+    knots[2] = knots[3] = 1.0;
+    *out = (pc_piece_input){.degree = 1, .n_ctrl = 2, .ctrl = ctrl, .knots = knots, .edge = -1,
+                            .sense = 1, .edge_sense = 1, .flags = PC_PIECE_DEGENERATE};
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_step_bridge_poles(const stopo *t, const projcurve_surface *s,
+                                      const pc_piece_input *in, size_t n, pc_piece_input *out,
+                                      size_t *n_out)
+{
+    const double prec = PC_STEP_PCURVE_CHECK_FACTOR * pc_step_precision(t, s);
+    const double tol_uv = pc_face_uv_tolerance(s, pc_step_precision(t, s));
+    *n_out = 0;
+    for (size_t i = 0; i < n; ++i) {
+        out[(*n_out)++] = in[i];
+        double e[2], b[2], pe[3], pb[3];
+        if (!piece_end(&in[i], 1, e) || !piece_end(&in[(i + 1) % n], 0, b) ||
+            hypot(e[0] - b[0], e[1] - b[1]) <= tol_uv || !pc_step_surface_point(s, e, pe) ||
+            !pc_step_surface_point(s, b, pb) || pc_step_dist3(pe, pb) > prec)
+            continue;
+        projcurve_status st = pole_piece(t, e, b, &out[(*n_out)++]);
+        if (st != PROJCURVE_OK)
+            return st;
     }
     return PROJCURVE_OK;
 }

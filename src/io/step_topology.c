@@ -237,6 +237,31 @@ static int push_loop(const stopo *t, pieces *p, size_t first, int outer)
     return 1;
 }
 
+/* The pieces from first on of a loop on an analytic surface: moved by
+ * the turns that join them, poles bridged. */
+static projcurve_status analytic_loop(const stopo *t, const projcurve_surface *s, pieces *p,
+                                      size_t first)
+{
+    const size_t n = p->count - first;
+    projcurve_status st = pc_step_join_turns(t, p->items + first, n);
+    pc_piece_input *out = st == PROJCURVE_OK ? pc_arena_calloc(t->arena, 2 * n, sizeof *out) : NULL;
+    if (st != PROJCURVE_OK)
+        return st;
+    size_t n_out = 0;
+    if (out == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    if ((st = pc_step_bridge_poles(t, s, p->items + first, n, out, &n_out)) != PROJCURVE_OK)
+        return st;
+    p->count = first;
+    for (size_t i = 0; i < n_out; ++i) {
+        pc_piece_input *piece = new_piece(t, p);
+        if (piece == NULL)
+            return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+        *piece = out[i];
+    }
+    return PROJCURVE_OK;
+}
+
 /* A FACE_OUTER_BOUND / FACE_BOUND and its EDGE_LOOP. */
 static projcurve_status read_bound(const stopo *t, const pc_step_node *ref, long face_id,
                                    const projcurve_surface *s, long surface_id, pieces *p)
@@ -270,7 +295,7 @@ static projcurve_status read_bound(const stopo *t, const pc_step_node *ref, long
             p->items[i] = p->items[j];
             p->items[j] = tmp;
         }
-    if (t->maps != NULL && (st = pc_step_join_turns(t, p->items + first, p->count - first)) != PROJCURVE_OK)
+    if (t->maps != NULL && (st = analytic_loop(t, s, p, first)) != PROJCURVE_OK)
         return st;
     p->has_outer |= outer;
     return push_loop(t, p, first, outer)
@@ -285,7 +310,7 @@ static void mark_seams(pieces *p)
     for (size_t l = 0; l < p->n_loops; ++l) {
         for (size_t i = at; i < at + p->loops[l].n_pieces; ++i)
             for (size_t j = i + 1; j < at + p->loops[l].n_pieces; ++j)
-                if (p->items[i].edge == p->items[j].edge) {
+                if (p->items[i].edge >= 0 && p->items[i].edge == p->items[j].edge) {
                     p->items[i].flags |= PC_PIECE_SEAM;
                     p->items[j].flags |= PC_PIECE_SEAM;
                 }

@@ -97,6 +97,13 @@ projcurve_status pc_step_piece_to_nurbs(const stopo *t, const projcurve_surface 
  * meets its neighbours only a turn away (a seam's pcurve on the other
  * side, an arc given past the seam) is moved by that turn. */
 projcurve_status pc_step_join_turns(const stopo *t, pc_piece_input *pieces, size_t n);
+/* The pieces in[0 .. n) of one loop on an analytic surface with a
+ * degenerate piece (PC_PIECE_DEGENERATE, no edge) wherever two that follow
+ * each other are apart in (s, t) but meet in 3D within the precision (a
+ * pole: a sphere's seam meets itself there a turn away). out holds 2 n. */
+projcurve_status pc_step_bridge_poles(const stopo *t, const projcurve_surface *s,
+                                      const pc_piece_input *in, size_t n, pc_piece_input *out,
+                                      size_t *n_out);
 /* The file's (u, v) (angles in its angle unit) of a NURBS (s, t). */
 void pc_step_uv_to_analytic(const pc_step_file *f, const pc_angle_map maps[2], const double st[2],
                             double uv[2]);
