@@ -287,6 +287,10 @@ static void check_model_file(const char *relative, const kind_count *want, size_
     printf("%-40s %zu analytic faces, %zu edges, %zu points on their surfaces, farthest %.2e "
            "(precision %g)\n", relative, faces, stats.edges, stats.points, stats.worst, want_precision);
     CHECK(faces == want_analytic_faces && stats.points >= faces);
+    /* every face of the file is built, the analytic ones on their NURBS */
+    CHECK(projcurve_model_unbuilt_face_count(m) == 0);
+    for (size_t i = 0; i < projcurve_model_unbuilt_face_count(m); ++i)
+        printf("%s: unbuilt: %s\n", relative, projcurve_model_unbuilt_face(m, i));
     pc_arena_release(&arena);
     index_free(&x);
     free(text);
