@@ -35,6 +35,7 @@ typedef struct pc_ortho_finder_state {
      * Morse index evaluated with this projector. */
     const pc_projector *minima_of;
     double interval;        /* full search at least every `interval` in t */
+    unsigned long long search_cost; /* most budget units one search took so far */
     double last_full_t;     /* t of the last check that asked for a search */
     size_t last_active;     /* branches alive at the previous check */
     int started;            /* a check happened since the last reset */
@@ -46,9 +47,21 @@ typedef struct pc_ortho_finder_state {
 } pc_ortho_finder_state;
 
 /* Number of full foot-point searches per curve domain in the mid-curve
- * sweep (the brief's "at intervals"): a branch born between two searches
- * is found at the next one and traced back to where it was born. */
+ * sweep, at least: a branch born between two searches is found at the next
+ * one and traced back to where it was born, but a branch born and gone
+ * between two searches is missed. */
 #define PC_ORTHO_JUMP_CHECKS 16
+/* ... and at most, where searches are cheap. The sweep searches as often
+ * as PC_ORTHO_SEARCH_WORK units of work (sub-patches examined, the budget's
+ * unit of a foot-point search) allow at the cost of the dearest search so
+ * far: the count depends only on the inputs, so the result does too. On
+ * the teapot's one-patch surfaces a search examines ~40 sub-patches and the
+ * sweep searches 256 times (a branch of minima living 0.05 of the domain,
+ * from the boundary to a centre of curvature, fell between two of 16); on
+ * linkrods.step surface 16 (degree 6 x 10, rational) one examines ~11,000
+ * (~10 ms) and the sweep keeps its 16. */
+#define PC_ORTHO_JUMP_CHECKS_MAX 256
+#define PC_ORTHO_SEARCH_WORK 131072ull
 
 /* Sets up finder over state for surface and curve; minima_of (may be NULL:
  * every foot point is a seed) as in pc_ortho_finder_state. Release with
