@@ -41,11 +41,16 @@ static int at_collapsed_point(const projcurve_surface *s, double u, double v)
     return pc_collapsed_direction(sd[1], sd[2]) != PC_COLLAPSE_NONE;
 }
 
-/* The interval between two full searches after a search that took `cost`
- * units (PC_ORTHO_SEARCH_WORK). Without a budget to count them the interval
+/* The interval between two full searches after a search that examined
+ * `units` sub-patches (PC_ORTHO_SEARCH_WORK), each weighed by the size of
+ * its control net, doubled on rational surfaces: what its tests and its
+ * Newton's evaluations cost. Without a budget to count them the interval
  * stays at 1 / PC_ORTHO_JUMP_CHECKS of the domain. */
-static void plan_searches(pc_ortho_finder_state *st, unsigned long long cost)
+static void plan_searches(pc_ortho_finder_state *st, unsigned long long units)
 {
+    const pc_nurbs_surface *s = &st->surface->nurbs;
+    const unsigned long long cost = units * (unsigned long long)((s->deg_u + 1) * (s->deg_v + 1)) *
+                                    (s->rational ? 2u : 1u);
     if (cost > st->search_cost)
         st->search_cost = cost;
     unsigned long long n = PC_ORTHO_SEARCH_WORK / (st->search_cost ? st->search_cost : 1);
