@@ -41,24 +41,6 @@ static int at_collapsed_point(const projcurve_surface *s, double u, double v)
     return pc_collapsed_direction(sd[1], sd[2]) != PC_COLLAPSE_NONE;
 }
 
-/* The interval between two full searches after a search that examined
- * `units` sub-patches (PC_ORTHO_SEARCH_WORK), each weighed by the size of
- * its control net, doubled on rational surfaces: what its tests and its
- * Newton's evaluations cost. Without a budget to count them the interval
- * stays at 1 / PC_ORTHO_JUMP_CHECKS of the domain. */
-static void plan_searches(pc_ortho_finder_state *st, unsigned long long units)
-{
-    const pc_nurbs_surface *s = &st->surface->nurbs;
-    const unsigned long long cost = units * (unsigned long long)((s->deg_u + 1) * (s->deg_v + 1)) *
-                                    (s->rational ? 2u : 1u);
-    if (cost > st->search_cost)
-        st->search_cost = cost;
-    unsigned long long n = PC_ORTHO_SEARCH_WORK / (st->search_cost ? st->search_cost : 1);
-    n = n < PC_ORTHO_JUMP_CHECKS ? PC_ORTHO_JUMP_CHECKS
-        : n > PC_ORTHO_JUMP_CHECKS_MAX ? PC_ORTHO_JUMP_CHECKS_MAX : n;
-    st->interval = (st->curve->t1 - st->curve->t0) / (double)n;
-}
-
 /* Every local foot point of P(t) (projcurve_surface_foot_points), or none
  * where may_jump asked for no search (ortho_seeds.h). */
 static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx, double t,
@@ -75,12 +57,9 @@ static projcurve_status ortho_find(pc_seed_finder *self, projcurve_context *ctx,
         return pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "curve callback failed at t = %.17g", t);
     projcurve_status status = grow(ctx, st, ORTHO_FOOT_CAPACITY);
     size_t count = 0;
-    const unsigned long long work_before = st->budget ? st->budget->work : 0;
     if (status == PROJCURVE_OK)
         status = pc_surface_foot_points_uv(ctx, st->surface, p, st->budget, st->capacity,
                                            st->uv, &count);
-    if (st->budget)
-        plan_searches(st, st->budget->work - work_before);
     if (status == PROJCURVE_OK && count > st->capacity) {
         status = grow(ctx, st, count);
         if (status == PROJCURVE_OK)
@@ -133,7 +112,6 @@ void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
     state->curve = curve;
     state->minima_of = minima_of;
     state->interval = (curve->t1 - curve->t0) / PC_ORTHO_JUMP_CHECKS;
-    state->search_cost = 0;
     state->uv = NULL;
     state->capacity = 0;
     state->budget = NULL;

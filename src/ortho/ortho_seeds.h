@@ -35,7 +35,6 @@ typedef struct pc_ortho_finder_state {
      * Morse index evaluated with this projector. */
     const pc_projector *minima_of;
     double interval;        /* full search at least every `interval` in t */
-    unsigned long long search_cost; /* most budget units one search took so far */
     double last_full_t;     /* t of the last check that asked for a search */
     size_t last_active;     /* branches alive at the previous check */
     int started;            /* a check happened since the last reset */
@@ -47,25 +46,9 @@ typedef struct pc_ortho_finder_state {
 } pc_ortho_finder_state;
 
 /* Number of full foot-point searches per curve domain in the mid-curve
- * sweep, at least: a branch born between two searches is found at the next
- * one and traced back to where it was born, but a branch born and gone
- * between two searches is missed. */
+ * sweep (the brief's "at intervals"): a branch born between two searches
+ * is found at the next one and traced back to where it was born. */
 #define PC_ORTHO_JUMP_CHECKS 16
-/* ... and at most, where searches are cheap. The sweep searches as often
- * as PC_ORTHO_SEARCH_WORK units of work allow at the cost of the dearest
- * search so far, a unit being a sub-patch examined (the budget's unit of a
- * foot-point search) weighed by the size of the control net, (p + 1)
- * (q + 1), doubled when S is rational: the count depends only on the
- * inputs, so the result does too. On the teapot's bicubic one-patch
- * surfaces a search examines ~40 sub-patches (640 units) and the sweep
- * searches 256 times (a branch of minima living 0.05 of the domain, from
- * the boundary to a centre of curvature, fell between two of 16); on the
- * degree 6 x 10 rational surfaces of linkrods.step one examines 1,000 to
- * 11,000 (1 to 10 ms; 160,000 units and more) and the sweep keeps its 16
- * (counted in sub-patches alone, surface 14 had 125 searches and its
- * slowest call took 0.56 s instead of 0.12 s). */
-#define PC_ORTHO_JUMP_CHECKS_MAX 256
-#define PC_ORTHO_SEARCH_WORK 1048576ull
 
 /* Sets up finder over state for surface and curve; minima_of (may be NULL:
  * every foot point is a seed) as in pc_ortho_finder_state. Release with
