@@ -35,7 +35,7 @@
  * no address-space limit is set and the memory limit is four times higher
  * (shadow memory and the quarantine of freed blocks count as resident).
  *
- * Open cases: tests/realdata_open.tsv lists the cases that still fail, each
+ * Open cases: tests/realdata/realdata_open.tsv lists the cases that still fail, each
  * with the classes it may fail in (support/open_cases.h); they are printed
  * and counted but do not fail the test, and one that passes is named so the
  * list can shrink. Every other failure fails the test.
@@ -49,7 +49,7 @@
  * (as the failure lines number them; with the same FILE and STRIDE);
  * PC_REALDATA_LIST=1 prints the cases without running them;
  * PC_REALDATA_OPEN_LIST=path reads the open cases from path instead of
- * tests/realdata_open.tsv (/dev/null prints every failure in full);
+ * tests/realdata/realdata_open.tsv (/dev/null prints every failure in full);
  * PC_REALDATA_MODEL=path sweeps that model instead of the real files (to
  * check the verifier on the synthetic cases, or a fix on a new model).
  */
@@ -181,7 +181,7 @@ typedef struct sweep {
     sweep_file file;
     const job *current;
     size_t cases, run, failed;
-    pc_open_cases open;    /* tests/realdata_open.tsv */
+    pc_open_cases open;    /* tests/realdata/realdata_open.tsv */
     size_t open_failing;   /* listed cases that failed as listed */
     size_t per_class[N_CLASSES];
     outcome_row slowest[10];

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * Local-minimum feet of the orthogonal projection on real surfaces
- * (issue 14, the cases of tests/realdata_open.tsv), against a brute-force
+ * (issue 14, the cases of tests/realdata/realdata_open.tsv), against a brute-force
  * oracle: the local minima of |S - P(t)| on a dense grid of the domain,
  * polished by the test's own Newton (support/foot_step.h), each of which
  * must lie within eps_D of a composed piece of the result. Each case pins
