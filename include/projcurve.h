@@ -160,20 +160,25 @@ typedef enum projcurve_option {
      * of the projection, used when PARAM_STEP is 0. Default 1/64, [1e-7, 1]. */
     PROJCURVE_OPT_ARC_STEP_FRACTION = 7,
     /* integer: maximum number of traced points per projection.
-     * Default 10,000,000, [16, 2^40]. Both size limits are checked before
+     * Default 100,000, [16, 2^40]. Both size limits are checked before
      * the allocation that would pass them, and they bound the memory of a
      * call: at most about 600 bytes per point of MAX_POINTS plus
      * 1,100 + 32 (d + 1) bytes per piece of MAX_PIECES (d the pieces'
-     * degree, p + q, or 3 (p + q) with cubic pcurves), plus tables of the
-     * size of the surface (a few hundred bytes per Bezier patch); arrays
-     * grow by doubling, which this counts. Measured: ~400 bytes per piece
-     * on a bilinear plane. So MAX_POINTS 200,000 and MAX_PIECES 100,000
-     * keep a call below 256 MiB; the defaults allow several GiB. */
+     * degree, p + q, or 3 (p + q) with cubic pcurves, at most
+     * 2 PROJCURVE_MAX_DEGREE = 60), plus tables of the size of the surface
+     * (a few hundred bytes per Bezier patch); arrays grow by doubling,
+     * which this counts. The defaults are chosen for 256 MiB: 100,000
+     * points take at most 60 MB and 50,000 pieces at most 153 MB (at
+     * d = 60; measured: ~300 bytes per piece on a bilinear plane, 14 MiB
+     * for a call stopped at 50,000 pieces). A projection that needs more
+     * returns PROJCURVE_ERR_LIMIT_REACHED with the partial result described
+     * at projcurve_project_directional; raise the limits for it. The
+     * largest real-data call of the test suite makes about 8,000 pieces. */
     PROJCURVE_OPT_MAX_POINTS = 8,
     /* integer: maximum number of composed pieces per projection.
-     * Default 1,000,000, [1, 2^40]. A projection that needs more returns
-     * PROJCURVE_ERR_LIMIT_REACHED with the partial result described at
-     * projcurve_project_directional. */
+     * Default 50,000, [1, 2^40] (see MAX_POINTS for the memory it bounds).
+     * A projection that needs more returns PROJCURVE_ERR_LIMIT_REACHED with
+     * the partial result described at projcurve_project_directional. */
     PROJCURVE_OPT_MAX_PIECES = 9,
     /* integer: 1 = compose pieces exactly on S (default), 0 = trace only
      * (polylines, no eps_D / eps_T refinement). */

@@ -2,7 +2,7 @@
 /*
  * The orthogonal residual the command reports for a traced point: how far
  * S(u, v) is from being a foot point of p, in model units. Public API only,
- * so that a test can link it alone (tests/test_ortho_singular.c).
+ * so that a test can link it alone (tests/unit/ortho/test_ortho_singular.c).
  */
 #ifndef PROJCURVE_CLI_RESIDUAL_H
 #define PROJCURVE_CLI_RESIDUAL_H

@@ -100,8 +100,22 @@ static int in_thin_span(const double *breaks, size_t n, double x)
     return 0;
 }
 
+/* 1 when the foot point (u, v) is a local minimum of |S - p|: its Hessian
+ * H = [g_ij + (S - p).S_ij] is positive definite ([PW96], the matrix K). */
+static int is_minimum(const pc_nurbs_surface *s, pc_vec3 p, double u, double v)
+{
+    pc_vec3 d[6];
+    pc_nurbs_surface_eval(s, u, v, 2, NULL, NULL, d);
+    const pc_vec3 r = vec3_sub(d[0], p);
+    const double h11 = vec3_dot(d[1], d[1]) + vec3_dot(r, d[3]);
+    const double h12 = vec3_dot(d[1], d[2]) + vec3_dot(r, d[4]);
+    const double h22 = vec3_dot(d[2], d[2]) + vec3_dot(r, d[5]);
+    return h11 > 0.0 && h11 * h22 - h12 * h12 > 0.0;
+}
+
 /* Newton from (u, v): 0 if it failed, 1 if it converged inside the
- * sub-patch (grown by half its size), 2 if it converged farther away. */
+ * sub-patch (grown by half its size), 2 if it converged farther away,
+ * 3 if it converged inside to a foot point that is no local minimum. */
 static int start_newton(feet_search *fs, const pc_subpatch *sp, double u, double v)
 {
     ++fs->starts;
@@ -116,7 +130,29 @@ static int start_newton(feet_search *fs, const pc_subpatch *sp, double u, double
         return 1;
     const int inside = uv[0] >= sp->u0 - 0.5 * hu && uv[0] <= sp->u1 + 0.5 * hu &&
                        uv[1] >= sp->v0 - 0.5 * hv && uv[1] <= sp->v1 + 0.5 * hv;
-    return inside ? 1 : 2;
+    if (!inside)
+        return 2;
+    return is_minimum(&fs->s->nurbs, fs->p, uv[0], uv[1]) ? 1 : 3;
+}
+
+/* A saddle or maximum found in a flat sub-patch means det H changes sign
+ * nearby (critical points of different index are separated by a curve where
+ * det H = 0, where p is a centre of curvature), so the sub-patch may hold a
+ * minimum beside it that Newton from its centre does not reach: it lands on
+ * the saddle (teapot body patch 0: a saddle and a minimum 0.29 apart in v in
+ * one flat quarter). A descent cannot land on a saddle: from each quarter
+ * point the distance is minimised (pc_surface_minimize, bounded) and Newton
+ * started where it stopped; a minimum on the domain's edge is no foot point
+ * and Newton drops it. */
+static void descend_from_quarters(feet_search *fs, const pc_subpatch *sp)
+{
+    static const double quarter[4][2] = {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
+    const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
+    for (int k = 0; k < 4 && fs->starts < FEET_MAX_STARTS; ++k) {
+        double uv[2] = {sp->u0 + quarter[k][0] * hu, sp->v0 + quarter[k][1] * hv};
+        pc_surface_minimize(&fs->s->nurbs, fs->p, fs->s->size, uv);
+        start_newton(fs, sp, uv[0], uv[1]);
+    }
 }
 
 static pc_subdiv_action decide_feet(void *user, const pc_subpatch *sp)
@@ -139,17 +175,24 @@ static pc_subdiv_action decide_feet(void *user, const pc_subpatch *sp)
     const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
     /* A flat sub-patch holding a foot point already found holds no other
      * (short of two foot points merging, where p is a centre of
-     * curvature): skip its Newton, which would find the same one again. */
+     * curvature): skip its Newton, which would find the same one again.
+     * Unless that one is no minimum (descend_from_quarters). */
     for (size_t k = 0; k < fs->list->count; ++k) {
         const pc_surface_point *f = &fs->list->items[k];
-        if (f->u >= sp->u0 && f->u <= sp->u1 && f->v >= sp->v0 && f->v <= sp->v1)
+        if (f->u >= sp->u0 && f->u <= sp->u1 && f->v >= sp->v0 && f->v <= sp->v1) {
+            if (!is_minimum(n, fs->p, f->u, f->v))
+                descend_from_quarters(fs, sp);
             return PC_SUBDIV_STOP;
+        }
     }
-    if (start_newton(fs, sp, sp->u0 + 0.5 * hu, sp->v0 + 0.5 * hv) == 2) {
+    const int found = start_newton(fs, sp, sp->u0 + 0.5 * hu, sp->v0 + 0.5 * hv);
+    if (found == 2) {
         static const double quarter[4][2] = {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
         for (int k = 0; k < 4; ++k)
             start_newton(fs, sp, sp->u0 + quarter[k][0] * hu, sp->v0 + quarter[k][1] * hv);
     }
+    if (found == 3)
+        descend_from_quarters(fs, sp);
     return PC_SUBDIV_STOP;
 }
 

@@ -91,6 +91,28 @@ int pc_refine_on_knot_line(const pc_refiner *r, const pc_rvertex *v)
     return lo != hi;
 }
 
+/* Where the corrector fails inside the bracket of a crossing, the exact
+ * curve runs into the knot line there (a C0 knot line of a surface that is
+ * not G1 across it: the foot point sits on the crease for a stretch of t,
+ * no critical point of either side, and Newton oscillates across it;
+ * linkrods.step surface 1, whose every knot in v has multiplicity = degree,
+ * at t = 0.0915 of curve 3). An end of the bracket within snap_far of the
+ * line is then the crossing, as when the bracket closes (the caller puts it
+ * on the line); without one there is no crossing. (Making the whole traced
+ * segment a gap instead dropped 0.03 of t, where the other side's foot
+ * point exists.) */
+static int bracket_end_on_line(const pc_refiner *r, const pc_rvertex *lo, const pc_rvertex *hi,
+                               int coord, double line, pc_rvertex *out)
+{
+    const double d_lo = fabs((coord == 0 ? lo->u : lo->v) - line);
+    const double d_hi = fabs((coord == 0 ? hi->u : hi->v) - line);
+    const pc_rvertex *best = d_lo <= d_hi ? lo : hi;
+    if (!(fmin(d_lo, d_hi) <= r->snap_far))
+        return 0;
+    *out = *best;
+    return 1;
+}
+
 /* Root of coord(t) = line on the projection between a and b (coordinate 0 =
  * u, 1 = v), which bracket it; regula falsi, Illinois variant. */
 static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int coord,
@@ -103,7 +125,7 @@ static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *
         const double t = (g_hi * lo.t - g_lo * hi.t) / (g_hi - g_lo);
         pc_rvertex c;
         if (!pc_refine_exact_point(r, &lo, &hi, t, &c))
-            return 0;
+            return bracket_end_on_line(r, &lo, &hi, coord, line, out);
         const double g = (coord == 0 ? c.u : c.v) - line;
         if (fabs(g) <= r->min_move) {
             *out = c;

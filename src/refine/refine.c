@@ -277,6 +277,26 @@ static int gap_stretch_short(pc_refiner *r, const pc_vertex_list *out, size_t lo
     return 1;
 }
 
+/* 1 when the run that next_run just returned (ending before branch
+ * position pos) is a fragment of the branch's start: a later run follows,
+ * and every vertex before that run stays within eps_D / 2 of its first
+ * vertex (gap_stretch_short). A branch born at a fold starts with vertices
+ * a few 1e-12 apart in t whose corrections fail one in two: the runs
+ * between those gaps, each of a piece or two, came out as branches of
+ * their own that start and end FAILED (teapot surface 18, a lifted
+ * diagonal, at t = 0.8475); they are part of the start reached to the
+ * tolerance, like the gaps around them. */
+static int start_fragment(pc_refiner *r, const pc_vertex_list *out, int descending, size_t pos)
+{
+    size_t next_lo, next_hi;
+    int silhouette;
+    if (!next_run(r, out, descending, &pos, &next_lo, &next_hi, &silhouette))
+        return 0;
+    const size_t n = out->count;
+    return descending ? gap_stretch_short(r, out, next_hi + 1, n - 1, next_hi)
+                      : gap_stretch_short(r, out, 0, next_lo - 1, next_lo);
+}
+
 /* Step 4, and the refined polyline as the branch's points. Where out has
  * gaps, the branch is split: each run of composed segments becomes a
  * branch (the first keeps index i, the others are appended to res); the
@@ -296,6 +316,8 @@ static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_
     int silhouette = 0; /* the kind of the gaps before the current run */
     int at_end = 0;     /* the last run reaches the branch's end */
     while (next_run(r, out, descending, &pos, &lo, &hi, &silhouette)) {
+        if (runs == 0 && start_fragment(r, out, descending, pos))
+            continue;
         pc_branch *b = &res->branches[index];
         /* later runs start after a gap; the first one may after a few */
         const int at_start =

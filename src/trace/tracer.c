@@ -128,6 +128,28 @@ static int moved_far_on_surface(const pc_tracer *tr, const pc_proj_point *cur,
            PC_TRACE_MAX_CORRECTION * vec3_dist(at_pred, cur->s) + noise;
 }
 
+/* 1 when next lies farther on S from cur than PC_TRACE_MAX_MOVE times the
+ * first-order move |t - cur.t| |Q'| of the step (at either end: the speed
+ * grows towards a fold, and a step may end closer to one than it began), or
+ * than the arc-length step ds, whichever is longer: next to a fold |Q'| is
+ * the derivative of a square root and the move in a step can pass h |Q'|
+ * many times while it stays within ds.
+ * Near a centre of curvature on teapot surface 18 (a lifted diagonal) a
+ * branch of minima, its corrector failing where the huge second-order
+ * prediction made the step look near the boundary, had the exit search
+ * step 1e-6 in t and 0.58 in v, onto the sheet of another branch, which it
+ * then retraced; without a jump a step moves about h |Q'|. */
+static int jumped_on_surface(const pc_tracer *tr, const pc_proj_point *cur,
+                             const pc_proj_point *next)
+{
+    const double h = fabs(next->t - cur->t);
+    const double speed = fmax(cur->speed, next->speed);
+    const double noise = fmax(PC_TRACE_BOUNDARY_TOL * tr->proj->model_size, tr->proj->newton_tol);
+    if (!isfinite(speed))
+        return 0;
+    return vec3_dist(next->s, cur->s) > PC_TRACE_MAX_MOVE * fmax(h * speed, tr->ds) + noise;
+}
+
 /* Predicts and corrects one step from cur to the curve parameter t. On
  * ACCEPT and EXIT, *next holds the new point (with its derivatives). */
 static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
@@ -167,6 +189,8 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
         if (!left && !near_boundary(tr->dom, pred, sqrt(stride2)))
             return STEP_REJECT;
         const int found = pc_locate_exit(tr, cur, h, next);
+        if (found >= 0 && jumped_on_surface(tr, cur, next))
+            return STEP_REJECT;
         return found == 1 ? STEP_EXIT : (found == 0 ? STEP_ACCEPT : STEP_REJECT);
     }
     /* A corrector that moved far from the prediction has left for another
@@ -184,7 +208,7 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     }
     if (derived == 0)
         derived = proj->derivatives(proj, t, uv[0], uv[1], next) ? 1 : -1;
-    if (derived < 0 || crosses_fold(cur, next))
+    if (derived < 0 || crosses_fold(cur, next) || jumped_on_surface(tr, cur, next))
         return STEP_REJECT;
     record_error(tr, residual_error);
     return STEP_ACCEPT;

@@ -15,6 +15,12 @@
  * the prediction, in (u, v) and on S, is taken as a jump to another sheet,
  * and the step is cut. */
 #define PC_TRACE_MAX_CORRECTION 0.5
+/* A step whose corrected point lies farther on S from the current one than
+ * this multiple of its first-order move h |Q'| and of the arc-length step
+ * has jumped to another sheet (the predictor's second-order term grows
+ * without bound near a fold, and so does the correction the test above
+ * allows). */
+#define PC_TRACE_MAX_MOVE 4.0
 /* Boundary exits are located until (u, v) is within this fraction of the
  * domain's width from the boundary, then snapped onto it. */
 #define PC_TRACE_BOUNDARY_TOL 1e-12

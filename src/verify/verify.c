@@ -121,25 +121,79 @@ static projcurve_status copy_run(projcurve_context *ctx, projcurve_result *r, si
     return st == PROJCURVE_OK ? pc_branch_add_point(ctx, nb, 3, vertex) : st;
 }
 
+/* 1 when items [lo, hi) of b (their vertices, and the control points of
+ * their pieces) lie within `radius` of vertex `anchor` on S. */
+static int items_near(const pc_projector *proj, const pc_branch *b, size_t lo, size_t hi,
+                      size_t anchor, double radius)
+{
+    const int pieces = b->n_pieces > 0;
+    const double *a = pieces ? NULL : b->points + 3 * anchor;
+    const pc_vec3 x = pieces ? surface_point(proj, anchor < b->n_pieces ? b->pieces[anchor].uv[0]
+                                                                          : b->pieces[anchor - 1].uv[2],
+                                             anchor < b->n_pieces ? b->pieces[anchor].uv[1]
+                                                                  : b->pieces[anchor - 1].uv[3])
+                             : surface_point(proj, a[1], a[2]);
+    for (size_t k = lo; k < hi; ++k) {
+        if (!pieces) {
+            const double *p = b->points + 3 * k, *q = p + 3;
+            if (!(vec3_dist(surface_point(proj, p[1], p[2]), x) <= radius) ||
+                !(vec3_dist(surface_point(proj, q[1], q[2]), x) <= radius))
+                return 0;
+            continue;
+        }
+        const pc_piece *pc = &b->pieces[k];
+        for (int j = 0; j <= pc->degree; ++j) {
+            const double *c = pc->ctrl + 3 * j;
+            if (!(vec3_dist(vec3(c[0], c[1], c[2]), x) <= radius))
+                return 0;
+        }
+    }
+    return 1;
+}
+
+/* The items of b that start and end what is kept: first and last (past the
+ * end) item of the kept runs, leaving out the runs and failing items at
+ * either end that lie within eps_D / 2 of the first (or last) vertex of the
+ * runs kept, as the refinement does with its gaps (refine.c,
+ * gap_stretch_short). A branch born at a fold starts with pieces a few
+ * 1e-12 apart in t, where the exact projection is two points that merge
+ * and some fail the check: the runs between them came out as branches of
+ * a piece or two, starting and ending FAILED (teapot surface 18, a lifted
+ * diagonal, at t = 0.8475). They are the fold reached to the tolerance. */
+static void kept_span(const pc_projector *proj, const pc_branch *b, const unsigned char *keep,
+                      size_t n, double radius, size_t *first, size_t *last)
+{
+    *first = 0;
+    *last = n;
+    for (size_t lo = 1; lo < n; ++lo) /* the latest run start with a short prefix */
+        if (keep[lo] && !keep[lo - 1] && items_near(proj, b, 0, lo, lo, radius))
+            *first = lo;
+    for (size_t hi = n - 1; hi > *first; --hi) /* the earliest run end with a short suffix */
+        if (keep[hi - 1] && !keep[hi] && items_near(proj, b, hi, n, hi, radius))
+            *last = hi;
+}
+
 /* Replaces branch i by its runs of kept items (appended to r), the cuts
  * ending FAILED and starting FAILED; a branch with no run is dropped and
  * counted as a failure. The original is removed. */
-static projcurve_status cut_branch(projcurve_context *ctx, projcurve_result *r, size_t i,
-                                   const unsigned char *keep, size_t n)
+static projcurve_status cut_branch(projcurve_context *ctx, const pc_projector *proj, double radius,
+                                   projcurve_result *r, size_t i, const unsigned char *keep,
+                                   size_t n)
 {
     projcurve_status st = PROJCURVE_OK;
-    size_t runs = 0;
-    for (size_t lo = 0; lo < n && st == PROJCURVE_OK;) {
+    size_t runs = 0, first, last;
+    kept_span(proj, &r->branches[i], keep, n, radius, &first, &last);
+    for (size_t lo = first; lo < last && st == PROJCURVE_OK;) {
         if (!keep[lo]) {
             ++lo;
             continue;
         }
         size_t hi = lo;
-        while (hi + 1 < n && keep[hi + 1])
+        while (hi + 1 < last && keep[hi + 1])
             ++hi;
         const projcurve_branch_start start =
-            lo == 0 ? r->branches[i].start : PROJCURVE_START_FAILED;
-        const projcurve_branch_end end = hi + 1 == n ? r->branches[i].end : PROJCURVE_END_FAILED;
+            lo == first ? r->branches[i].start : PROJCURVE_START_FAILED;
+        const projcurve_branch_end end = hi + 1 == last ? r->branches[i].end : PROJCURVE_END_FAILED;
         st = copy_run(ctx, r, i, lo, hi, start, end);
         ++runs;
         lo = hi + 1;
@@ -194,7 +248,7 @@ projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *pr
             ++i;
             continue;
         }
-        st = cut_branch(ctx, r, i, keep, n);
+        st = cut_branch(ctx, proj, 0.5 * o->tol_distance, r, i, keep, n);
         --n_checked;
     }
     free(keep);

@@ -149,7 +149,7 @@ def run(lib_path):
     check(lib.projcurve_option_info(ctx, OPT_MAX_POINTS, ctypes.byref(kind), ctypes.byref(lo),
                                     ctypes.byref(hi), ctypes.byref(default)) == OK, "option info")
     check(kind.value == OPTION_INTEGER and lo.value == 16 and hi.value == 2.0 ** 40
-          and default.value == 1e7, "MAX_POINTS info %r" % ((kind.value, lo.value, hi.value, default.value),))
+          and default.value == 1e5, "MAX_POINTS info %r" % ((kind.value, lo.value, hi.value, default.value),))
 
     # 64-bit integers pass intact.
     check(lib.projcurve_options_set_int(ctx, opts, OPT_MAX_POINTS, 2 ** 40) == OK, "set 2^40")

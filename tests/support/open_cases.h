@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The list of open cases of a sweep test: cases known to fail today, each
- * with the failure classes it is allowed (tests/realdata_open.tsv). A listed
+ * with the failure classes it is allowed (tests/realdata/realdata_open.tsv). A listed
  * case failing only in its listed classes is reported as open, not as a
  * failure; any other failure fails the test, so the list can only shrink.
  * Lines: the case's key, a tab, its classes separated by spaces; '#' starts

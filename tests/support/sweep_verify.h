@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * An independent verifier of one projection result, for the real-data
- * sweep (tests/test_realdata_sweep.c). It uses the public API only and
+ * sweep (tests/realdata/test_realdata_sweep.c). It uses the public API only and
  * none of the library's own error measures:
  *
  *  - soundness: every piece of every branch is sampled; each sample X must

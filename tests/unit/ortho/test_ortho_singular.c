@@ -18,7 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "../src/cli/residual.h"
+#include "cli/residual.h"
 #include "check.h"
 #include "foot_step.h"
 #include "ortho/ortho_projector.h"

@@ -14,7 +14,7 @@
  * ends is below 1e-9 of the model size: no vertex replaced by a point off
  * the projection), consecutive pieces of a branch join and meet within
  * eps_T, the piece count stays that of a smooth curve of this length
- * (below PIECES_MAX, where the limit is 1,000,000), and every composed
+ * (below PIECES_MAX, where the default limit is 50,000), and every composed
  * branch is within eps_D of the exact projection: the Hausdorff distance
  * both ways on dense samples, each output sample projected onto the exact
  * curve by the oracle's Newton on t (pc_oracle_measure_result).
