@@ -77,7 +77,7 @@
  * enough that a loaded machine does not turn a slow verification into a
  * failure; the CPU guards above and below are what judge. */
 #define WALL_KILL 90.0
-#define VERIFY_CPU 20.0
+#define VERIFY_CPU 40.0
 #define MEMORY_LIMIT_MIB 256
 /* The child may grow past the limit by this much before the address-space
  * limit stops it, so a call just over the limit is measured, not crashed. */
