@@ -829,8 +829,9 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_add_curve(projcurve_context
                                                                const projcurve_curve *c);
 /* Adds every composed branch of a projection result onto s: a 3D curve (126)
  * and a curve on surface (142) with its 2D pcurve; s is written too if it
- * was not added before. Statuses: OK, NULL_ARGUMENT, INVALID_ARGUMENT,
- * NO_MEMORY. */
+ * was not added before. On failure the writer is left as it was (none of
+ * the result's entities added). Statuses: OK, NULL_ARGUMENT,
+ * INVALID_ARGUMENT, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
                                                                 projcurve_iges_writer *w,
                                                                 const projcurve_surface *s,

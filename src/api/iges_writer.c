@@ -211,11 +211,16 @@ projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
     if (projcurve_result_point_dim(r) != 3)
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "the result is not on a parametric surface (implicit projection)");
+    /* All or nothing: a failure (memory) part of the way leaves the writer
+     * as it was, not with half a result in it. */
+    const size_t before = w->out.count;
     size_t surface_de;
     projcurve_status st = add_surface(ctx, w, s, &surface_de);
     const size_t n = projcurve_result_branch_count(r);
     for (size_t b = 0; st == PROJCURVE_OK && b < n; ++b)
         st = add_branch(ctx, w, surface_de, r, b);
+    if (st != PROJCURVE_OK)
+        pc_iges_out_truncate(&w->out, before);
     return st;
 }
 

@@ -15,8 +15,14 @@
 #ifndef PC_COMMON_ALLOC_HOOK_H
 #define PC_COMMON_ALLOC_HOOK_H
 
+/* <stdlib.h> is read here, before the macros below rename the calls, and
+ * so before a source's own feature macros: the one the sources use (for
+ * clock_gettime and mkdir) is set first, to the same value. */
+#ifndef _POSIX_C_SOURCE
+#define _POSIX_C_SOURCE 200809L
+#endif
 #include <stddef.h>
-#include <stdlib.h> /* declared before the macros below rename the calls */
+#include <stdlib.h>
 
 /* Defined by a test program: nonzero makes this allocation fail (return
  * NULL). file and line name the call site. Absent (weak) in the library. */
