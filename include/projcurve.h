@@ -761,7 +761,10 @@ PROJCURVE_API size_t projcurve_result_failure_count(const projcurve_result *resu
 /* The whole branch as one NURBS curve handle (pieces joined, knots at the
  * joins), usable with the curve functions; release with
  * projcurve_curve_destroy. Statuses: OK, NULL_ARGUMENT, INDEX, NO_MEMORY,
- * INVALID_ARGUMENT (branch without composed pieces). */
+ * INVALID_ARGUMENT (branch without composed pieces), OUT_OF_RANGE (a branch
+ * over a t range narrower than a curve's domain may be, see
+ * projcurve_curve_create_nurbs: read its pieces with projcurve_result_piece;
+ * the IGES writer writes its traced pcurve). */
 PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *ctx,
                                                              const projcurve_result *result,
                                                              size_t branch,

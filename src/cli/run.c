@@ -112,9 +112,11 @@ int cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pai
         return 0;
     projcurve_curve *composed = NULL;
     const projcurve_status cst = projcurve_result_branch_curve(ctx, pair->result, branch, &composed);
-    /* A branch without composed pieces (INVALID_ARGUMENT) has no deviation;
-     * any other failure (memory) makes the measurement unknown. */
-    int measured = cst == PROJCURVE_OK || cst == PROJCURVE_ERR_INVALID_ARGUMENT;
+    /* A branch without composed pieces (INVALID_ARGUMENT) or too short in t
+     * to form a curve (OUT_OF_RANGE) has no deviation; any other failure
+     * (memory) makes the measurement unknown. */
+    int measured = cst == PROJCURVE_OK || cst == PROJCURVE_ERR_INVALID_ARGUMENT ||
+                   cst == PROJCURVE_ERR_OUT_OF_RANGE;
     if (cst == PROJCURVE_OK)
         q->deviation = 0.0;
     size_t got = 0;
