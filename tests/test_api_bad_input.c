@@ -53,6 +53,13 @@ static int nan_fn(void *user, double t, double out[9])
     return 0;
 }
 
+/* The line of line_fn, whose callback fails past t = 0.5: the failure
+ * happens in the middle of tracing. */
+static int half_fn(void *user, double t, double out[9])
+{
+    return t > 0.5 ? 1 : line_fn(user, t, out);
+}
+
 /* The plane z = 0 as an implicit surface. */
 static int plane_fn(void *user, const double x[3], double *value, double grad[3], double hess[9])
 {
@@ -103,6 +110,16 @@ static void test_model(void)
     CHECK_FAILS(projcurve_model_read_memory(ctx, NULL, 4, &m), PROJCURVE_ERR_NULL_ARGUMENT, "data");
     CHECK_FAILS(projcurve_model_read_memory(ctx, "abcd", 4, NULL), PROJCURVE_ERR_NULL_ARGUMENT,
                 "out");
+    CHECK_FAILS(projcurve_model_read_memory(ctx, "neither IGES nor STEP", 21, &m),
+                PROJCURVE_ERR_PARSE, "unrecognised file format");
+    /* refused by its length before a byte is read */
+    CHECK_FAILS(projcurve_model_read_memory(ctx, "x", (size_t)1 << 31, &m),
+                PROJCURVE_ERR_UNSUPPORTED, "more than");
+    {
+        projcurve_context_clear(ctx);
+        const projcurve_status st = projcurve_model_read_file(ctx, "/", &m);
+        CHECK(st == PROJCURVE_ERR_IO || st == PROJCURVE_ERR_PARSE); /* a directory */
+    }
     CHECK(m == SENTINEL);
     /* accessors of a NULL model and past the end */
     CHECK(projcurve_model_surface_count(NULL) == 0 && projcurve_model_curve_count(NULL) == 0 &&
@@ -135,6 +152,19 @@ static void test_result(void)
                 PROJCURVE_ERR_NULL_ARGUMENT, "value");
     CHECK_FAILS(projcurve_result_stat(ctx, result, (projcurve_stat)99, &v),
                 PROJCURVE_ERR_UNKNOWN_OPTION, "99");
+    /* Every statistic of the line over the plane: one branch, no jump,
+     * eps_D automatic = 1e-4 of the net's diagonal (sqrt 2), exact
+     * projection (a line on a plane: zero estimation error). */
+    double stat[PROJCURVE_STAT_MAX_ERROR + 1];
+    for (int key = 0; key <= PROJCURVE_STAT_MAX_ERROR; ++key)
+        CHECK_OK(projcurve_result_stat(ctx, result, (projcurve_stat)key, &stat[key]));
+    CHECK(stat[PROJCURVE_STAT_POINTS] >= 2 && stat[PROJCURVE_STAT_STEPS] >= 1);
+    CHECK(stat[PROJCURVE_STAT_NEWTON_ITERATIONS] >= 0 && stat[PROJCURVE_STAT_JUMPS] == 0);
+    CHECK(stat[PROJCURVE_STAT_PIECES] >= 1);
+    CHECK_NEAR(stat[PROJCURVE_STAT_TOL_DISTANCE], 1e-4 * sqrt(2.0), 1e-15);
+    CHECK(stat[PROJCURVE_STAT_AVG_ERROR] >= 0 && stat[PROJCURVE_STAT_AVG_ERROR] <= 1e-12);
+    CHECK(stat[PROJCURVE_STAT_MAX_ERROR] >= stat[PROJCURVE_STAT_AVG_ERROR] &&
+          stat[PROJCURVE_STAT_MAX_ERROR] <= 1e-12);
     CHECK_FAILS(projcurve_result_branch_info(ctx, NULL, 0, t, NULL, NULL, NULL, NULL),
                 PROJCURVE_ERR_NULL_ARGUMENT, "result");
     CHECK_FAILS(projcurve_result_branch_info(ctx, result, n, t, NULL, NULL, NULL, NULL),
@@ -198,6 +228,14 @@ static void test_curves(void)
                  PROJCURVE_ERR_CALLBACK);
     CHECK(r == SENTINEL);
     projcurve_curve_destroy(bad);
+    projcurve_curve *half = NULL;
+    CHECK_OK(projcurve_curve_create_callback(ctx, half_fn, NULL, 0.0, 1.0, &half));
+    CHECK_FAILS(projcurve_project_directional(ctx, plane, half, down, NULL, &r),
+                PROJCURVE_ERR_CALLBACK, "curve evaluation failed at t = 0.5");
+    CHECK_FAILS(projcurve_project_orthogonal(ctx, plane, half, NULL, &r), PROJCURVE_ERR_CALLBACK,
+                "");
+    CHECK(r == SENTINEL);
+    projcurve_curve_destroy(half);
     projcurve_curve_destroy(NULL);
 }
 
