@@ -126,6 +126,35 @@ PROJCURVE_API projcurve_status projcurve_context_status(const projcurve_context 
 /* Forgets the last failure. */
 PROJCURVE_API void projcurve_context_clear(projcurve_context *ctx);
 
+/* Size limits a context puts on the calls made with it (as SQLite's
+ * sqlite3_limit on a connection). A call with a NULL context uses the
+ * defaults. */
+typedef enum projcurve_limit {
+    /* Control points of one curve, or of one surface (n_u * n_v), at
+     * creation and when a model is read. Creating a surface costs about
+     * 1.7 KB per control point (the Bezier patches, their boxes and the
+     * BVH; a 1000 x 1000 net takes 1.7 GB and 5 s), a curve far less. A
+     * larger input is refused with PROJCURVE_ERR_OUT_OF_RANGE and a message
+     * naming the limit. Default PROJCURVE_DEFAULT_MAX_CONTROL_POINTS. */
+    PROJCURVE_LIMIT_CONTROL_POINTS = 0
+} projcurve_limit;
+
+/* 2^18: a 512 x 512 net, about 450 MB to create. */
+#define PROJCURVE_DEFAULT_MAX_CONTROL_POINTS 262144
+
+/* Sets a limit of ctx. The value must be >= 2 (the smallest curve);
+ * sizes whose arrays overflow the address space stay refused
+ * (PROJCURVE_ERR_OVERFLOW) whatever the limit.
+ * Statuses: OK, NULL_ARGUMENT (ctx), UNKNOWN_OPTION (limit), OUT_OF_RANGE
+ * (value); on failure the limit is unchanged. */
+PROJCURVE_API projcurve_status projcurve_context_set_limit(projcurve_context *ctx,
+                                                           projcurve_limit limit, size_t value);
+
+/* The current value of a limit (the default for a NULL ctx).
+ * Statuses: OK, NULL_ARGUMENT (value), UNKNOWN_OPTION (limit). */
+PROJCURVE_API projcurve_status projcurve_context_get_limit(projcurve_context *ctx,
+                                                           projcurve_limit limit, size_t *value);
+
 /* ======================================================================== */
 /* Options                                                                   */
 /* ======================================================================== */
@@ -732,7 +761,10 @@ PROJCURVE_API size_t projcurve_result_failure_count(const projcurve_result *resu
 /* The whole branch as one NURBS curve handle (pieces joined, knots at the
  * joins), usable with the curve functions; release with
  * projcurve_curve_destroy. Statuses: OK, NULL_ARGUMENT, INDEX, NO_MEMORY,
- * INVALID_ARGUMENT (branch without composed pieces). */
+ * INVALID_ARGUMENT (branch without composed pieces), OUT_OF_RANGE (a branch
+ * over a t range narrower than a curve's domain may be, see
+ * projcurve_curve_create_nurbs: read its pieces with projcurve_result_piece;
+ * the IGES writer writes its traced pcurve). */
 PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *ctx,
                                                              const projcurve_result *result,
                                                              size_t branch,
@@ -800,8 +832,9 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_add_curve(projcurve_context
                                                                const projcurve_curve *c);
 /* Adds every composed branch of a projection result onto s: a 3D curve (126)
  * and a curve on surface (142) with its 2D pcurve; s is written too if it
- * was not added before. Statuses: OK, NULL_ARGUMENT, INVALID_ARGUMENT,
- * NO_MEMORY. */
+ * was not added before. On failure the writer is left as it was (none of
+ * the result's entities added). Statuses: OK, NULL_ARGUMENT,
+ * INVALID_ARGUMENT, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
                                                                 projcurve_iges_writer *w,
                                                                 const projcurve_surface *s,

@@ -8,6 +8,7 @@
  * them to the surface. A surface is written once however often it is added (entities
  * are compared by their parameter text, i.e. exactly).
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -16,6 +17,7 @@
 #include "geom/curve.h"
 #include "geom/surface.h"
 #include "io/iges_write.h"
+#include "nurbs/input.h"
 
 #define PC_IGES_CURVE_ON_SURFACE 142
 #define PC_IGES_COS_PROJECTION 1 /* CRTN: created as a projection */
@@ -151,11 +153,25 @@ cleanup:
     return st;
 }
 
+/* A branch over a t range narrower than a curve's domain may be
+ * (nurbs/input.h: a sliver of the curve) has pieces but no curve handle of
+ * its own: it is written as its traced pcurve, as a branch not composed. */
+static int branch_forms_curve(const projcurve_result *r, size_t branch)
+{
+    double t[2] = {0.0, 0.0};
+    if (projcurve_result_branch_info(NULL, r, branch, t, NULL, NULL, NULL, NULL) != PROJCURVE_OK)
+        return 0;
+    return pc_input_check_domain(NULL, "branch", fmin(t[0], t[1]), fmax(t[0], t[1])) ==
+           PROJCURVE_OK;
+}
+
 /* The pcurve of a composed branch (its pieces' (u, v) curves joined), or
  * of one that is not composed (its traced points). */
 static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
                                    const projcurve_result *r, size_t branch, size_t *de)
 {
+    if (!branch_forms_curve(r, branch))
+        return add_traced_pcurve(ctx, w, r, branch, de);
     projcurve_curve *pcurve = NULL;
     projcurve_status st = pc_branch_pcurve(ctx, r, branch, &pcurve);
     if (st == PROJCURVE_ERR_INVALID_ARGUMENT)
@@ -178,7 +194,8 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
     if (st != PROJCURVE_OK)
         return st;
     projcurve_curve *c = NULL;
-    st = projcurve_result_branch_curve(ctx, r, branch, &c);
+    st = branch_forms_curve(r, branch) ? projcurve_result_branch_curve(ctx, r, branch, &c)
+                                       : PROJCURVE_ERR_INVALID_ARGUMENT;
     if (st == PROJCURVE_OK) {
         st = add_curve(ctx, w, c, PC_IGES_STATUS_PART, &curve_de);
         projcurve_curve_destroy(c);
@@ -212,11 +229,16 @@ projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
     if (projcurve_result_point_dim(r) != 3)
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "the result is not on a parametric surface (implicit projection)");
+    /* All or nothing: a failure (memory) part of the way leaves the writer
+     * as it was, not with half a result in it. */
+    const size_t before = w->out.count;
     size_t surface_de;
     projcurve_status st = add_surface(ctx, w, s, &surface_de);
     const size_t n = projcurve_result_branch_count(r);
     for (size_t b = 0; st == PROJCURVE_OK && b < n; ++b)
         st = add_branch(ctx, w, surface_de, r, b);
+    if (st != PROJCURVE_OK)
+        pc_iges_out_truncate(&w->out, before);
     return st;
 }
 

@@ -135,7 +135,7 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
 {
     if (!cli_run(ctx, job))
         return cli_usage_error("out of memory");
-    cli_print_summary(ctx, job, stdout);
+    const size_t unmeasured = cli_print_summary(ctx, job, stdout);
     int ok = 1;
     if (a->iges)
         ok &= cli_write_iges(ctx, job, a->iges);
@@ -145,7 +145,7 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
         ok &= cli_write_svg(ctx, job, title, a->svg);
     if (!ok)
         return CLI_EXIT_USAGE;
-    return job->failures ? CLI_EXIT_PROJECTION : CLI_EXIT_OK;
+    return job->failures || unmeasured ? CLI_EXIT_PROJECTION : CLI_EXIT_OK;
 }
 
 int cli_cmd_project(int argc, char **argv)

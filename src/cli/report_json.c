@@ -81,27 +81,43 @@ int cli_write_json(projcurve_context *ctx, const cli_job *job, const char *path)
     return ok;
 }
 
-void cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out)
+size_t cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out)
 {
-    size_t branches = 0, pieces = 0;
+    size_t branches = 0, pieces = 0, unmeasured = 0, composed = 0;
     double residual = 0.0, deviation = 0.0;
     for (size_t i = 0; i < job->n_pairs; ++i) {
         const cli_pair *p = &job->pairs[i];
         const size_t n = projcurve_result_branch_count(p->result);
         for (size_t b = 0; b < n; ++b) {
             size_t np = 0;
-            projcurve_result_branch_info(ctx, p->result, b, NULL, NULL, NULL, NULL, &np);
             cli_branch_quality q;
-            cli_branch_measure(ctx, job, p, b, &q);
+            if (projcurve_result_branch_info(ctx, p->result, b, NULL, NULL, NULL, NULL, &np) !=
+                    PROJCURVE_OK ||
+                !cli_branch_measure(ctx, job, p, b, &q)) {
+                ++unmeasured;
+                continue;
+            }
             pieces += np;
             residual = fmax(residual, q.residual);
-            deviation = fmax(deviation, q.deviation);
+            if (q.deviation >= 0.0) {
+                deviation = fmax(deviation, q.deviation);
+                ++composed;
+            }
         }
         branches += n;
     }
-    fprintf(out,
-            "%zu curve(s) x %zu surface(s): %zu branch(es), %zu piece(s), %.1f ms; "
-            "max residual %.3g, max deviation %.3g%s\n",
-            job->n_curves, job->n_surfaces, branches, pieces, job->time_ms, residual, deviation,
-            job->failures ? " (some projections failed)" : "");
+    fprintf(out, "%zu curve(s) x %zu surface(s): %zu branch(es), %zu piece(s), %.1f ms; ",
+            job->n_curves, job->n_surfaces, branches, pieces, job->time_ms);
+    if (branches == unmeasured)
+        fputs("max residual -", out);
+    else
+        fprintf(out, "max residual %.3g", residual);
+    if (composed == 0)
+        fputs(", max deviation -", out);
+    else
+        fprintf(out, ", max deviation %.3g", deviation);
+    if (unmeasured)
+        fprintf(out, " (%zu branch(es) could not be measured)", unmeasured);
+    fprintf(out, "%s\n", job->failures || unmeasured ? " (some projections failed)" : "");
+    return unmeasured;
 }

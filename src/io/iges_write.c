@@ -42,6 +42,14 @@ projcurve_status pc_iges_out_add(projcurve_context *ctx, pc_iges_out *out, int t
     return PROJCURVE_OK;
 }
 
+void pc_iges_out_truncate(pc_iges_out *out, size_t count)
+{
+    for (size_t i = count; i < out->count; ++i)
+        free(out->entities[i].params);
+    if (count < out->count)
+        out->count = count;
+}
+
 void pc_iges_out_free(pc_iges_out *out)
 {
     for (size_t i = 0; i < out->count; ++i)
