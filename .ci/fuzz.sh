@@ -44,8 +44,8 @@ ctest --test-dir build-fuzz -R '^fuzz_.*_corpus$' --output-on-failure -j2
 
 test_data=tests/data
 declare -A seeds=(
-    [iges]="$test_data/cases"
-    [step]="$test_data/real/test-joinsurf_01.stp tests/fuzz/seeds/step_complex_rational.stp"
+    [iges]="$test_data/cases tests/fuzz/seeds/iges_analytic.igs"
+    [step]="$test_data/real/test-joinsurf_01.stp tests/fuzz/seeds/step_complex_rational.stp $test_data/cases-brep/cylinder_analytic.step $test_data/cases-brep/gtest_cone_line_circle.step"
     [gismo]="$test_data/real/horn.xml $test_data/real/shroud_kaplan.xml"
     [teapot]="$test_data/real/teapot_newell_spd.txt"
     [project]="tests/fuzz/corpus/project"

@@ -807,6 +807,30 @@ PROJCURVE_API const projcurve_curve *projcurve_model_curve(const projcurve_model
 PROJCURVE_API const char *projcurve_model_skipped(const projcurve_model *model,
                                                   size_t index);
 
+/* The kind of surface index as the file gave it, a static string: "bspline"
+ * (B-spline and NURBS surfaces, Bezier patches), or for the analytic
+ * surfaces of STEP and IGES, read as exact rational NURBS, "plane",
+ * "cylinder", "cone", "sphere", "torus", "revolution", "extrusion" and
+ * (IGES 118) "ruled" (NULL past the end). In a STEP model the B-spline
+ * surfaces come first, in file order, then the analytic ones, in file
+ * order; in an IGES model all are in directory order. Thread-safe. */
+PROJCURVE_API const char *projcurve_model_surface_kind(const projcurve_model *model,
+                                                       size_t index);
+
+/* The file's length unit: returns 1 and sets *metres_per_unit (may be NULL)
+ * when the file states one (STEP: the SI_UNIT with its prefix or the
+ * CONVERSION_BASED_UNIT of the geometric context; IGES: the global
+ * section's units flag or name), else 0 with *metres_per_unit untouched.
+ * Coordinates are not scaled: they stay in this unit. Thread-safe. */
+PROJCURVE_API int projcurve_model_length_unit(const projcurve_model *model,
+                                              double *metres_per_unit);
+
+/* The file's distance precision in model units: returns 1 and sets
+ * *precision (may be NULL) when the file states one (STEP: the
+ * UNCERTAINTY_MEASURE_WITH_UNIT of the context; IGES: the global section's
+ * minimum resolution), else 0. Thread-safe. */
+PROJCURVE_API int projcurve_model_precision(const projcurve_model *model, double *precision);
+
 /* An IGES writer: collect surfaces, curves and projection results, then
  * write them as one IGES 5.3 file. */
 typedef struct projcurve_iges_writer projcurve_iges_writer;

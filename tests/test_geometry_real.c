@@ -10,6 +10,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include <stdlib.h>
 
 #include "check.h"
@@ -204,7 +205,14 @@ int main(void)
             pc_test_fail_at(__FILE__, __LINE__, "%s does not load", rel);
             continue;
         }
-        const size_t count = projcurve_model_surface_count(m);
+        /* The B-spline surfaces, which come first: the analytic ones that
+         * STEP files add after them are checked against their exact
+         * geometry by test_analytic_surfaces and test_io_step_analytic,
+         * and leaving them out keeps the random points drawn here. */
+        size_t count = 0;
+        while (count < projcurve_model_surface_count(m) &&
+               strcmp(projcurve_model_surface_kind(m, count), "bspline") == 0)
+            ++count;
         /* Spread the checked surfaces over the file. */
         const size_t step = count > MAX_SURFACES ? count / MAX_SURFACES : 1;
         for (size_t i = 0; i < count; i += step)

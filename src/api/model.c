@@ -146,3 +146,26 @@ const char *projcurve_model_skipped(const projcurve_model *model, size_t index)
 {
     return (model && index < model->n_skipped) ? model->skipped[index] : NULL;
 }
+
+const char *projcurve_model_surface_kind(const projcurve_model *model, size_t index)
+{
+    return (model && index < model->n_surfaces) ? model->surface_kinds[index] : NULL;
+}
+
+int projcurve_model_length_unit(const projcurve_model *model, double *metres_per_unit)
+{
+    if (model == NULL || !model->has_length_unit)
+        return 0;
+    if (metres_per_unit != NULL)
+        *metres_per_unit = model->metres_per_unit;
+    return 1;
+}
+
+int projcurve_model_precision(const projcurve_model *model, double *precision)
+{
+    if (model == NULL || !model->has_precision)
+        return 0;
+    if (precision != NULL)
+        *precision = model->precision;
+    return 1;
+}

@@ -92,4 +92,31 @@ projcurve_status pc_iges_curve(const pc_iges_file *f, size_t de, pc_io_curve *ou
                                const char **skip_reason);
 projcurve_status pc_iges_surface(const pc_iges_file *f, size_t de, pc_io_surface *out);
 
+/* The transformation of the entity at de (field 7, chained 124s composed;
+ * identity without one). */
+projcurve_status pc_iges_transform(const pc_iges_file *f, size_t de, pc_io_affine *out);
+
+/* The analytic surfaces (iges_analytic.c): 108 plane, 118 ruled surface,
+ * 120 surface of revolution, 122 tabulated cylinder, 190 plane surface,
+ * 192 right circular cylindrical, 194 right circular conical, 196
+ * spherical and 198 toroidal surface, as exact NURBS with the entity's
+ * transformation applied; *kind gets the model's kind name. The unbounded
+ * 190, 192 and 194 are built over the box that points[0 .. 3 n_points)
+ * need (in the entity's own coordinates; none: skipped). Entities the
+ * surface is made of (curves, points, directions) are listed in uses[0 ..
+ * *n_uses) (at most PC_IGES_MAX_USES) so that the reader does not list
+ * them as skipped. A valid entity that is not converted sets *skip_reason
+ * (OK returned). */
+#define PC_IGES_MAX_USES 4
+int pc_iges_is_analytic_surface(int type);
+projcurve_status pc_iges_analytic_surface(const pc_iges_file *f, size_t de, const double *points,
+                                          size_t n_points, pc_io_surface *out, const char **kind,
+                                          long uses[PC_IGES_MAX_USES], size_t *n_uses,
+                                          const char **skip_reason);
+
+/* The units flag or name and the minimum resolution of the global section
+ * into the model (iges_units.c); fields that are missing or not understood
+ * leave the model's unit or precision unset. */
+projcurve_status pc_iges_read_units(const pc_iges_file *f, projcurve_model *model);
+
 #endif /* PC_IO_IGES_H */

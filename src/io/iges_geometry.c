@@ -308,3 +308,8 @@ projcurve_status pc_iges_surface(const pc_iges_file *f, size_t de, pc_io_surface
     pc_io_affine_points(&t, out->ctrl, out->n_u * out->n_v);
     return PROJCURVE_OK;
 }
+
+projcurve_status pc_iges_transform(const pc_iges_file *f, size_t de, pc_io_affine *out)
+{
+    return transform_of(f, de, out);
+}

@@ -7,7 +7,10 @@
  * 102, 110, 126) are read when they stand alone: curves that are parts of
  * other entities (status "physically dependent") or that live in a
  * surface's parameter space (use flag 5) are listed as skipped. A curve on
- * surface (142) that stands alone is read as its 3D curve.
+ * surface (142) that stands alone is read as its 3D curve. The analytic
+ * surfaces (108, 118, 120, 122, 190-198) are read as exact NURBS in
+ * directory order with the B-splines (iges_analytic.c); the curves, points
+ * and directions they are made of are read through them.
  */
 #include <stdio.h>
 #include <string.h>
@@ -81,6 +84,25 @@ static projcurve_status curve_on_surface(const pc_iges_file *f, size_t de, pc_io
     return pc_iges_curve(f, (size_t)cptr, c, reason);
 }
 
+static projcurve_status analytic_surface(pc_iges_file *f, projcurve_model *model, size_t index,
+                                         unsigned char *consumed, const char *origin)
+{
+    pc_io_surface s;
+    const char *kind = NULL, *reason = NULL;
+    long uses[PC_IGES_MAX_USES];
+    size_t n_uses = 0;
+    projcurve_status st =
+        pc_iges_analytic_surface(f, 2 * index + 1, NULL, 0, &s, &kind, uses, &n_uses, &reason);
+    if (st != PROJCURVE_OK)
+        return st;
+    consumed[index] = 1;
+    for (size_t i = 0; i < n_uses; ++i)
+        consume(f, uses[i], consumed);
+    if (reason != NULL)
+        return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin, reason);
+    return pc_model_add_surface_kind(f->ctx, model, &s, origin, kind);
+}
+
 static projcurve_status read_entity(pc_iges_file *f, projcurve_model *model, size_t index,
                                     unsigned char *consumed)
 {
@@ -93,6 +115,8 @@ static projcurve_status read_entity(pc_iges_file *f, projcurve_model *model, siz
         projcurve_status st = pc_iges_surface(f, de, &s);
         return st != PROJCURVE_OK ? st : pc_model_add_surface(f->ctx, model, &s, origin);
     }
+    if (pc_iges_is_analytic_surface(e->type))
+        return analytic_surface(f, model, index, consumed, origin);
     if (!(is_curve_type(e->type) || e->type == 142) || consumed[index])
         return PROJCURVE_OK;
     if (e->subordinate == PC_IGES_STATUS_PHYSICALLY_DEPENDENT)
@@ -141,6 +165,8 @@ projcurve_status pc_iges_read(projcurve_context *ctx, const char *data, size_t l
         st = pc_iges_read_global(&f);
     if (st == PROJCURVE_OK)
         st = pc_iges_read_directory(&f);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_read_units(&f, model);
     unsigned char *consumed = NULL;
     if (st == PROJCURVE_OK) {
         consumed = pc_arena_calloc(&arena, f.n_entries + 1, 1);

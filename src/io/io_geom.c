@@ -6,18 +6,10 @@
 
 #include "common/error.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
 /* Splitting into Bezier segments inserts knots one by one (each insertion
  * moves the points after it): curves whose splitting would cost more point
  * moves than this are refused rather than joined slowly. */
 #define PC_IO_MAX_JOIN_WORK 100000000.0
-
-/* A quarter turn: arcs are split into Bezier segments no wider than this so
- * that every middle weight cos(angle / 2) stays >= cos(pi / 4). */
-#define PC_ARC_MAX_SEGMENT (M_PI / 2.0)
 
 void pc_io_affine_identity(pc_io_affine *a)
 {
@@ -86,51 +78,12 @@ projcurve_status pc_io_line_curve(projcurve_context *ctx, pc_arena *arena, const
     return PROJCURVE_OK;
 }
 
-static void arc_point(const double c[3], const double x[3], const double y[3], double r,
-                      double a, double s, double out[3])
-{
-    /* s scales the point away from the centre (1 on the arc, 1/cos for the
-     * middle control point of a segment). */
-    for (int k = 0; k < 3; ++k)
-        out[k] = c[k] + s * r * (cos(a) * x[k] + sin(a) * y[k]);
-}
-
 projcurve_status pc_io_arc_curve(projcurve_context *ctx, pc_arena *arena,
                                  const double centre[3], const double x_axis[3],
                                  const double y_axis[3], double radius, double a0, double a1,
                                  pc_io_curve *out)
 {
-    const double sweep = a1 - a0;
-    if (!(sweep > 0.0) || !(sweep <= 2.0 * M_PI + 1e-12) || !(radius > 0.0) || !isfinite(radius))
-        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
-                       "arc of radius %g over [%g, %g] rad cannot be converted", radius, a0, a1);
-    size_t n_seg = (size_t)ceil(sweep / PC_ARC_MAX_SEGMENT - 1e-12);
-    if (n_seg < 1)
-        n_seg = 1;
-    const size_t n_ctrl = 2 * n_seg + 1;
-    double *ctrl = arena_doubles(arena, 3 * n_ctrl);
-    double *w = arena_doubles(arena, n_ctrl);
-    double *knots = arena_doubles(arena, n_ctrl + 3);
-    if (ctrl == NULL || w == NULL || knots == NULL)
-        return no_memory(ctx);
-    const double step = sweep / (double)n_seg;
-    const double w_mid = cos(step / 2.0);
-    for (size_t s = 0; s <= n_seg; ++s) {
-        const double a = (s == n_seg) ? a1 : a0 + step * (double)s;
-        arc_point(centre, x_axis, y_axis, radius, a, 1.0, ctrl + 6 * s);
-        w[2 * s] = 1.0;
-        if (s < n_seg) {
-            arc_point(centre, x_axis, y_axis, radius, a + step / 2.0, 1.0 / w_mid, ctrl + 6 * s + 3);
-            w[2 * s + 1] = w_mid;
-        }
-    }
-    /* Knots: a0 x3, each interior join twice, a1 x3. */
-    knots[0] = knots[1] = knots[2] = a0;
-    for (size_t s = 1; s < n_seg; ++s)
-        knots[2 * s + 1] = knots[2 * s + 2] = a0 + step * (double)s;
-    knots[n_ctrl] = knots[n_ctrl + 1] = knots[n_ctrl + 2] = a1;
-    *out = (pc_io_curve){.degree = 2, .n_ctrl = n_ctrl, .ctrl = ctrl, .weights = w, .knots = knots};
-    return PROJCURVE_OK;
+    return pc_ellipse_arc(ctx, arena, centre, x_axis, y_axis, radius, radius, a0, a1, out);
 }
 
 /* ---- homogeneous working copies ---------------------------------------- */

@@ -13,28 +13,16 @@
 
 #include <stddef.h>
 
+#include "analytic/analytic.h"
 #include "common/arena.h"
 #include "projcurve.h"
 
-/* A B-spline/NURBS curve: n_ctrl points (3 doubles), weights (n_ctrl, or
- * NULL when polynomial), n_ctrl + degree + 1 knots. */
-typedef struct pc_io_curve {
-    int degree;
-    size_t n_ctrl;
-    double *ctrl;
-    double *weights;
-    double *knots;
-} pc_io_curve;
-
-/* A tensor-product surface, control net with the u index fastest. */
-typedef struct pc_io_surface {
-    int deg_u, deg_v;
-    size_t n_u, n_v;
-    double *ctrl;
-    double *weights;
-    double *knots_u;
-    double *knots_v;
-} pc_io_surface;
+/* Raw curves and surfaces are those of the analytic module, so that its
+ * exact conversions need no copy: a curve has n_ctrl points (3 doubles),
+ * weights (n_ctrl, or NULL when polynomial) and n_ctrl + degree + 1 knots;
+ * a surface's control net has the u index fastest. */
+typedef pc_rational_curve pc_io_curve;
+typedef pc_rational_surface pc_io_surface;
 
 /* An affine map x -> R x + T stored row by row as IGES entity 124 does:
  * {R11, R12, R13, T1, R21, R22, R23, T2, R31, R32, R33, T3}. */
@@ -56,9 +44,8 @@ projcurve_status pc_io_line_curve(projcurve_context *ctx, pc_arena *arena, const
                                   const double p1[3], pc_io_curve *out);
 
 /* The arc centre + r (cos a x_axis + sin a y_axis), a in [a0, a1] (a1 > a0,
- * at most one turn), as an exact rational quadratic: one Bezier segment per
- * quarter turn at most, middle weights cos(half the segment angle).
- * Parametrised over [a0, a1] (angles in radians). */
+ * at most one turn), as an exact rational quadratic: pc_ellipse_arc with
+ * both semi-axes r (angles in radians, knots at the segment ends' angles). */
 projcurve_status pc_io_arc_curve(projcurve_context *ctx, pc_arena *arena,
                                  const double centre[3], const double x_axis[3],
                                  const double y_axis[3], double radius, double a0, double a1,

@@ -22,6 +22,7 @@ void pc_model_free(projcurve_model *model)
     for (size_t i = 0; i < model->n_skipped; ++i)
         free(model->skipped[i]);
     free(model->surfaces);
+    free(model->surface_kinds);
     free(model->curves);
     free(model->skipped);
     free(model);
@@ -61,22 +62,35 @@ static projcurve_status prefix_failure(projcurve_context *ctx, projcurve_status 
     return pc_fail(ctx, st, "%s: %s", origin, inner);
 }
 
-projcurve_status pc_model_add_surface(projcurve_context *ctx, projcurve_model *model,
-                                      const pc_io_surface *s, const char *origin)
+projcurve_status pc_model_add_surface_kind(projcurve_context *ctx, projcurve_model *model,
+                                           const pc_io_surface *s, const char *origin,
+                                           const char *kind)
 {
     projcurve_surface **items = grow(model->surfaces, model->n_surfaces, &model->cap_surfaces,
                                      sizeof *items);
     if (items == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "%s: out of memory", origin);
     model->surfaces = items;
+    const char **kinds = grow(model->surface_kinds, model->n_surfaces, &model->cap_kinds,
+                              sizeof *kinds);
+    if (kinds == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "%s: out of memory", origin);
+    model->surface_kinds = kinds;
     projcurve_surface *h = NULL;
     const projcurve_status st = projcurve_surface_create_nurbs(
         ctx, s->deg_u, s->deg_v, s->n_u, s->n_v, s->ctrl, weights_or_null(s->weights, s->n_u * s->n_v),
         s->knots_u, s->knots_v, &h);
     if (st != PROJCURVE_OK)
         return prefix_failure(ctx, st, origin);
+    model->surface_kinds[model->n_surfaces] = kind;
     model->surfaces[model->n_surfaces++] = h;
     return PROJCURVE_OK;
+}
+
+projcurve_status pc_model_add_surface(projcurve_context *ctx, projcurve_model *model,
+                                      const pc_io_surface *s, const char *origin)
+{
+    return pc_model_add_surface_kind(ctx, model, s, origin, "bspline");
 }
 
 projcurve_status pc_model_add_curve(projcurve_context *ctx, projcurve_model *model,

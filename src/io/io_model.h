@@ -20,7 +20,14 @@
 
 struct projcurve_model {
     projcurve_surface **surfaces;
-    size_t n_surfaces, cap_surfaces;
+    /* The kind of each surface as read from the file ("bspline", "plane",
+     * "cylinder", ...: static strings), parallel to surfaces. */
+    const char **surface_kinds;
+    size_t n_surfaces, cap_surfaces, cap_kinds;
+    /* The file's length unit in metres and its distance precision in model
+     * units, each when the file states it (has_* = 1). */
+    double metres_per_unit, precision;
+    int has_length_unit, has_precision;
     projcurve_curve **curves;
     size_t n_curves, cap_curves;
     char **skipped;
@@ -38,6 +45,10 @@ void pc_model_free(projcurve_model *model);
  * (the spline is polynomial then). */
 projcurve_status pc_model_add_surface(projcurve_context *ctx, projcurve_model *model,
                                       const pc_io_surface *s, const char *origin);
+/* The same with the surface's kind (a static string). */
+projcurve_status pc_model_add_surface_kind(projcurve_context *ctx, projcurve_model *model,
+                                           const pc_io_surface *s, const char *origin,
+                                           const char *kind);
 projcurve_status pc_model_add_curve(projcurve_context *ctx, projcurve_model *model,
                                     const pc_io_curve *c, const char *origin);
 

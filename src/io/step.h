@@ -61,6 +61,9 @@ typedef struct pc_step_file {
      * references to one large instance from taking quadratic time. */
     size_t *work_done;
     size_t work_limit;
+    /* The plane angle unit of the geometric context in radians (1 unless
+     * the file says degrees), set by pc_step_read_units. */
+    double radians_per_angle_unit;
 } pc_step_file;
 
 /* Indexes the DATA section (step_lexer.c). instances is malloc'ed: release
@@ -81,7 +84,18 @@ int pc_step_is(const pc_step_node *n, const char *name);
  * if it is simple and so named; NULL otherwise. */
 const pc_step_node *pc_step_part(const pc_step_node *inst, const char *name);
 
-/* Reads the geometry of the file into the model (step_read.c). */
+/* Reads the length unit, the plane angle unit and the distance precision
+ * of the first geometric context that states them (step_units.c) into the
+ * model and f->radians_per_angle_unit. */
+projcurve_status pc_step_read_units(pc_step_file *f, projcurve_model *model);
+
+/* Reads the geometry of the file into the model (step_read.c): B-spline
+ * surfaces and curves in file order, then the analytic surfaces. */
 projcurve_status pc_step_read_geometry(pc_step_file *f, projcurve_model *model);
+
+/* Reads every analytic surface (PLANE, CYLINDRICAL_SURFACE, ...) into the
+ * model as an exact NURBS, an unbounded one over the box of the faces that
+ * use it (step_analytic.c). */
+projcurve_status pc_step_read_analytic(pc_step_file *f, projcurve_model *model);
 
 #endif /* PC_IO_STEP_H */

@@ -16,6 +16,7 @@
 #include "common/error.h"
 #include "io/io_geom.h"
 #include "io/step.h"
+#include "io/step_geom.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -410,14 +411,35 @@ static projcurve_status circle_frame(const reader *r, const located *c, double o
     return PROJCURVE_OK;
 }
 
+/* ELLIPSE('', placement, semi_axis_1, semi_axis_2), or a CIRCLE (a = b). */
+static projcurve_status conic_frame(const reader *r, const located *c, double o[3], double x[3],
+                                    double y[3], double *a, double *b, const char **skip)
+{
+    if (pc_step_is(c->node, "CIRCLE")) {
+        projcurve_status st = circle_frame(r, c, o, x, y, a, skip);
+        *b = *a;
+        return st;
+    }
+    const pc_step_node *n1 = pc_step_child(c->node, 2), *n2 = pc_step_child(c->node, 3);
+    projcurve_status st = placement(r, c->inst, pc_step_child(c->node, 1), o, x, y, skip);
+    if (st != PROJCURVE_OK || *skip != NULL)
+        return st;
+    if (n1 == NULL || n1->kind != PC_STEP_NUMBER || !(n1->number > 0.0) || !isfinite(n1->number) ||
+        n2 == NULL || n2->kind != PC_STEP_NUMBER || !(n2->number > 0.0) || !isfinite(n2->number))
+        return bad(r, c->inst, "ellipse semi-axes are not positive numbers");
+    *a = n1->number;
+    *b = n2->number;
+    return PROJCURVE_OK;
+}
+
 static projcurve_status full_circle(const reader *r, const located *c, pc_io_curve *out,
                                     const char **skip)
 {
-    double o[3], x[3], y[3], radius;
-    projcurve_status st = circle_frame(r, c, o, x, y, &radius, skip);
+    double o[3], x[3], y[3], a = 0.0, b = 0.0;
+    projcurve_status st = conic_frame(r, c, o, x, y, &a, &b, skip);
     if (st != PROJCURVE_OK || *skip != NULL)
         return st;
-    return pc_io_arc_curve(r->f->ctx, r->arena, o, x, y, radius, 0.0, 2.0 * M_PI, out);
+    return pc_ellipse_arc(r->f->ctx, r->arena, o, x, y, a, b, 0.0, 2.0 * M_PI, out);
 }
 
 /* LINE('', pnt, VECTOR('', DIRECTION, magnitude)): P(t) = pnt + t m d. */
@@ -518,17 +540,20 @@ static projcurve_status trimmed_curve(const reader *r, const located *tc, pc_io_
                     p[k][c] = o[c] + t[k] * v[c];
         return pc_io_line_curve(r->f->ctx, r->arena, p[0], p[1], out);
     }
-    if (pc_step_is(basis.node, "CIRCLE")) {
-        double o[3], x[3], y[3], radius;
-        if ((st = circle_frame(r, &basis, o, x, y, &radius, skip)) != PROJCURVE_OK || *skip)
+    if (pc_step_is(basis.node, "CIRCLE") || pc_step_is(basis.node, "ELLIPSE")) {
+        double o[3], x[3], y[3], ea = 0.0, eb = 0.0;
+        if ((st = conic_frame(r, &basis, o, x, y, &ea, &eb, skip)) != PROJCURVE_OK || *skip)
             return st;
         for (size_t k = 0; k < 2; ++k)
-            if (!hp[k]) {
+            if (hp[k]) {
+                t[k] *= r->f->radians_per_angle_unit > 0.0 ? r->f->radians_per_angle_unit : 1.0;
+            } else {
+                /* the parameter t of o + a cos t x + b sin t y through the point */
                 double d[3];
                 for (int c = 0; c < 3; ++c)
                     d[c] = p[k][c] - o[c];
-                t[k] = atan2(d[0] * y[0] + d[1] * y[1] + d[2] * y[2],
-                             d[0] * x[0] + d[1] * x[1] + d[2] * x[2]);
+                t[k] = atan2((d[0] * y[0] + d[1] * y[1] + d[2] * y[2]) / eb,
+                             (d[0] * x[0] + d[1] * x[1] + d[2] * x[2]) / ea);
             }
         for (size_t k = 0; k < 2; ++k)
             if (!(fabs(t[k]) <= PC_STEP_MAX_ANGLE))
@@ -540,7 +565,7 @@ static projcurve_status trimmed_curve(const reader *r, const located *tc, pc_io_
         if (sweep <= 0.0)
             sweep += 2.0 * M_PI;
         const double a1 = a0 + sweep;
-        st = pc_io_arc_curve(r->f->ctx, r->arena, o, x, y, radius, a0, a1, out);
+        st = pc_ellipse_arc(r->f->ctx, r->arena, o, x, y, ea, eb, a0, a1, out);
         if (st == PROJCURVE_OK && !forward)
             reverse_curve(out);
         return st;
@@ -569,10 +594,8 @@ static projcurve_status trimmed_curve(const reader *r, const located *tc, pc_io_
 
 /* Geometry types that are recognised but not converted. */
 static const char *const listed_types[] = {
-    "PLANE", "CYLINDRICAL_SURFACE", "CONICAL_SURFACE", "SPHERICAL_SURFACE", "TOROIDAL_SURFACE",
-    "DEGENERATE_TOROIDAL_SURFACE", "SURFACE_OF_REVOLUTION", "SURFACE_OF_LINEAR_EXTRUSION",
     "OFFSET_SURFACE", "RECTANGULAR_TRIMMED_SURFACE", "CURVE_BOUNDED_SURFACE",
-    "RECTANGULAR_COMPOSITE_SURFACE", "ELLIPSE", "HYPERBOLA", "PARABOLA", "POLYLINE",
+    "RECTANGULAR_COMPOSITE_SURFACE", "HYPERBOLA", "PARABOLA", "POLYLINE",
     "OFFSET_CURVE_3D", "COMPOSITE_CURVE", "LINE"};
 
 /* The entity name of a simple instance (without parsing it). */
@@ -607,7 +630,7 @@ static int interesting(const char *name)
 {
     return strstr(name, "B_SPLINE_") != NULL || strstr(name, "BEZIER_") == name ||
            strstr(name, "UNIFORM_") != NULL || strcmp(name, "CIRCLE") == 0 ||
-           strcmp(name, "TRIMMED_CURVE") == 0;
+           strcmp(name, "ELLIPSE") == 0 || strcmp(name, "TRIMMED_CURVE") == 0;
 }
 
 static projcurve_status read_instance(reader *r, const pc_step_instance *inst, const char *name)
@@ -637,12 +660,13 @@ static projcurve_status read_instance(reader *r, const pc_step_instance *inst, c
             if (st == PROJCURVE_OK && skip == NULL)
                 return pc_model_add_curve(r->f->ctx, r->model, &c, origin);
         }
-    } else if (pc_step_is(node, "CIRCLE") || pc_step_is(node, "TRIMMED_CURVE")) {
+    } else if (pc_step_is(node, "CIRCLE") || pc_step_is(node, "ELLIPSE") ||
+               pc_step_is(node, "TRIMMED_CURVE")) {
         if (is_trim_basis(r, inst->id))
             return PROJCURVE_OK;
         pc_io_curve c;
-        st = pc_step_is(node, "CIRCLE") ? full_circle(r, &loc, &c, &skip)
-                                        : trimmed_curve(r, &loc, &c, &skip);
+        st = !pc_step_is(node, "TRIMMED_CURVE") ? full_circle(r, &loc, &c, &skip)
+                                                 : trimmed_curve(r, &loc, &c, &skip);
         if (st == PROJCURVE_OK && skip == NULL)
             return pc_model_add_curve(r->f->ctx, r->model, &c, origin);
     } else {
@@ -711,6 +735,9 @@ projcurve_status pc_step_read_geometry(pc_step_file *f, projcurve_model *model)
     }
     free(r.trim_bases);
     pc_arena_release(&arena);
+    /* The analytic surfaces after the B-spline ones (io_model.h). */
+    if (st == PROJCURVE_OK)
+        st = pc_step_read_analytic(f, model);
     return st;
 }
 
@@ -719,10 +746,101 @@ projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t l
 {
     size_t work_done = 0;
     pc_step_file f = {.ctx = ctx, .text = data, .len = len, .work_done = &work_done,
-                      .work_limit = PC_STEP_WORK_FACTOR * len + PC_STEP_WORK_MIN};
+                      .work_limit = PC_STEP_WORK_FACTOR * len + PC_STEP_WORK_MIN,
+                      .radians_per_angle_unit = 1.0};
     projcurve_status st = pc_step_index(&f);
+    if (st == PROJCURVE_OK)
+        st = pc_step_read_units(&f, model);
     if (st == PROJCURVE_OK)
         st = pc_step_read_geometry(&f, model);
     pc_step_index_free(&f);
     return st;
+}
+
+/* ---- shared with the other STEP readers (step_geom.h) ---------------------- */
+
+projcurve_status pc_step_bad(const pc_step_file *f, const pc_step_instance *at, const char *what)
+{
+    const reader r = {.f = (pc_step_file *)f};
+    return bad(&r, at, what);
+}
+
+projcurve_status pc_step_resolve(pc_step_file *f, pc_arena *arena, const pc_step_instance *from,
+                                 const pc_step_node *ref, pc_step_located *out)
+{
+    const reader r = {.f = f, .arena = arena};
+    located loc = {NULL, NULL};
+    const projcurve_status st = resolve(&r, from, ref, &loc);
+    out->inst = loc.inst;
+    out->node = loc.node;
+    return st;
+}
+
+projcurve_status pc_step_point(pc_step_file *f, pc_arena *arena, const pc_step_instance *from,
+                               const pc_step_node *ref, double p[3])
+{
+    const reader r = {.f = f, .arena = arena};
+    size_t dim = 0;
+    return point(&r, from, ref, p, &dim);
+}
+
+projcurve_status pc_step_direction(pc_step_file *f, pc_arena *arena,
+                                   const pc_step_instance *from, const pc_step_node *ref,
+                                   double d[3])
+{
+    const reader r = {.f = f, .arena = arena};
+    return direction(&r, from, ref, "DIRECTION", d);
+}
+
+projcurve_status pc_step_placement(pc_step_file *f, pc_arena *arena,
+                                   const pc_step_instance *from, const pc_step_node *ref,
+                                   double o[3], double x[3], double y[3], const char **skip)
+{
+    const reader r = {.f = f, .arena = arena};
+    return placement(&r, from, ref, o, x, y, skip);
+}
+
+projcurve_status pc_step_curve(pc_step_file *f, pc_arena *arena, const pc_step_located *c,
+                               pc_io_curve *out, pc_angle_map *map, const char **skip)
+{
+    const reader r = {.f = f, .arena = arena};
+    const located loc = {c->inst, c->node};
+    *skip = NULL;
+    if (map != NULL)
+        *map = (pc_angle_map){.is_angle = 0};
+    bspline_nodes b;
+    if (bspline_parts(c->node, &b) && b.dim == 1)
+        return bspline_curve(&r, c->inst, &b, out, skip);
+    if (pc_step_is(c->node, "CIRCLE") || pc_step_is(c->node, "ELLIPSE")) {
+        if (map != NULL)
+            *map = pc_angle_map_make(0.0, 2.0 * M_PI);
+        return full_circle(&r, &loc, out, skip);
+    }
+    if (pc_step_is(c->node, "TRIMMED_CURVE"))
+        return trimmed_curve(&r, &loc, out, skip);
+    *skip = "a curve of an unsupported type";
+    return PROJCURVE_OK;
+}
+
+size_t pc_step_name(const pc_step_file *f, const pc_step_instance *inst, char name[PC_STEP_MAX_NAME])
+{
+    return simple_name(f, inst, name);
+}
+
+projcurve_status pc_step_conic(pc_step_file *f, pc_arena *arena, const pc_step_located *c,
+                               double o[3], double x[3], double y[3], double *a, double *b,
+                               const char **skip)
+{
+    const reader r = {.f = f, .arena = arena};
+    const located loc = {c->inst, c->node};
+    *skip = NULL;
+    return conic_frame(&r, &loc, o, x, y, a, b, skip);
+}
+
+projcurve_status pc_step_line(pc_step_file *f, pc_arena *arena, const pc_step_located *l,
+                              double o[3], double v[3])
+{
+    const reader r = {.f = f, .arena = arena};
+    const located loc = {l->inst, l->node};
+    return line_frame(&r, &loc, o, v);
 }

@@ -9,6 +9,11 @@ Each format is read only as far as these numbers need:
           parameter range (U(0), U(1), V(0), V(1)) the surface is cut to;
   STEP    B_SPLINE_SURFACE_WITH_KNOTS (simple or inside a complex
           entity): the degrees, the knot multiplicities and the knots;
+          then the analytic surfaces, which the reader turns into exact
+          NURBS after the B-splines: a plane is bilinear (1 x 1 span), a
+          full turn is four rational quadratic arcs, the sphere's
+          latitude two, a height one linear span; unbounded ones (plane,
+          cylinder, cone) only when a face uses them;
   G+Smo   <Geometry type="TensorBSpline2|TensorNurbs2">: the two
           <KnotVector degree="p"> elements;
   teapot  Newell's text: the patch count (each patch is a bicubic Bezier).
@@ -132,7 +137,23 @@ def step_surfaces(path):
             mu, mv, ku, kv = simple[0:4]
         ku, kv = _expand(_numbers(mu), _numbers(ku)), _expand(_numbers(mv), _numbers(kv))
         out.append((du, dv, spans(ku, du), spans(kv, dv)))
+    used = set()
+    for _, body in _step_instances(text):
+        face = _arguments(body, "ADVANCED_FACE")
+        if face is not None and body.lstrip().startswith("ADVANCED_FACE"):
+            used.add(face[2].strip())
+    for ident, body in _step_instances(text):
+        name = body.lstrip().split("(")[0].strip()
+        if name in ANALYTIC_SHAPES and (name in BOUNDED_ANALYTIC or f"#{ident}" in used):
+            out.append(ANALYTIC_SHAPES[name])
     return out
+
+
+# (degree u, degree v, spans u, spans v) of each analytic surface's NURBS.
+ANALYTIC_SHAPES = {"PLANE": (1, 1, 1, 1), "CYLINDRICAL_SURFACE": (2, 1, 4, 1),
+                   "CONICAL_SURFACE": (2, 1, 4, 1), "SPHERICAL_SURFACE": (2, 2, 4, 2),
+                   "TOROIDAL_SURFACE": (2, 2, 4, 4)}
+BOUNDED_ANALYTIC = {"SPHERICAL_SURFACE", "TOROIDAL_SURFACE"}
 
 
 def gismo_surfaces(path):
