@@ -226,7 +226,13 @@ typedef enum projcurve_option {
      * a segment of the refinement, a fitted piece. The count depends only
      * on the inputs and options, so a call cut by MAX_WORK returns the same
      * partial result (PROJCURVE_ERR_LIMIT_REACHED) on every machine. */
-    PROJCURVE_OPT_MAX_WORK = 15
+    PROJCURVE_OPT_MAX_WORK = 15,
+    /* integer: degree of each branch's compact 3D curve
+     * (projcurve_result_branch_compact_curve), [1, 25], default 5. 25 is
+     * the largest degree Open CASCADE reads (Geom_BSplineCurve). Where
+     * the projection is an affine image of a NURBS curve (onto a plane)
+     * the compact curve keeps the curve's own degree when that is lower. */
+    PROJCURVE_OPT_CURVE_DEGREE = 16
 } projcurve_option;
 
 #define PROJCURVE_FOOT_POINTS_MINIMA 0
@@ -422,6 +428,18 @@ PROJCURVE_API projcurve_status projcurve_surface_info(projcurve_context *ctx,
                                                       size_t *n_u, size_t *n_v,
                                                       size_t *spans_u, size_t *spans_v,
                                                       int *rational);
+
+/* Copies the clamped NURBS data of a surface out (any output may be NULL;
+ * sizes from projcurve_surface_info): ctrl (3 n_u n_v, u fastest), weights
+ * (n_u n_v, all 1 when not rational), knots_u (n_u + deg_u + 1) and
+ * knots_v (n_v + deg_v + 1). Unclamped or periodic input comes back in the
+ * clamped form it was converted to. Statuses: OK, NULL_ARGUMENT.
+ * Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_surface_nurbs_data(projcurve_context *ctx,
+                                                            const projcurve_surface *surface,
+                                                            double *ctrl, double *weights,
+                                                            double *knots_u,
+                                                            double *knots_v);
 
 /* Point and partial derivatives up to total order n_deriv (0..2): out receives
  * S (n_deriv 0), then Su, Sv (1), then Suu, Suv, Svv (2), 3 doubles each.
@@ -737,6 +755,68 @@ PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *
                                                              const projcurve_result *result,
                                                              size_t branch,
                                                              projcurve_curve **out);
+
+/* Compact results. A composing projection (PROJCURVE_OPT_COMPOSE 1) also
+ * gives each branch on a parametric surface two light B-splines over the
+ * branch's curve-parameter range (t increasing, whichever way the branch
+ * was traced), the output meant for CAD systems: what the IGES writer
+ * writes and the projcurve command reports.
+ *
+ * The compact pcurve q(t): one cubic B-spline in (u, v) with as few poles
+ * as it takes for S(q(t)) to lie within eps_D of the exact projection at
+ * the same t, measured against exact points of the projection (20 per
+ * knot span, and the samples it was fitted to). S o q lies exactly on S.
+ * It is C2 but at the knot lines of S that the branch crosses where S is
+ * C^k, k < 2 (there C^k: a knot of multiplicity 3 - k), at the knots of
+ * the curve P where P is C^k, k < 2 (the same), and at the branch's
+ * creases (pieces meeting at more than max(5, 4 eps_T) degrees: C0).
+ * Where the projection is an affine image of the NURBS curve P over its
+ * whole domain (onto an affinely parametrised plane) it is P's own spline
+ * space instead (P's degree, knots and weights, so a circle stays a
+ * circle). When the fit does not meet eps_D within 3 n_pieces + 1 poles
+ * (e.g. where the exact points cannot be had) or the call's budget
+ * stopped it, the pcurve is the pieces' pcurves joined (cubic, knots of
+ * multiplicity 3 at the joins), which verification checked:
+ * projcurve_result_branch_compact_info tells which.
+ *
+ * The compact 3D curve C(t): one polynomial B-spline of degree
+ * PROJCURVE_OPT_CURVE_DEGREE (default 5) with the fewest poles the fit
+ * finds within eps_D of the exact projection at the same t (the same
+ * check); not exactly on S, but within eps_D of it. C^(degree - 1) but at
+ * the same places (C^k there). In P's space too where exact.
+ *
+ * Fitting happens in the projection call, after verification, under its
+ * budget; results stay read-only afterwards (thread-safe). */
+
+/* The compact pcurve of a branch as a new curve handle whose control
+ * points are (u, v, 0) (weights only in P's rational space); release with
+ * projcurve_curve_destroy. Its domain is the branch's t range.
+ * Statuses: OK, NULL_ARGUMENT, INDEX, INVALID_ARGUMENT (no compact forms:
+ * the branch is not composed, or the result is implicit), NO_MEMORY.
+ * Thread-safe (the result is only read). */
+PROJCURVE_API projcurve_status projcurve_result_branch_compact_pcurve(
+    projcurve_context *ctx, const projcurve_result *result, size_t branch,
+    projcurve_curve **out);
+
+/* The compact 3D curve of a branch as a new curve handle; release with
+ * projcurve_curve_destroy. Statuses: OK, NULL_ARGUMENT, INDEX,
+ * INVALID_ARGUMENT (as above), LIMIT_REACHED (the fit found no curve
+ * within eps_D with at most n_pieces * degree + 1 poles, or the call's
+ * budget stopped it: the pieces and the compact pcurve remain), NO_MEMORY.
+ * Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_result_branch_compact_curve(
+    projcurve_context *ctx, const projcurve_result *result, size_t branch,
+    projcurve_curve **out);
+
+/* What the fit of a branch's compact forms measured (outputs may be
+ * NULL): *pcurve_fitted 1 for a fitted pcurve, 0 for the joined pieces'
+ * pcurves; the largest distance of S o q (*pcurve_error) and of the 3D
+ * curve (*curve_error) from the exact projection over the dense check,
+ * model units, -1 where there is no fit. Statuses: OK, NULL_ARGUMENT,
+ * INDEX, INVALID_ARGUMENT (as above). Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_result_branch_compact_info(
+    projcurve_context *ctx, const projcurve_result *result, size_t branch,
+    int *pcurve_fitted, double *pcurve_error, double *curve_error);
 
 /* ======================================================================== */
 /* Files: IGES, STEP and G+Smo XML                                           */

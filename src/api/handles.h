@@ -54,6 +54,7 @@ struct projcurve_options {
     long long foot_points;     /* PROJCURVE_FOOT_POINTS_*: PROJCURVE_OPT_FOOT_POINTS */
     double time_limit;         /* seconds per call, 0 = none: PROJCURVE_OPT_TIME_LIMIT */
     long long max_work;        /* units per call, 0 = none: PROJCURVE_OPT_MAX_WORK */
+    long long curve_degree;    /* of the compact 3D curve: PROJCURVE_OPT_CURVE_DEGREE */
     projcurve_progress_fn progress; /* projcurve_options_set_progress; NULL = none */
     void *progress_user;
     /* Not an option: the budget of the call under way, made from the

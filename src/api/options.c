@@ -71,6 +71,8 @@ static const pc_option_desc pc_option_table[] = {
      0.0, PC_OPTION_TIME_LIMIT, 0, 0.0, PC_FIELD(time_limit)},
     {PROJCURVE_OPT_MAX_WORK, "MAX_WORK", PROJCURVE_OPTION_INTEGER,
      0.0, PC_OPTION_SIZE_LIMIT, 0, 0.0, PC_FIELD(max_work)},
+    {PROJCURVE_OPT_CURVE_DEGREE, "CURVE_DEGREE", PROJCURVE_OPTION_INTEGER,
+     1.0, 25.0, 0, 5.0, PC_FIELD(curve_degree)},
 };
 
 /* Integer options whose bounds admit values that mean nothing: the values

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 
 #include "common/error.h"
+#include "fit/fit.h"
 #include "refine/refine.h"
 #include "trace/directional.h"
 #include "trace/line_seeds.h"
@@ -34,7 +35,8 @@ static const char *const pc_option_names[] = {
     [PROJCURVE_OPT_PCURVE_DEGREE] = "PCURVE_DEGREE",
     [PROJCURVE_OPT_FOOT_POINTS] = "FOOT_POINTS",
     [PROJCURVE_OPT_TIME_LIMIT] = "TIME_LIMIT",
-    [PROJCURVE_OPT_MAX_WORK] = "MAX_WORK"};
+    [PROJCURVE_OPT_MAX_WORK] = "MAX_WORK",
+    [PROJCURVE_OPT_CURVE_DEGREE] = "CURVE_DEGREE"};
 #define PC_OPTION_NAME_COUNT (sizeof pc_option_names / sizeof pc_option_names[0])
 
 projcurve_status pc_options_resolve(projcurve_context *ctx, const projcurve_options *opts,
@@ -85,6 +87,15 @@ projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_o
     if (st == PROJCURVE_OK)
         out->tol_distance = eps_d;
     return st;
+}
+
+projcurve_status pc_project_fit(projcurve_context *ctx, const pc_projector *proj,
+                                const struct projcurve_options *o, projcurve_result *r,
+                                projcurve_status st)
+{
+    pc_budget_stage(o->budget, PC_PROJECT_FIT_FROM, 1.0);
+    const projcurve_status fs = pc_fit_result(ctx, proj, o, r);
+    return fs == PROJCURVE_ERR_NO_MEMORY || (fs != PROJCURVE_OK && st == PROJCURVE_OK) ? fs : st;
 }
 
 void pc_projection_budget(pc_budget *b, struct projcurve_options *o)
@@ -207,7 +218,7 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
      * MAX_POINTS; not once the budget is spent (the traced polylines stay) */
     if (o.compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED) &&
         pc_budget_status(&budget) == PROJCURVE_OK) {
-        pc_budget_stage(&budget, 0.5, 1.0);
+        pc_budget_stage(&budget, 0.5, PC_PROJECT_FIT_FROM);
         const projcurve_status cs = pc_refine_and_compose(ctx, &proj, &o, r);
         if (cs != PROJCURVE_OK)
             st = cs;
@@ -218,6 +229,8 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
         if (vs != PROJCURVE_OK)
             st = vs;
     }
+    if (o.compose && pc_status_keeps_result(st))
+        st = pc_project_fit(ctx, &proj, &o, r, st);
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     if (finder.no_memory && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))

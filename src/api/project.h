@@ -6,6 +6,7 @@
 #define PC_API_PROJECT_H
 
 #include "api/handles.h"
+#include "trace/projector.h"
 
 /* Copies opts (defaults when NULL) into *out after checking every value
  * against the bounds projcurve_option_info tells (a handle can only hold
@@ -23,6 +24,18 @@ projcurve_status pc_projection_options(projcurve_context *ctx, const projcurve_o
 /* Makes the call's budget from o's TIME_LIMIT, MAX_WORK and progress
  * callback and points o->budget at it (o: the call's resolved copy). */
 void pc_projection_budget(pc_budget *b, struct projcurve_options *o);
+
+/* The progress fraction where composing ends and fitting the compact
+ * forms begins (fit/), in a composing projection. */
+#define PC_PROJECT_FIT_FROM 0.9
+
+/* The compact forms of r's branches (pc_fit_result), in the budget's
+ * stage [PC_PROJECT_FIT_FROM, 1], after verification; st is the call's
+ * status so far, returned unless the fit fails (NO_MEMORY always wins,
+ * a budget stop only over OK). */
+projcurve_status pc_project_fit(projcurve_context *ctx, const pc_projector *proj,
+                                const struct projcurve_options *o, projcurve_result *r,
+                                projcurve_status st);
 
 /* 1 for the statuses with which a projection still returns its result:
  * OK and the partial results of LIMIT_REACHED and CANCELLED. */

@@ -75,7 +75,7 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
         name_singular_ends(r);
         r->stats.tol_distance = o.tol_distance;
         if (o.compose && pc_budget_status(&budget) == PROJCURVE_OK) {
-            pc_budget_stage(&budget, 0.5, 1.0);
+            pc_budget_stage(&budget, 0.5, PC_PROJECT_FIT_FROM);
             status = pc_refine_and_compose(ctx, &proj, &o, r);
         }
     }
@@ -85,6 +85,8 @@ projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
         if (vs != PROJCURVE_OK)
             status = vs;
     }
+    if (o.compose && pc_status_keeps_result(status))
+        status = pc_project_fit(ctx, &proj, &o, r, status);
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */
     if (cache.callback_failed && pc_status_keeps_result(status))

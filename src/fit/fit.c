@@ -1,0 +1,148 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * The driver of the compact fits (fit.h): per branch, the exact samples,
+ * the features, then the pcurve and the 3D curve, each first in the
+ * curve's own space (own_space.h), else by adaptive least squares
+ * (adaptive.h) over knots at the features.
+ */
+#include "fit/fit.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "common/error.h"
+#include "fit/features.h"
+#include "fit/joined.h"
+#include "fit/own_space.h"
+
+/* The samples are fitted to this fraction of eps_D, and the dense check
+ * accepts up to PC_FIT_LIMIT of it: the margin covers what lies between
+ * check points (20 per span, where the error profile is smooth) and the
+ * rounding of the corrector's points. */
+#define PC_FIT_TARGET 0.5
+#define PC_FIT_LIMIT 0.8
+/* Exact points inside each piece to start from (its ends are exact). */
+#define PC_FIT_INNER_SAMPLES 2
+/* Pieces meet at a crease when their tangents differ by more than this
+ * many times eps_T (the refinement keeps smooth joints within eps_T), and
+ * at least PC_FIT_CREASE_MIN_DEG. */
+#define PC_FIT_CREASE_FACTOR 4.0
+#define PC_FIT_CREASE_MIN_DEG 5.0
+/* The pole bound of a fit: the poles of the pieces joined (3 per piece for
+ * the pcurve, degree per piece for the 3D curve) plus these. The spare
+ * poles matter where a few long pieces cover a stretch that the fit, at
+ * the same t, must follow more closely: a straight piece ending at a
+ * fold, where q(t) behaves as a square root. */
+#define PC_FIT_SPARE_POLES 256
+
+/* The clamped knot vector of degree p over [t_lo, t_hi] with a knot of
+ * multiplicity p - continuity (at least 1) at every feature where that is
+ * positive. *out is malloc'd. */
+static projcurve_status feature_knots(projcurve_context *ctx, const pc_fit_branch *fb,
+                                      const pc_fit_features *f, int p, double **out,
+                                      size_t *n_out)
+{
+    double *k = malloc((2 * (size_t)(p + 1) + f->count * (size_t)p) * sizeof *k);
+    if (k == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit");
+    size_t n = 0;
+    for (int i = 0; i <= p; ++i)
+        k[n++] = fb->t_lo;
+    for (size_t j = 0; j < f->count; ++j) {
+        const int mult = p - (f->items[j].continuity < 0 ? 0 : f->items[j].continuity);
+        for (int i = 0; i < mult; ++i)
+            k[n++] = f->items[j].t;
+    }
+    for (int i = 0; i <= p; ++i)
+        k[n++] = fb->t_hi;
+    *out = k;
+    *n_out = n;
+    return PROJCURVE_OK;
+}
+
+/* One compact form: the curve's own space, else the adaptive fit. */
+static projcurve_status fit_one(projcurve_context *ctx, pc_fit_branch *fb,
+                                const pc_fit_features *f, pc_fit_samples *data, int dim,
+                                int degree, size_t max_poles, double eps_d, pc_fit_curve *out,
+                                int *ok)
+{
+    const double target = PC_FIT_TARGET * eps_d, limit = PC_FIT_LIMIT * eps_d;
+    const int own_max = dim == 2 ? PROJCURVE_MAX_DEGREE : degree;
+    projcurve_status st = pc_fit_own_space(ctx, fb, dim, own_max, target, limit, data, out, ok);
+    if (st != PROJCURVE_OK || *ok)
+        return st;
+    double *knots = NULL;
+    size_t n_knots = 0;
+    st = feature_knots(ctx, fb, f, degree, &knots, &n_knots);
+    if (st != PROJCURVE_OK)
+        return st;
+    const pc_fit_goal goal = {degree, dim, target, limit, max_poles, 1};
+    st = pc_fit_adaptive(ctx, fb, &goal, knots, n_knots, NULL, data, out, ok);
+    free(knots);
+    return st;
+}
+
+static projcurve_status keep(projcurve_context *ctx, pc_bspline *dst, const pc_fit_curve *c)
+{
+    return pc_bspline_set(ctx, dst, c->degree, c->dim, c->n_poles, c->knots, c->poles,
+                          c->weights);
+}
+
+/* The pcurve and the 3D curve of one branch. */
+static projcurve_status fit_branch(projcurve_context *ctx, pc_fit_branch *fb,
+                                   const struct projcurve_options *opts, pc_branch *b)
+{
+    const double eps_d = opts->tol_distance;
+    const size_t np = b->n_pieces;
+    pc_fit_features f = {NULL, 0};
+    pc_fit_samples data = {NULL, 0, 0, 0};
+    pc_fit_curve pcurve = {0}, curve = {0};
+    int complete = 0, have_pcurve = 0, have_curve = 0;
+    const double crease =
+        fmax(PC_FIT_CREASE_MIN_DEG, PC_FIT_CREASE_FACTOR * opts->tol_angle_deg);
+    projcurve_status st = pc_fit_features_find(ctx, fb, crease, &f);
+    if (st == PROJCURVE_OK)
+        st = pc_fit_samples_from_pieces(ctx, fb, PC_FIT_INNER_SAMPLES, &data, &complete);
+    if (st == PROJCURVE_OK && complete)
+        st = fit_one(ctx, fb, &f, &data, 2, PC_FIT_PCURVE_DEGREE,
+                     3 * np + 1 + PC_FIT_SPARE_POLES, eps_d, &pcurve, &have_pcurve);
+    if (st == PROJCURVE_OK && complete) {
+        const int d = (int)opts->curve_degree;
+        st = fit_one(ctx, fb, &f, &data, 3, d, np * (size_t)d + 1 + PC_FIT_SPARE_POLES, eps_d,
+                     &curve, &have_curve);
+    }
+    b->compact = have_pcurve ? PC_COMPACT_FITTED : PC_COMPACT_JOINED;
+    if (st == PROJCURVE_OK && !have_pcurve)
+        st = pc_fit_joined_pcurve(ctx, fb, &pcurve);
+    if (st == PROJCURVE_OK)
+        st = keep(ctx, &b->compact_pcurve, &pcurve);
+    b->compact_pcurve_error = have_pcurve ? pcurve.error : -1.0;
+    if (st == PROJCURVE_OK && have_curve)
+        st = keep(ctx, &b->compact_curve, &curve);
+    b->compact_curve_error = have_curve ? curve.error : -1.0;
+    if (st != PROJCURVE_OK)
+        b->compact = PC_COMPACT_NONE;
+    pc_fit_curve_free(&pcurve);
+    pc_fit_curve_free(&curve);
+    pc_fit_samples_free(&data);
+    pc_fit_features_free(&f);
+    return st;
+}
+
+projcurve_status pc_fit_result(projcurve_context *ctx, const pc_projector *proj,
+                               const struct projcurve_options *opts, projcurve_result *r)
+{
+    if (r->point_dim != 3)
+        return PROJCURVE_OK;
+    projcurve_status st = PROJCURVE_OK;
+    for (size_t i = 0; st == PROJCURVE_OK && i < r->n_branches; ++i) {
+        pc_fit_branch fb;
+        if (!pc_fit_branch_init(&fb, proj, &r->branches[i], opts->budget))
+            continue;
+        fb.progress = (double)i / (double)r->n_branches;
+        st = fit_branch(ctx, &fb, opts, &r->branches[i]);
+    }
+    if (st == PROJCURVE_OK)
+        st = pc_budget_fail(opts->budget, ctx);
+    return st;
+}
