@@ -878,14 +878,27 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_add_surface(projcurve_conte
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_curve(projcurve_context *ctx,
                                                                projcurve_iges_writer *w,
                                                                const projcurve_curve *c);
-/* Adds every composed branch of a projection result onto s: a 3D curve (126)
- * and a curve on surface (142) with its 2D pcurve; s is written too if it
- * was not added before. Statuses: OK, NULL_ARGUMENT, INVALID_ARGUMENT,
- * NO_MEMORY. */
+/* Adds every branch of a projection result onto s: a 3D curve (126) and a
+ * curve on surface (142, preference 3: both describe the projection) with
+ * its 2D pcurve (126 in z = 0, status "parametric"); s is written too if it
+ * was not added before. A composed branch is written in its compact forms
+ * (projcurve_result_branch_compact_pcurve and _compact_curve, each within
+ * eps_D of the projection, of degree at most 25; where the compact 3D curve
+ * is missing, the pieces joined); a branch not composed as its traced
+ * points (a degree-1 pcurve, no 3D curve). Statuses: OK, NULL_ARGUMENT,
+ * INVALID_ARGUMENT, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
                                                                 projcurve_iges_writer *w,
                                                                 const projcurve_surface *s,
                                                                 const projcurve_result *r);
+/* The same with the composed pieces: the 3D curve is the pieces joined
+ * (projcurve_result_branch_curve) and the pcurve their pcurves joined, so
+ * that S composed with the pcurve is the 3D curve exactly (degree p + q,
+ * or 3 (p + q) with cubic pcurves; hundreds of pieces). Statuses: those of
+ * projcurve_iges_writer_add_result. */
+PROJCURVE_API projcurve_status projcurve_iges_writer_add_result_pieces(
+    projcurve_context *ctx, projcurve_iges_writer *w, const projcurve_surface *s,
+    const projcurve_result *r);
 /* Writes the file. Statuses: OK, NULL_ARGUMENT, IO, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,
                                                            const projcurve_iges_writer *w,

@@ -2,10 +2,12 @@
 /*
  * Public IGES writer: surfaces (128), curves (126) and projection results,
  * each composed branch as its 3D curve (126), its (u, v) pcurve (126 in the
- * plane z = 0: the pieces' pcurves joined, so that S composed with it is the
- * 3D curve; the traced points as a polyline for a branch not composed) and a
- * curve on surface (142, "projection of a curve onto the surface") tying
- * them to the surface. A surface is written once however often it is added (entities
+ * plane z = 0) and a curve on surface (142, "projection of a curve onto the
+ * surface") tying them to the surface. The compact forms by default (fit/:
+ * S composed with the pcurve and the 3D curve are each within eps_D of the
+ * projection); on request the pieces (their pcurves joined, so that S
+ * composed with it is the 3D curve exactly). The traced points as a
+ * polyline for a branch not composed. A surface is written once however often it is added (entities
  * are compared by their parameter text, i.e. exactly).
  */
 #include <stdlib.h>
@@ -150,13 +152,18 @@ cleanup:
     return st;
 }
 
-/* The pcurve of a composed branch (its pieces' (u, v) curves joined), or
- * of one that is not composed (its traced points). */
+/* The pcurve of a composed branch (compact, or its pieces' (u, v) curves
+ * joined), or of one that is not composed (its traced points). */
 static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
-                                   const projcurve_result *r, size_t branch, size_t *de)
+                                   const projcurve_result *r, size_t branch, int compact,
+                                   size_t *de)
 {
     projcurve_curve *pcurve = NULL;
-    projcurve_status st = pc_branch_pcurve(ctx, r, branch, &pcurve);
+    projcurve_status st = PROJCURVE_ERR_INVALID_ARGUMENT;
+    if (compact)
+        st = projcurve_result_branch_compact_pcurve(NULL, r, branch, &pcurve);
+    if (st == PROJCURVE_ERR_INVALID_ARGUMENT) /* no compact forms: the pieces' */
+        st = pc_branch_pcurve(ctx, r, branch, &pcurve);
     if (st == PROJCURVE_ERR_INVALID_ARGUMENT)
         return add_traced_pcurve(ctx, w, r, branch, de);
     if (st != PROJCURVE_OK)
@@ -170,14 +177,21 @@ static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer
 }
 
 static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer *w,
-                                   size_t surface_de, const projcurve_result *r, size_t branch)
+                                   size_t surface_de, const projcurve_result *r, size_t branch,
+                                   int compact)
 {
     size_t pcurve_de = 0, curve_de = 0;
-    projcurve_status st = add_pcurve(ctx, w, r, branch, &pcurve_de);
+    projcurve_status st = add_pcurve(ctx, w, r, branch, compact, &pcurve_de);
     if (st != PROJCURVE_OK)
         return st;
     projcurve_curve *c = NULL;
-    st = projcurve_result_branch_curve(ctx, r, branch, &c);
+    st = PROJCURVE_ERR_LIMIT_REACHED;
+    if (compact)
+        st = projcurve_result_branch_compact_curve(NULL, r, branch, &c);
+    /* no compact 3D curve (its fit hit its bound, or no compact forms):
+     * the pieces joined */
+    if (st == PROJCURVE_ERR_LIMIT_REACHED || st == PROJCURVE_ERR_INVALID_ARGUMENT)
+        st = projcurve_result_branch_curve(ctx, r, branch, &c);
     if (st == PROJCURVE_OK) {
         st = add_curve(ctx, w, c, PC_IGES_STATUS_PART, &curve_de);
         projcurve_curve_destroy(c);
@@ -200,10 +214,9 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
     return st;
 }
 
-projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
-                                                  projcurve_iges_writer *w,
-                                                  const projcurve_surface *s,
-                                                  const projcurve_result *r)
+static projcurve_status add_result(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   const projcurve_surface *s, const projcurve_result *r,
+                                   int compact)
 {
     PC_REQUIRE(ctx, w, "writer");
     PC_REQUIRE(ctx, s, "surface");
@@ -215,8 +228,24 @@ projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
     projcurve_status st = add_surface(ctx, w, s, &surface_de);
     const size_t n = projcurve_result_branch_count(r);
     for (size_t b = 0; st == PROJCURVE_OK && b < n; ++b)
-        st = add_branch(ctx, w, surface_de, r, b);
+        st = add_branch(ctx, w, surface_de, r, b, compact);
     return st;
+}
+
+projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
+                                                  projcurve_iges_writer *w,
+                                                  const projcurve_surface *s,
+                                                  const projcurve_result *r)
+{
+    return add_result(ctx, w, s, r, 1);
+}
+
+projcurve_status projcurve_iges_writer_add_result_pieces(projcurve_context *ctx,
+                                                         projcurve_iges_writer *w,
+                                                         const projcurve_surface *s,
+                                                         const projcurve_result *r)
+{
+    return add_result(ctx, w, s, r, 0);
 }
 
 projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,
