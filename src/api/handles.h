@@ -67,6 +67,10 @@ struct projcurve_options {
      * full search), so that tests can show what the criteria alone find.
      * 0 (the default) in every projection a caller can ask for. */
     long long sweep_criteria_only;
+    /* No option key, not in the public API: 0 skips the compact fits
+     * (fit/), so that the benchmark can time what they add. 1 (the
+     * default) in every projection a caller can ask for. */
+    long long compact;
 };
 
 /* Fills o with every default (used when the caller passes NULL options). */

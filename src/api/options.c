@@ -182,6 +182,7 @@ void pc_options_defaults(struct projcurve_options *o)
             *pc_option_int(o, d) = (long long)d->default_value;
     }
     o->sweep_criteria_only = 0;
+    o->compact = 1;
     o->progress = NULL;
     o->progress_user = NULL;
     o->budget = NULL;

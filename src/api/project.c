@@ -94,6 +94,8 @@ projcurve_status pc_project_fit(projcurve_context *ctx, const pc_projector *proj
                                 projcurve_status st)
 {
     pc_budget_stage(o->budget, PC_PROJECT_FIT_FROM, 1.0);
+    if (!o->compact)
+        return st;
     const projcurve_status fs = pc_fit_result(ctx, proj, o, r);
     return fs == PROJCURVE_ERR_NO_MEMORY || (fs != PROJCURVE_OK && st == PROJCURVE_OK) ? fs : st;
 }

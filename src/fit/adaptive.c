@@ -13,6 +13,8 @@
 /* Samples each span needs before a fit: at least this many, and together
  * twice the poles (least squares, not interpolation). */
 #define PC_FIT_MIN_PER_SPAN 4
+/* Neighbouring spans differ in width by at most about this factor. */
+#define PC_FIT_GRADE 4.0
 /* A span narrower than this fraction of the branch is not cut: the curve
  * parameter's rounding. */
 #define PC_FIT_MIN_SPAN_REL 1e-10
@@ -250,6 +252,26 @@ static projcurve_status cut_spans(fit_state *f, double above, int *ok)
             extra += (size_t)(k - 1);
             f->err[j] = -(double)k; /* remembered for the pass below */
         }
+    /* Grading: a neighbour of a cut span wider than PC_FIT_GRADE times the
+     * new spans is cut in two as well. The poles of a span also shape its
+     * neighbours: where a wide span's least-squares line bends the shared
+     * poles, the error shows in the short span beside it, which cutting
+     * alone cannot cure. Only the spans cut for their error (integer marks)
+     * grade their neighbours (-2.5: cut in two, no further grading). */
+    for (size_t j = 0; j + 1 < f->n_brk; ++j) {
+        if (!(f->err[j] < 0.0) || f->err[j] != floor(f->err[j]))
+            continue;
+        const double sub = (f->brk[j + 1] - f->brk[j]) / -f->err[j];
+        for (int side = -1; side <= 1; side += 2) {
+            if ((side < 0 && j == 0) || (side > 0 && j + 2 >= f->n_brk))
+                continue;
+            const size_t n = side < 0 ? j - 1 : j + 1;
+            if (f->err[n] >= 0.0 && f->brk[n + 1] - f->brk[n] > PC_FIT_GRADE * sub) {
+                f->err[n] = -2.5;
+                extra += 1;
+            }
+        }
+    }
     if (f->n_poles + extra > f->goal->max_poles) {
         *ok = 0;
         return PROJCURVE_OK;

@@ -21,8 +21,10 @@
  * rounding of the corrector's points. */
 #define PC_FIT_TARGET 0.5
 #define PC_FIT_LIMIT 0.8
-/* Exact points inside each piece to start from (its ends are exact). */
-#define PC_FIT_INNER_SAMPLES 2
+/* Exact points inside each piece to start from, beyond its ends (exact
+ * vertices already): none, the pieces are dense where the projection
+ * bends, and the fit adds samples to the spans that hold too few. */
+#define PC_FIT_INNER_SAMPLES 0
 /* Pieces meet at a crease when their tangents differ by more than this
  * many times eps_T (the refinement keeps smooth joints within eps_T), and
  * at least PC_FIT_CREASE_MIN_DEG. */
