@@ -840,6 +840,27 @@ PROJCURVE_API projcurve_status projcurve_model_read_memory(projcurve_context *ct
 
 PROJCURVE_API void projcurve_model_destroy(projcurve_model *model);
 
+/* Length units, numbered as the IGES 5.3 unit flag (global parameter 14;
+ * 3, "named in parameter 15", is not used). */
+#define PROJCURVE_UNIT_UNKNOWN 0
+#define PROJCURVE_UNIT_INCH 1
+#define PROJCURVE_UNIT_MM 2
+#define PROJCURVE_UNIT_FOOT 4
+#define PROJCURVE_UNIT_MILE 5
+#define PROJCURVE_UNIT_METRE 6
+#define PROJCURVE_UNIT_KM 7
+#define PROJCURVE_UNIT_MIL 8
+#define PROJCURVE_UNIT_MICRON 9
+#define PROJCURVE_UNIT_CM 10
+#define PROJCURVE_UNIT_MICROINCH 11
+
+/* The length unit the file declares: an IGES file's unit flag, a STEP
+ * file's length unit (SI metres with their prefix, or a conversion-based
+ * inch, foot, mil or mile); PROJCURVE_UNIT_UNKNOWN when it declares none
+ * that is recognised (G+Smo XML never does), and for NULL. Coordinates are
+ * always as the file gives them, in that unit. Thread-safe. */
+PROJCURVE_API int projcurve_model_unit(const projcurve_model *model);
+
 /* Counts (0 for NULL). */
 PROJCURVE_API size_t projcurve_model_surface_count(const projcurve_model *model);
 PROJCURVE_API size_t projcurve_model_curve_count(const projcurve_model *model);
@@ -899,6 +920,15 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_add_result(projcurve_contex
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_result_pieces(
     projcurve_context *ctx, projcurve_iges_writer *w, const projcurve_surface *s,
     const projcurve_result *r);
+/* The length unit the file declares (PROJCURVE_UNIT_INCH ..
+ * PROJCURVE_UNIT_MICROINCH, not 3; the default of a new writer is
+ * PROJCURVE_UNIT_MM): write the unit of the model the geometry came from
+ * (projcurve_model_unit) so that a CAD system imports it at its size.
+ * Nothing is scaled. Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (not a
+ * unit; the writer keeps its unit). */
+PROJCURVE_API projcurve_status projcurve_iges_writer_set_unit(projcurve_context *ctx,
+                                                              projcurve_iges_writer *w,
+                                                              int unit);
 /* Writes the file. Statuses: OK, NULL_ARGUMENT, IO, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,
                                                            const projcurve_iges_writer *w,

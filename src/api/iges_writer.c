@@ -248,6 +248,19 @@ projcurve_status projcurve_iges_writer_add_result_pieces(projcurve_context *ctx,
     return add_result(ctx, w, s, r, 0);
 }
 
+projcurve_status projcurve_iges_writer_set_unit(projcurve_context *ctx,
+                                                projcurve_iges_writer *w, int unit)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    if (unit < PROJCURVE_UNIT_INCH || unit > PROJCURVE_UNIT_MICROINCH || unit == 3)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "unit %d is not a length unit (PROJCURVE_UNIT_INCH .. "
+                       "PROJCURVE_UNIT_MICROINCH, not 3)",
+                       unit);
+    w->out.unit = unit;
+    return PROJCURVE_OK;
+}
+
 projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,
                                              const projcurve_iges_writer *w, const char *path)
 {

@@ -127,6 +127,11 @@ size_t projcurve_model_curve_count(const projcurve_model *model)
     return model ? model->n_curves : 0;
 }
 
+int projcurve_model_unit(const projcurve_model *model)
+{
+    return model ? model->unit : PROJCURVE_UNIT_UNKNOWN;
+}
+
 size_t projcurve_model_skipped_count(const projcurve_model *model)
 {
     return model ? model->n_skipped : 0;

@@ -10,6 +10,8 @@ int cli_write_iges(projcurve_context *ctx, const cli_job *job, const char *path)
     if (projcurve_iges_writer_create(ctx, &w) != PROJCURVE_OK)
         return 0;
     int ok = 1;
+    if (job->unit != PROJCURVE_UNIT_UNKNOWN)
+        ok = projcurve_iges_writer_set_unit(ctx, w, job->unit) == PROJCURVE_OK;
     for (size_t s = 0; ok && s < job->n_surfaces; ++s)
         ok = projcurve_iges_writer_add_surface(ctx, w, job->surfaces[s]) == PROJCURVE_OK;
     for (size_t c = 0; ok && c < job->n_curves; ++c) {

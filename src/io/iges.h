@@ -50,6 +50,7 @@ typedef struct pc_iges_file {
     pc_arena *arena;
     pc_iges_section sec[5]; /* S, G, D, P, T */
     char param_delim, record_delim;
+    int unit; /* global parameter 14, PROJCURVE_UNIT_*; 0 when absent or not one */
     pc_iges_entry *entries;
     size_t n_entries;
     /* Parameter characters tokenised so far and the most allowed: entities
@@ -71,7 +72,8 @@ typedef struct pc_iges_params {
 
 /* Splits the text into sections (iges_records.c). */
 projcurve_status pc_iges_split(pc_iges_file *f, const char *data, size_t len);
-/* Reads the delimiters from the global section (iges_params.c). */
+/* Reads the delimiters and the unit flag from the global section
+ * (iges_params.c). */
 projcurve_status pc_iges_read_global(pc_iges_file *f);
 /* Reads the directory (iges_directory.c). */
 projcurve_status pc_iges_read_directory(pc_iges_file *f);

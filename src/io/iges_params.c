@@ -9,6 +9,11 @@
 
 /* Hollerith lengths beyond this many digits are garbage, not strings. */
 #define PC_IGES_MAX_HOLLERITH_DIGITS 9
+/* Global-section records read for the delimiters and the unit flag
+ * (parameter 14 sits in the first few records of every writer's files). */
+#define PC_IGES_GLOBAL_RECORDS 8
+/* The unit flag is the 14th global parameter (IGES 5.3 s2.2.4.3). */
+#define PC_IGES_GLOBAL_UNIT_FLAG 14
 /* Longest text taken for one number (IGES reals are at most ~30 chars). */
 #define PC_IGES_MAX_NUMBER_TEXT 64
 
@@ -34,10 +39,49 @@ static projcurve_status global_delim(const pc_iges_file *f, const char *g, size_
     return PROJCURVE_OK;
 }
 
+static int hollerith(const char *s, size_t len, size_t *pos, pc_iges_field *field);
+
+/* The unit flag: global parameter 14, counted from pos (just past the
+ * record delimiter field, parameter 2); 0 when it is absent, empty, not an
+ * integer or not a unit (the file is read all the same). */
+static int global_unit(const pc_iges_file *f, const char *g, size_t len, size_t pos)
+{
+    for (int index = 3; pos < len; ++index) {
+        if (g[pos] == f->param_delim)
+            ++pos;
+        while (pos < len && g[pos] == ' ')
+            ++pos;
+        pc_iges_field field = {g + pos, 0};
+        if (!hollerith(g, len, &pos, &field)) {
+            while (pos < len && g[pos] != f->param_delim && g[pos] != f->record_delim)
+                ++field.len, ++pos;
+        }
+        if (index == PC_IGES_GLOBAL_UNIT_FLAG) {
+            char text[16] = {0};
+            if (field.len == 0 || field.len >= sizeof text)
+                return 0;
+            memcpy(text, field.text, field.len);
+            char *end = NULL;
+            const long v = strtol(text, &end, 10);
+            while (*end == ' ')
+                ++end;
+            return *end == '\0' && v >= PROJCURVE_UNIT_INCH && v <= PROJCURVE_UNIT_MICROINCH &&
+                           v != 3
+                       ? (int)v
+                       : 0;
+        }
+        while (pos < len && g[pos] == ' ')
+            ++pos;
+        if (pos >= len || g[pos] == f->record_delim)
+            return 0;
+    }
+    return 0;
+}
+
 projcurve_status pc_iges_read_global(pc_iges_file *f)
 {
     const pc_iges_section *g = &f->sec[1];
-    char head[2 * PC_IGES_DATA_COLUMNS] = {0}; /* only len bytes are read */
+    char head[PC_IGES_GLOBAL_RECORDS * PC_IGES_DATA_COLUMNS] = {0}; /* len bytes read */
     size_t len = 0;
     for (size_t r = 0; r < g->count && len + PC_IGES_DATA_COLUMNS <= sizeof head; ++r) {
         memcpy(head + len, g->records[r], PC_IGES_DATA_COLUMNS);
@@ -56,6 +100,7 @@ projcurve_status pc_iges_read_global(pc_iges_file *f)
         return pc_fail(f->ctx, PROJCURVE_ERR_PARSE,
                        "IGES global section: parameter and record delimiters are both '%c'",
                        f->param_delim);
+    f->unit = global_unit(f, head, len, pos);
     return PROJCURVE_OK;
 }
 

@@ -147,6 +147,8 @@ projcurve_status pc_iges_read(projcurve_context *ctx, const char *data, size_t l
         if (consumed == NULL)
             st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
     }
+    if (st == PROJCURVE_OK)
+        model->unit = f.unit;
     for (size_t i = 0; st == PROJCURVE_OK && i < f.n_entries; ++i)
         st = read_entity(&f, model, i, consumed);
     /* Everything neither read nor used by what was read is listed; 124

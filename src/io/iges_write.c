@@ -114,22 +114,32 @@ static void hollerith(char *out, size_t cap, const char *s)
     snprintf(out, cap, "%zuH%s,", strlen(s), s);
 }
 
-static size_t global_section(sink *s)
+/* The unit names of the global section (parameter 15), by unit flag. */
+static const char *const unit_names[] = {
+    [PROJCURVE_UNIT_INCH] = "IN",  [PROJCURVE_UNIT_MM] = "MM",    [PROJCURVE_UNIT_FOOT] = "FT",
+    [PROJCURVE_UNIT_MILE] = "MI",  [PROJCURVE_UNIT_METRE] = "M",  [PROJCURVE_UNIT_KM] = "KM",
+    [PROJCURVE_UNIT_MIL] = "MIL",  [PROJCURVE_UNIT_MICRON] = "UM", [PROJCURVE_UNIT_CM] = "CM",
+    [PROJCURVE_UNIT_MICROINCH] = "UIN"};
+
+static size_t global_section(sink *s, int unit)
 {
+    if (unit <= 0 || unit >= (int)(sizeof unit_names / sizeof *unit_names) ||
+        unit_names[unit] == NULL)
+        unit = PROJCURVE_UNIT_MM;
     char g[1024], h[6][96];
     hollerith(h[0], sizeof h[0], "libprojcurve model");
     hollerith(h[1], sizeof h[1], "projcurve.igs");
     hollerith(h[2], sizeof h[2], "libprojcurve " PROJCURVE_VERSION_STRING);
     hollerith(h[3], sizeof h[3], "libprojcurve " PROJCURVE_VERSION_STRING);
     hollerith(h[4], sizeof h[4], "20000101.000000");
-    hollerith(h[5], sizeof h[5], "MM");
+    hollerith(h[5], sizeof h[5], unit_names[unit]);
     /* Delimiters, sender id, file, system, preprocessor, integer bits,
-     * single/double precision ranges, receiver id, scale, units (2 = mm),
+     * single/double precision ranges, receiver id, scale, units (flag, name),
      * line weights, max width, date, resolution, max coordinate, author,
      * organisation, IGES version 11 (= 5.3), drafting standard, date. */
     snprintf(g, sizeof g,
-             "1H,,1H;,%s%s%s%s32,38,6,308,15,%s1.,2,%s1,1.,%s1.E-10,0.,,,11,0,%s", h[0],
-             h[1], h[2], h[3], h[0], h[5], h[4], h[4]);
+             "1H,,1H;,%s%s%s%s32,38,6,308,15,%s1.,%d,%s1,1.,%s1.E-10,0.,,,11,0,%s", h[0],
+             h[1], h[2], h[3], h[0], unit, h[5], h[4], h[4]);
     g[strlen(g) - 1] = ';';
     return records(s, g, PC_IGES_G_WIDTH, 'G', 1, 0);
 }
@@ -139,7 +149,7 @@ static projcurve_status layout(projcurve_context *ctx, const pc_iges_out *out, s
     char line[96];
     snprintf(line, sizeof line, "%-72sS%7d\n", "libprojcurve: projected curves on NURBS surfaces", 1);
     put(s, line);
-    const size_t n_g = global_section(s);
+    const size_t n_g = global_section(s, out->unit);
     /* Parameter record counts first: the directory points into P. */
     size_t *p_start = calloc(out->count + 1, sizeof *p_start);
     size_t *p_count = calloc(out->count + 1, sizeof *p_count);

@@ -26,6 +26,7 @@ struct projcurve_model {
     char **skipped;
     size_t n_skipped, cap_skipped;
     size_t n_skipped_unlisted;
+    int unit; /* the file's length unit, PROJCURVE_UNIT_* (0: the file does not say) */
 };
 
 /* An empty model (NULL on allocation failure). */
@@ -55,6 +56,9 @@ projcurve_status pc_iges_read(projcurve_context *ctx, const char *data, size_t l
                               projcurve_model *model);
 projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t len,
                               projcurve_model *model);
+/* The length unit a STEP text declares (step_unit.c), PROJCURVE_UNIT_*;
+ * PROJCURVE_UNIT_UNKNOWN when none is recognised. */
+int pc_step_length_unit(const char *text, size_t len);
 projcurve_status pc_gismo_read(projcurve_context *ctx, const char *data, size_t len,
                                projcurve_model *model);
 projcurve_status pc_teapot_read(projcurve_context *ctx, const char *data, size_t len,

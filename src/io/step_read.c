@@ -723,6 +723,8 @@ projcurve_status pc_step_read(projcurve_context *ctx, const char *data, size_t l
     projcurve_status st = pc_step_index(&f);
     if (st == PROJCURVE_OK)
         st = pc_step_read_geometry(&f, model);
+    if (st == PROJCURVE_OK)
+        model->unit = pc_step_length_unit(data, len);
     pc_step_index_free(&f);
     return st;
 }
