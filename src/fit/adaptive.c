@@ -9,7 +9,11 @@
 #include "fit/lsq.h"
 
 /* Spans cut per round: at least in two, at most in this many. */
-#define PC_FIT_MAX_SPLIT 4
+#define PC_FIT_MAX_SPLIT 8
+/* Samples per pole a fit uses at most: beyond, every k-th (straight
+ * pieces at a tight eps_D give tens of thousands of piece ends for a few
+ * hundred poles; the check, not the samples, decides). */
+#define PC_FIT_SAMPLES_PER_POLE 16
 /* Samples each span needs before a fit: at least this many, and together
  * twice the poles (least squares, not interpolation). */
 #define PC_FIT_MIN_PER_SPAN 4
@@ -18,6 +22,14 @@
 /* A span narrower than this fraction of the branch is not cut: the curve
  * parameter's rounding. */
 #define PC_FIT_MIN_SPAN_REL 1e-10
+
+/* The check points of one span [a, b], PC_FIT_CHECK_PER_SPAN samples of
+ * the check cache from `first`: a span the fit has not cut keeps them, so
+ * a later check measures the new spline there without new exact points. */
+typedef struct check_block {
+    double a, b;
+    size_t first;
+} check_block;
 
 /* Working state of one fit. */
 typedef struct fit_state {
@@ -32,6 +44,9 @@ typedef struct fit_state {
     double *brk;      /* distinct knot values of the domain, n_brk */
     size_t n_brk;
     double *err;      /* worst distance per span (n_brk - 1) */
+    pc_fit_samples cache; /* check points, in blocks (never sorted) */
+    check_block *blocks;
+    size_t n_blocks, cap_blocks;
 } fit_state;
 
 static pc_lsq_space space_of(const fit_state *f)
@@ -40,16 +55,26 @@ static pc_lsq_space space_of(const fit_state *f)
     return sp;
 }
 
-/* The distance of the spline from sample x at x's t. */
-static double distance(fit_state *f, const pc_fit_sample *x, size_t *hint)
+/* The distance of the spline from sample x at x's t; for a pcurve S at
+ * it, evaluated when `exact`, else to first order, |Su du + Sv dv| with
+ * (du, dv) its offset from q(t): the error of that is of the order of
+ * |S''| |dq|^2, far below eps_D where the fit is near, and knots are only
+ * placed by it (the check, which accepts, evaluates S). */
+static double distance(fit_state *f, const pc_fit_sample *x, size_t *hint, int exact)
 {
     const pc_lsq_space sp = space_of(f);
     double c[3];
     pc_lsq_eval(&sp, f->goal->dim, f->poles, x->t, hint, c);
     double y[3] = {c[0], c[1], c[2]};
-    if (f->goal->dim == 2)
+    if (f->goal->dim == 2 && exact) {
         pc_fit_surface_point(f->fb, c, y);
-    return hypot(hypot(y[0] - x->x[0], y[1] - x->x[1]), y[2] - x->x[2]);
+    } else if (f->goal->dim == 2) {
+        const double du = c[0] - x->uv[0], dv = c[1] - x->uv[1];
+        for (int k = 0; k < 3; ++k)
+            y[k] = x->x[k] + x->su[k] * du + x->sv[k] * dv;
+    }
+    const double d[3] = {y[0] - x->x[0], y[1] - x->x[1], y[2] - x->x[2]};
+    return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
 /* The span (index into brk) holding t. */
@@ -130,6 +155,13 @@ static size_t sample_at(const pc_fit_samples *s, double t)
     return lo < s->count && s->items[lo].t == t ? lo : (size_t)-1;
 }
 
+/* The stride through the samples of a fit and an error pass. */
+static size_t sample_stride(const fit_state *f)
+{
+    const size_t most = PC_FIT_SAMPLES_PER_POLE * f->n_poles;
+    return f->data->count > most ? f->data->count / most : 1;
+}
+
 static const double *sample_coords(const fit_state *f, const pc_fit_sample *x)
 {
     return f->goal->dim == 2 ? x->uv : x->x;
@@ -174,9 +206,10 @@ static projcurve_status solve(fit_state *f)
     }
     const pc_lsq_space sp = space_of(f);
     const pc_fit_sample *d0 = f->data->items;
+    const size_t stride = sample_stride(f);
     projcurve_status st = pc_lsq_fit(NULL, &sp, f->goal->dim, &d0->t, sample_coords(f, d0),
-                                     PC_FIT_SAMPLE_STRIDE, f->data->count, idx, val, n_fixed,
-                                     f->poles);
+                                     PC_FIT_SAMPLE_STRIDE * stride, f->data->count / stride, idx,
+                                     val, n_fixed, f->poles);
     free(idx);
     free(val);
     if (st == PROJCURVE_OK && f->goal->dim == 2) { /* q stays in the domain (convex hull) */
@@ -197,9 +230,10 @@ static double sample_errors(fit_state *f)
         f->err[j] = 0.0;
     double worst = 0.0;
     size_t hint = 0;
-    for (size_t i = 0; i < f->data->count; ++i) {
+    const size_t stride = sample_stride(f);
+    for (size_t i = 0; i < f->data->count; i += stride) {
         const pc_fit_sample *x = &f->data->items[i];
-        const double d = distance(f, x, &hint);
+        const double d = distance(f, x, &hint, 0);
         const size_t j = span_of(f, x->t);
         f->err[j] = fmax(f->err[j], d);
         worst = fmax(worst, d);
@@ -207,26 +241,117 @@ static double sample_errors(fit_state *f)
     return worst;
 }
 
+static int block_by_a(const void *x, const void *y)
+{
+    const double a = ((const check_block *)x)->a, b = ((const check_block *)y)->a;
+    return (a > b) - (a < b);
+}
+
+/* The cached check points of span [a, b] (first index), or (size_t)-1. */
+static size_t cached_block(const fit_state *f, double a, double b)
+{
+    size_t lo = 0, hi = f->n_blocks;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (f->blocks[mid].a < a)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (; lo < f->n_blocks && f->blocks[lo].a == a; ++lo)
+        if (f->blocks[lo].b == b)
+            return f->blocks[lo].first;
+    return (size_t)-1;
+}
+
+/* Exact check points of span [a, b] into the cache; the block's first
+ * index, or (size_t)-1 with *ok 0 when an exact point is missing. */
+static projcurve_status new_block(fit_state *f, double a, double b, size_t *first, int *ok)
+{
+    *first = f->cache.count;
+    projcurve_status st = PROJCURVE_OK;
+    for (int i = 0; st == PROJCURVE_OK && i < PC_FIT_CHECK_PER_SPAN; ++i) {
+        pc_fit_sample x;
+        if (!pc_fit_exact(f->fb, a + (b - a) * (i + 0.5) / PC_FIT_CHECK_PER_SPAN, &x)) {
+            *ok = 0;
+            return PROJCURVE_OK;
+        }
+        st = pc_fit_samples_push(f->ctx, &f->cache, &x);
+    }
+    if (st == PROJCURVE_OK && f->n_blocks == f->cap_blocks) {
+        const size_t n = f->cap_blocks ? 2 * f->cap_blocks : 64;
+        check_block *blocks = realloc(f->blocks, n * sizeof *blocks);
+        if (blocks == NULL)
+            return pc_fail(f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit");
+        f->blocks = blocks;
+        f->cap_blocks = n;
+    }
+    if (st == PROJCURVE_OK)
+        f->blocks[f->n_blocks++] = (check_block){a, b, *first};
+    return st;
+}
+
+/* First sample index with t > a, and the count of those with t < b. */
+static size_t samples_inside(const pc_fit_samples *s, double a, double b, size_t *count)
+{
+    size_t lo = 0, hi = s->count;
+    while (lo < hi) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (s->items[mid].t <= a)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    size_t end = lo;
+    while (end < s->count && s->items[end].t < b)
+        ++end;
+    *count = end - lo;
+    return lo;
+}
+
 /* The dense check: errors per span into f->err; the check points beyond
- * the target join the samples. *ok 0 when an exact point is missing. */
+ * the target join the samples. A span checked before (not cut since)
+ * reuses its exact points, and one that holds PC_FIT_CHECK_PER_SPAN
+ * samples or more (the check points of an earlier fit of the branch) is
+ * checked at those. *ok 0 when an exact point is missing. */
 static projcurve_status check(fit_state *f, double *worst, int *ok)
 {
     *worst = 0.0;
     projcurve_status st = PROJCURVE_OK;
     size_t hint = 0;
+    if (f->n_blocks > 1)
+        qsort(f->blocks, f->n_blocks, sizeof *f->blocks, block_by_a);
+    const size_t n_sorted = f->n_blocks;
     for (size_t j = 0; st == PROJCURVE_OK && j + 1 < f->n_brk; ++j) {
         f->err[j] = 0.0;
         const double a = f->brk[j], b = f->brk[j + 1];
-        for (int i = 0; st == PROJCURVE_OK && i < PC_FIT_CHECK_PER_SPAN; ++i) {
-            pc_fit_sample x;
-            if (!pc_fit_exact(f->fb, a + (b - a) * (i + 0.5) / PC_FIT_CHECK_PER_SPAN, &x)) {
-                *ok = 0;
-                return PROJCURVE_OK;
+        size_t inside = 0;
+        const size_t from = samples_inside(f->data, a, b, &inside);
+        if (inside >= PC_FIT_CHECK_PER_SPAN) {
+            /* at least PC_FIT_CHECK_PER_SPAN of them, evenly spread */
+            const size_t step = inside / PC_FIT_CHECK_PER_SPAN;
+            for (size_t i = from; i < from + inside; i += step) {
+                const double d = distance(f, &f->data->items[i], &hint, 1);
+                f->err[j] = fmax(f->err[j], d);
+                *worst = fmax(*worst, d);
             }
-            const double d = distance(f, &x, &hint);
+            continue;
+        }
+        const size_t n_now = f->n_blocks;
+        f->n_blocks = n_sorted; /* the search sees the sorted part only */
+        size_t first = cached_block(f, a, b);
+        f->n_blocks = n_now;
+        const int fresh = first == (size_t)-1;
+        if (fresh)
+            st = new_block(f, a, b, &first, ok);
+        if (st != PROJCURVE_OK || !*ok)
+            return st;
+        for (int i = 0; st == PROJCURVE_OK && i < PC_FIT_CHECK_PER_SPAN; ++i) {
+            const pc_fit_sample x = f->cache.items[first + (size_t)i];
+            const double d = distance(f, &x, &hint, 1);
             f->err[j] = fmax(f->err[j], d);
             *worst = fmax(*worst, d);
-            if (d > f->goal->target)
+            if (fresh && d > f->goal->target) /* a reused point joined when it was new */
                 st = pc_fit_samples_push(f->ctx, f->data, &x);
         }
     }
@@ -306,7 +431,8 @@ projcurve_status pc_fit_adaptive(projcurve_context *ctx, pc_fit_branch *fb,
                                  pc_fit_curve *out, int *ok)
 {
     *ok = 0;
-    fit_state f = {ctx, fb, goal, weights, data, NULL, n_knots, 0, NULL, NULL, 0, NULL};
+    fit_state f = {ctx, fb, goal, weights, data, NULL, n_knots, 0, NULL, NULL, 0, NULL,
+                   {NULL, 0, 0, 0, 0}, NULL, 0, 0};
     f.knots = malloc(n_knots * sizeof *f.knots);
     if (f.knots == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit");
@@ -365,6 +491,12 @@ projcurve_status pc_fit_adaptive(projcurve_context *ctx, pc_fit_branch *fb,
     free(f.poles);
     free(f.brk);
     free(f.err);
+    /* the check points are exact: the next fit of the branch has them */
+    for (size_t i = 0; st == PROJCURVE_OK && i < f.cache.count; ++i)
+        st = pc_fit_samples_push(ctx, data, &f.cache.items[i]);
+    pc_fit_samples_sort(data);
+    free(f.blocks);
+    pc_fit_samples_free(&f.cache);
     return st;
 }
 

@@ -88,6 +88,22 @@ void pc_fit_surface_point(pc_fit_branch *fb, const double uv[2], double x[3])
     x[2] = s.z;
 }
 
+void pc_fit_sample_at(pc_fit_branch *fb, double t, const double uv[2], pc_fit_sample *out)
+{
+    pc_vec3 s[3];
+    pc_nurbs_surface_eval(fb->surface, uv[0], uv[1], 1, &fb->hint_u, &fb->hint_v, s);
+    out->t = t;
+    out->uv[0] = uv[0];
+    out->uv[1] = uv[1];
+    const double x[3] = {s[0].x, s[0].y, s[0].z}, su[3] = {s[1].x, s[1].y, s[1].z},
+                 sv[3] = {s[2].x, s[2].y, s[2].z};
+    for (int c = 0; c < 3; ++c) {
+        out->x[c] = x[c];
+        out->su[c] = su[c];
+        out->sv[c] = sv[c];
+    }
+}
+
 /* Index (in increasing t) of the piece whose range holds t. */
 static size_t piece_at(const pc_fit_branch *fb, double t)
 {
@@ -119,10 +135,7 @@ int pc_fit_exact(pc_fit_branch *fb, double t, pc_fit_sample *out)
     const double length = hypot(p->uv[2] - p->uv[0], p->uv[3] - p->uv[1]);
     if (hypot(uv[0] - guess[0], uv[1] - guess[1]) > PC_FIT_MAX_JUMP * length + fb->min_move)
         return 0;
-    out->t = t;
-    out->uv[0] = uv[0];
-    out->uv[1] = uv[1];
-    pc_fit_surface_point(fb, uv, out->x);
+    pc_fit_sample_at(fb, t, uv, out);
     return 1;
 }
 
@@ -130,8 +143,6 @@ void pc_fit_piece_end(pc_fit_branch *fb, size_t k, int hi, pc_fit_sample *out)
 {
     const pc_piece *p = pc_fit_piece(fb, k);
     const int at_t1 = (p->t1 > p->t0) == (hi != 0);
-    out->t = at_t1 ? p->t1 : p->t0;
-    out->uv[0] = p->uv[at_t1 ? 2 : 0];
-    out->uv[1] = p->uv[at_t1 ? 3 : 1];
-    pc_fit_surface_point(fb, out->uv, out->x);
+    const double uv[2] = {p->uv[at_t1 ? 2 : 0], p->uv[at_t1 ? 3 : 1]};
+    pc_fit_sample_at(fb, at_t1 ? p->t1 : p->t0, uv, out);
 }

@@ -14,9 +14,11 @@
 #include "trace/projector.h"
 #include "trace/result.h"
 
-/* An exact point of the projection: t, q(t) = (u, v) and S(q(t)). */
+/* An exact point of the projection: t, q(t) = (u, v), S(q(t)) and the
+ * partials Su, Sv there (with which the fit measures a pcurve near q(t)
+ * to first order while it places knots; its check evaluates S). */
 typedef struct pc_fit_sample {
-    double t, uv[2], x[3];
+    double t, uv[2], x[3], su[3], sv[3];
 } pc_fit_sample;
 
 typedef struct pc_fit_branch {
@@ -45,6 +47,8 @@ void pc_fit_piece_uv(const pc_piece *p, double t, double uv[2]);
 
 /* S(u, v) into x[3]. */
 void pc_fit_surface_point(pc_fit_branch *fb, const double uv[2], double x[3]);
+/* The sample at (t, uv): S and its partials there. */
+void pc_fit_sample_at(pc_fit_branch *fb, double t, const double uv[2], pc_fit_sample *out);
 
 /* The exact point at t (clamped to the branch's range): the corrector from
  * the pieces' pcurve at t. Returns 1 on success; 0 when the corrector does

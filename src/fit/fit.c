@@ -62,7 +62,13 @@ static projcurve_status feature_knots(projcurve_context *ctx, const pc_fit_branc
     return PROJCURVE_OK;
 }
 
-/* One compact form: the curve's own space, else the adaptive fit. */
+/* The curve's own space is kept outright up to this many poles: exact to
+ * rounding (a circle stays its 9 poles). Beyond, the adaptive fit is tried
+ * too and kept when it needs fewer: a curve lying on S with hundreds of
+ * poles projects onto itself, and eps_D may need far fewer. */
+#define PC_FIT_OWN_SPACE_KEEP 32
+
+/* One compact form: the curve's own space or the adaptive fit (above). */
 static projcurve_status fit_one(projcurve_context *ctx, pc_fit_branch *fb,
                                 const pc_fit_features *f, pc_fit_samples *data, int dim,
                                 int degree, size_t max_poles, double eps_d, pc_fit_curve *out,
@@ -70,17 +76,35 @@ static projcurve_status fit_one(projcurve_context *ctx, pc_fit_branch *fb,
 {
     const double target = PC_FIT_TARGET * eps_d, limit = PC_FIT_LIMIT * eps_d;
     const int own_max = dim == 2 ? PROJCURVE_MAX_DEGREE : degree;
-    projcurve_status st = pc_fit_own_space(ctx, fb, dim, own_max, target, limit, data, out, ok);
-    if (st != PROJCURVE_OK || *ok)
+    pc_fit_curve own = {0};
+    int own_ok = 0;
+    projcurve_status st = pc_fit_own_space(ctx, fb, dim, own_max, target, limit, data, &own,
+                                           &own_ok);
+    if (st != PROJCURVE_OK)
         return st;
+    if (own_ok)
+        max_poles = own.n_poles - 1;
+    if (own_ok && (own.n_poles <= PC_FIT_OWN_SPACE_KEEP || max_poles < (size_t)degree + 1)) {
+        *out = own;
+        *ok = 1;
+        return PROJCURVE_OK;
+    }
     double *knots = NULL;
     size_t n_knots = 0;
     st = feature_knots(ctx, fb, f, degree, &knots, &n_knots);
-    if (st != PROJCURVE_OK)
+    if (st != PROJCURVE_OK) {
+        pc_fit_curve_free(&own);
         return st;
+    }
     const pc_fit_goal goal = {degree, dim, target, limit, max_poles, 1};
     st = pc_fit_adaptive(ctx, fb, &goal, knots, n_knots, NULL, data, out, ok);
     free(knots);
+    if (st == PROJCURVE_OK && !*ok && own_ok) {
+        *out = own;
+        *ok = 1;
+    } else {
+        pc_fit_curve_free(&own);
+    }
     return st;
 }
 
@@ -97,7 +121,7 @@ static projcurve_status fit_branch(projcurve_context *ctx, pc_fit_branch *fb,
     const double eps_d = opts->tol_distance;
     const size_t np = b->n_pieces;
     pc_fit_features f = {NULL, 0};
-    pc_fit_samples data = {NULL, 0, 0, 0};
+    pc_fit_samples data = {NULL, 0, 0, 0, 0};
     pc_fit_curve pcurve = {0}, curve = {0};
     int complete = 0, have_pcurve = 0, have_curve = 0;
     const double crease =

@@ -8,6 +8,26 @@
 #include "common/error.h"
 #include "nurbs/nurbs.h"
 
+/* The values of the degree + 1 basis functions nonzero on `span` at t
+ * (The NURBS Book, A2.2: values only, which is all a fit needs). */
+static void basis_values(const double *knots, size_t span, int p, double t, double *n)
+{
+    double left[PC_MAX_ORDER], right[PC_MAX_ORDER];
+    n[0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = t - knots[span + 1 - (size_t)j];
+        right[j] = knots[span + (size_t)j] - t;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            const double den = right[r + 1] + left[j - r];
+            const double temp = den != 0.0 ? n[r] / den : 0.0;
+            n[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        n[j] = saved;
+    }
+}
+
 /* The degree + 1 basis functions nonzero at t (rational when weighted):
  * returns the index of the first. */
 static size_t basis_at(const pc_lsq_space *sp, double t, size_t *hint, double *r)
@@ -15,12 +35,12 @@ static size_t basis_at(const pc_lsq_space *sp, double t, size_t *hint, double *r
     const size_t span = pc_knot_span(sp->knots, sp->n_poles, sp->degree, t, hint ? *hint : 0);
     if (hint)
         *hint = span;
-    pc_basis b;
-    pc_basis_ders(sp->knots, span, sp->degree, t, 0, &b);
+    double n[PC_MAX_ORDER];
+    basis_values(sp->knots, span, sp->degree, t, n);
     const size_t first = span - (size_t)sp->degree;
     double sum = 0.0;
     for (int a = 0; a <= sp->degree; ++a) {
-        r[a] = b.d[0][a] * (sp->weights ? sp->weights[first + (size_t)a] : 1.0);
+        r[a] = n[a] * (sp->weights ? sp->weights[first + (size_t)a] : 1.0);
         sum += r[a];
     }
     if (sp->weights && sum != 0.0)

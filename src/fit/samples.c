@@ -2,6 +2,7 @@
 #include "fit/samples.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 #include "common/error.h"
 
@@ -30,11 +31,30 @@ static int by_t(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* Sorts the samples appended since the last sort and merges them into
+ * the sorted ones (O(n) for a few appended, where a full sort of every
+ * round's samples was a tenth of a fit). Without memory for the merge,
+ * a full sort. */
 void pc_fit_samples_sort(pc_fit_samples *s)
 {
-    if (s->unsorted)
-        qsort(s->items, s->count, sizeof *s->items, by_t);
+    if (s->unsorted) {
+        const size_t head = s->sorted < s->count ? s->sorted : 0, tail = s->count - head;
+        pc_fit_sample *merged = head > 0 ? malloc(s->count * sizeof *merged) : NULL;
+        if (merged == NULL) {
+            qsort(s->items, s->count, sizeof *s->items, by_t);
+        } else {
+            qsort(s->items + head, tail, sizeof *s->items, by_t);
+            size_t i = 0, j = head, k = 0;
+            while (i < head || j < s->count)
+                merged[k++] = (j >= s->count || (i < head && s->items[i].t <= s->items[j].t))
+                                  ? s->items[i++]
+                                  : s->items[j++];
+            memcpy(s->items, merged, s->count * sizeof *merged);
+            free(merged);
+        }
+    }
     s->unsorted = 0;
+    s->sorted = s->count;
 }
 
 void pc_fit_samples_free(pc_fit_samples *s)
@@ -43,6 +63,7 @@ void pc_fit_samples_free(pc_fit_samples *s)
     s->items = NULL;
     s->count = s->cap = 0;
     s->unsorted = 0;
+    s->sorted = 0;
 }
 
 projcurve_status pc_fit_samples_from_pieces(projcurve_context *ctx, pc_fit_branch *fb,

@@ -12,7 +12,8 @@
 typedef struct pc_fit_samples {
     pc_fit_sample *items;
     size_t count, cap;
-    int unsorted; /* appended since the last pc_fit_samples_sort */
+    int unsorted;  /* appended out of order since the last pc_fit_samples_sort */
+    size_t sorted; /* items[0 .. sorted) were in order at the last sort */
 } pc_fit_samples;
 
 /* Doubles from one sample to the next, for pc_lsq_fit's stride. */
