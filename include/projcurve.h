@@ -773,7 +773,7 @@ PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *
  * Where the projection is an affine image of the NURBS curve P over its
  * whole domain (onto an affinely parametrised plane) it is P's own spline
  * space instead (P's degree, knots and weights, so a circle stays a
- * circle). When the fit does not meet eps_D within 3 n_pieces + 1 poles
+ * circle), when that has at most 32 poles or the fit needs more. When the fit does not meet eps_D within 3 n_pieces + 1 poles
  * (e.g. where the exact points cannot be had) or the call's budget
  * stopped it, the pcurve is the pieces' pcurves joined (cubic, knots of
  * multiplicity 3 at the joins), which verification checked:
@@ -783,7 +783,8 @@ PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *
  * PROJCURVE_OPT_CURVE_DEGREE (default 5) with the fewest poles the fit
  * finds within eps_D of the exact projection at the same t (the same
  * check); not exactly on S, but within eps_D of it. C^(degree - 1) but at
- * the same places (C^k there). In P's space too where exact.
+ * the same places (C^k there). In P's space too where exact (as above,
+ * when P's degree is at most PROJCURVE_OPT_CURVE_DEGREE).
  *
  * Fitting happens in the projection call, after verification, under its
  * budget; results stay read-only afterwards (thread-safe). */
