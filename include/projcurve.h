@@ -783,7 +783,8 @@ PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *
  * PROJCURVE_OPT_CURVE_DEGREE (default 5) with the fewest poles the fit
  * finds within eps_D of the exact projection at the same t (the same
  * check); not exactly on S, but within eps_D of it. C^(degree - 1) but at
- * the same places (C^k there). In P's space too where exact (as above,
+ * the same places (C^k there, also where 2 <= k < degree - 1 while there
+ * are at most 16 such places, e.g. a cubic curve's knots). In P's space too where exact (as above,
  * when P's degree is at most PROJCURVE_OPT_CURVE_DEGREE).
  *
  * Fitting happens in the projection call, after verification, under its

@@ -37,13 +37,28 @@
  * fold, where q(t) behaves as a square root. */
 #define PC_FIT_SPARE_POLES 256
 
+/* Features where q is C^k with 2 <= k < the fit's degree ("soft": the
+ * jump is in the third derivative or above) are marked only while there
+ * are at most this many: a knot of multiplicity d - 2 at each of a few
+ * knots of P lets the fit follow them exactly (Example 1's 3D curve: 13
+ * poles instead of 45 at 1e-5), at each of the hundreds of knots of a
+ * long curve it would triple the poles (real_joinsurf85: 378 against
+ * Open CASCADE's 113), where a few shorter spans follow them instead.
+ * Places below C2 are always marked. */
+#define PC_FIT_SOFT_FEATURES_MAX 16
+#define PC_FIT_HARD_BELOW 2
+
 /* The clamped knot vector of degree p over [t_lo, t_hi] with a knot of
- * multiplicity p - continuity (at least 1) at every feature where that is
- * positive. *out is malloc'd. */
+ * multiplicity p - continuity (at least 1) at every feature marked (above)
+ * where that is positive. *out is malloc'd. */
 static projcurve_status feature_knots(projcurve_context *ctx, const pc_fit_branch *fb,
                                       const pc_fit_features *f, int p, double **out,
                                       size_t *n_out)
 {
+    size_t soft = 0;
+    for (size_t j = 0; j < f->count; ++j)
+        soft += f->items[j].continuity >= PC_FIT_HARD_BELOW && f->items[j].continuity < p;
+    const int mark_below = soft <= PC_FIT_SOFT_FEATURES_MAX ? p : PC_FIT_HARD_BELOW;
     double *k = malloc((2 * (size_t)(p + 1) + f->count * (size_t)p) * sizeof *k);
     if (k == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit");
@@ -51,6 +66,8 @@ static projcurve_status feature_knots(projcurve_context *ctx, const pc_fit_branc
     for (int i = 0; i <= p; ++i)
         k[n++] = fb->t_lo;
     for (size_t j = 0; j < f->count; ++j) {
+        if (f->items[j].continuity >= mark_below)
+            continue;
         const int mult = p - (f->items[j].continuity < 0 ? 0 : f->items[j].continuity);
         for (int i = 0; i < mult; ++i)
             k[n++] = f->items[j].t;
