@@ -38,13 +38,15 @@
 #define PC_FIT_SPARE_POLES 256
 
 /* Features where q is C^k with 2 <= k < the fit's degree ("soft": the
- * jump is in the third derivative or above) are marked only while there
- * are at most this many: a knot of multiplicity d - 2 at each of a few
- * knots of P lets the fit follow them exactly (Example 1's 3D curve: 13
- * poles instead of 45 at 1e-5), at each of the hundreds of knots of a
- * long curve it would triple the poles (real_joinsurf85: 378 against
- * Open CASCADE's 113), where a few shorter spans follow them instead.
- * Places below C2 are always marked. */
+ * jump is in the third derivative or above): with at most this many, they
+ * are marked (a knot of multiplicity d - 2 at each of a few knots of P
+ * lets the fit follow them exactly: Example 1's 3D curve, 13 poles instead
+ * of 45 at 1e-5); with more, the fit is made both ways and the one with
+ * fewer poles kept: at each of the hundreds of knots of a long curve the
+ * marks can triple the poles at a loose eps_D (real_joinsurf85: 378
+ * against Open CASCADE's 113, unmarked 91), and save two thirds at a tight
+ * one (real_lens: 82 marked, 221 unmarked). Places below C2 are always
+ * marked. */
 #define PC_FIT_SOFT_FEATURES_MAX 16
 #define PC_FIT_HARD_BELOW 2
 
@@ -52,13 +54,9 @@
  * multiplicity p - continuity (at least 1) at every feature marked (above)
  * where that is positive. *out is malloc'd. */
 static projcurve_status feature_knots(projcurve_context *ctx, const pc_fit_branch *fb,
-                                      const pc_fit_features *f, int p, double **out,
-                                      size_t *n_out)
+                                      const pc_fit_features *f, int p, int mark_below,
+                                      double **out, size_t *n_out)
 {
-    size_t soft = 0;
-    for (size_t j = 0; j < f->count; ++j)
-        soft += f->items[j].continuity >= PC_FIT_HARD_BELOW && f->items[j].continuity < p;
-    const int mark_below = soft <= PC_FIT_SOFT_FEATURES_MAX ? p : PC_FIT_HARD_BELOW;
     double *k = malloc((2 * (size_t)(p + 1) + f->count * (size_t)p) * sizeof *k);
     if (k == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit");
@@ -85,6 +83,50 @@ static projcurve_status feature_knots(projcurve_context *ctx, const pc_fit_branc
  * poles projects onto itself, and eps_D may need far fewer. */
 #define PC_FIT_OWN_SPACE_KEEP 32
 
+/* The adaptive fit over the feature knots, marking the places below
+ * mark_below. */
+static projcurve_status adaptive_with(projcurve_context *ctx, pc_fit_branch *fb,
+                                      const pc_fit_features *f, pc_fit_samples *data,
+                                      const pc_fit_goal *goal, int mark_below,
+                                      pc_fit_curve *out, int *ok)
+{
+    double *knots = NULL;
+    size_t n_knots = 0;
+    projcurve_status st = feature_knots(ctx, fb, f, goal->degree, mark_below, &knots, &n_knots);
+    if (st == PROJCURVE_OK)
+        st = pc_fit_adaptive(ctx, fb, goal, knots, n_knots, NULL, data, out, ok);
+    free(knots);
+    return st;
+}
+
+/* The adaptive fit, with the soft features marked and, when they are
+ * many, also without (PC_FIT_SOFT_FEATURES_MAX): the fewer poles win. */
+static projcurve_status adaptive_best(projcurve_context *ctx, pc_fit_branch *fb,
+                                      const pc_fit_features *f, pc_fit_samples *data,
+                                      pc_fit_goal goal, pc_fit_curve *out, int *ok)
+{
+    size_t soft = 0;
+    for (size_t j = 0; j < f->count; ++j)
+        soft += f->items[j].continuity >= PC_FIT_HARD_BELOW && f->items[j].continuity < goal.degree;
+    projcurve_status st = adaptive_with(ctx, fb, f, data, &goal, goal.degree, out, ok);
+    if (st != PROJCURVE_OK || soft <= PC_FIT_SOFT_FEATURES_MAX)
+        return st;
+    if (*ok)
+        goal.max_poles = out->n_poles - 1;
+    pc_fit_curve other = {0};
+    int other_ok = 0;
+    if (goal.max_poles >= (size_t)goal.degree + 1)
+        st = adaptive_with(ctx, fb, f, data, &goal, PC_FIT_HARD_BELOW, &other, &other_ok);
+    if (st == PROJCURVE_OK && other_ok) {
+        pc_fit_curve_free(out);
+        *out = other;
+        *ok = 1;
+    } else {
+        pc_fit_curve_free(&other);
+    }
+    return st;
+}
+
 /* One compact form: the curve's own space or the adaptive fit (above). */
 static projcurve_status fit_one(projcurve_context *ctx, pc_fit_branch *fb,
                                 const pc_fit_features *f, pc_fit_samples *data, int dim,
@@ -106,16 +148,8 @@ static projcurve_status fit_one(projcurve_context *ctx, pc_fit_branch *fb,
         *ok = 1;
         return PROJCURVE_OK;
     }
-    double *knots = NULL;
-    size_t n_knots = 0;
-    st = feature_knots(ctx, fb, f, degree, &knots, &n_knots);
-    if (st != PROJCURVE_OK) {
-        pc_fit_curve_free(&own);
-        return st;
-    }
     const pc_fit_goal goal = {degree, dim, target, limit, max_poles, 1};
-    st = pc_fit_adaptive(ctx, fb, &goal, knots, n_knots, NULL, data, out, ok);
-    free(knots);
+    st = adaptive_best(ctx, fb, f, data, goal, out, ok);
     if (st == PROJCURVE_OK && !*ok && own_ok) {
         *out = own;
         *ok = 1;
