@@ -748,8 +748,9 @@ PROJCURVE_API projcurve_status projcurve_result_piece_pcurve(projcurve_context *
 PROJCURVE_API size_t projcurve_result_failure_count(const projcurve_result *result);
 
 /* The whole branch as one NURBS curve handle (pieces joined, knots at the
- * joins), usable with the curve functions; release with
- * projcurve_curve_destroy. Statuses: OK, NULL_ARGUMENT, INDEX, NO_MEMORY,
+ * joins: exactly on S, degree p + q or 3 (p + q), hundreds or thousands of
+ * poles; for CAD output the compact forms below are the default),
+ * usable with the curve functions; release with projcurve_curve_destroy. Statuses: OK, NULL_ARGUMENT, INDEX, NO_MEMORY,
  * INVALID_ARGUMENT (branch without composed pieces). */
 PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *ctx,
                                                              const projcurve_result *result,
