@@ -119,7 +119,7 @@ static void write_example1(int degree)
     CHECK(r != NULL && projcurve_result_branch_count(r) == 1);
     projcurve_iges_writer *w = NULL;
     CHECK_OK(projcurve_iges_writer_create(NULL, &w));
-    CHECK_OK(projcurve_iges_writer_add_result(NULL, w, s, r));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(NULL, w, s, r));
     CHECK_OK(projcurve_iges_writer_write(NULL, w, path));
     projcurve_iges_writer_destroy(w);
     if (r != NULL && projcurve_result_branch_count(r) == 1)

@@ -237,7 +237,7 @@ static void result_round_trip(void)
     }
     projcurve_iges_writer *w = NULL;
     CHECK_OK(projcurve_iges_writer_create(ctx, &w));
-    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, w, s, r));
     CHECK_OK(projcurve_iges_writer_write(ctx, w, path_a));
     projcurve_iges_writer_destroy(w);
     char *text = file_text(path_a);
@@ -282,7 +282,7 @@ static void projected_round_trip(void)
     CHECK(projcurve_result_branch_count(r) == 1);
     projcurve_iges_writer *w = NULL;
     CHECK_OK(projcurve_iges_writer_create(ctx, &w));
-    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, w, s, r));
     CHECK_OK(projcurve_iges_writer_write(ctx, w, path_a));
     projcurve_iges_writer_destroy(w);
     projcurve_model *m = read_back(path_a);
@@ -387,7 +387,7 @@ static void curve_on_surface_pcurves(void)
         CHECK(projcurve_result_branch_count(r) == 1);
         projcurve_iges_writer *w = NULL;
         CHECK_OK(projcurve_iges_writer_create(ctx, &w));
-        CHECK_OK(projcurve_iges_writer_add_result(ctx, w, projcurve_model_surface(in, 0), r));
+        CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, w, projcurve_model_surface(in, 0), r));
         CHECK_OK(projcurve_iges_writer_write(ctx, w, path_a));
         projcurve_iges_writer_destroy(w);
         char *text = file_text(path_a);

@@ -67,6 +67,8 @@ typedef struct cli_job {
     double time_ms;  /* total projection time */
     size_t failures; /* calls that failed, plus the failure places of their
                         results (projcurve_result_failure_count) */
+    double metres_per_unit; /* length unit of the inputs (0: unknown, the
+                               IGES file says millimetres) */
 } cli_job;
 
 /* Projects every curve onto every surface; failures are reported on stderr

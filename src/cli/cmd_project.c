@@ -184,6 +184,10 @@ int cli_cmd_project(int argc, char **argv)
         job.n_curves = in.n_curves;
         job.orthogonal = a.orthogonal;
         memcpy(job.dir, a.dir, sizeof job.dir);
+        /* the unit of the first input that declares one: coordinates are
+         * written as read, so the output keeps the input's size */
+        for (size_t m = 0; m < in.n_models && job.metres_per_unit == 0.0; ++m)
+            projcurve_model_length_unit(in.models[m], &job.metres_per_unit);
         job.opts = opts;
         char title[256];
         snprintf(title, sizeof title, "projcurve: %s projection of %s%s",

@@ -28,6 +28,7 @@ typedef struct pc_iges_out_entity {
 typedef struct pc_iges_out {
     pc_iges_out_entity *entities;
     size_t count, cap;
+    int unit_flag; /* global parameters 14 and 15 (pc_iges_unit_flag); 0 = millimetres */
 } pc_iges_out;
 
 /* A growing text buffer for parameter fields. */

@@ -14,7 +14,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "api/handles.h"
 #include "projcurve.h"
 
 #define MAX_SEED 1024
