@@ -466,22 +466,22 @@ projcurve_status pc_fit_adaptive(projcurve_context *ctx, pc_fit_branch *fb,
         st = cut_spans(&f, goal->limit, &going);
     }
     if (st == PROJCURVE_OK && *ok) {
-        out->degree = goal->degree;
-        out->dim = goal->dim;
-        out->n_poles = f.n_poles;
-        out->knots = f.knots;
-        out->poles = f.poles;
-        out->weights = NULL;
+        out->spline.degree = goal->degree;
+        out->spline.dim = goal->dim;
+        out->spline.n_poles = f.n_poles;
+        out->spline.knots = f.knots;
+        out->spline.poles = f.poles;
+        out->spline.weights = NULL;
         out->error = worst;
         f.knots = f.poles = NULL;
         if (weights != NULL) {
-            out->weights = malloc(f.n_poles * sizeof *out->weights);
-            if (out->weights == NULL) {
+            out->spline.weights = malloc(f.n_poles * sizeof *out->spline.weights);
+            if (out->spline.weights == NULL) {
                 pc_fit_curve_free(out);
                 *ok = 0;
                 st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit");
             } else {
-                memcpy(out->weights, weights, f.n_poles * sizeof *out->weights);
+                memcpy(out->spline.weights, weights, f.n_poles * sizeof *out->spline.weights);
             }
         }
     } else {
@@ -502,8 +502,6 @@ projcurve_status pc_fit_adaptive(projcurve_context *ctx, pc_fit_branch *fb,
 
 void pc_fit_curve_free(pc_fit_curve *c)
 {
-    free(c->knots);
-    free(c->poles);
-    free(c->weights);
-    memset(c, 0, sizeof *c);
+    pc_bspline_free(&c->spline);
+    c->error = 0.0;
 }

@@ -17,6 +17,7 @@
 #include <stddef.h>
 
 #include "fit/samples.h"
+#include "trace/result.h"
 
 #define PC_FIT_CHECK_PER_SPAN 20
 #define PC_FIT_MAX_ROUNDS 64
@@ -31,10 +32,8 @@ typedef struct pc_fit_goal {
 } pc_fit_goal;
 
 typedef struct pc_fit_curve {
-    int degree, dim;
-    size_t n_poles;
-    double *knots, *poles, *weights; /* malloc'd; weights NULL when polynomial */
-    double error;                    /* the largest distance the check found */
+    pc_bspline spline; /* malloc'd; weights NULL when polynomial */
+    double error;      /* the largest distance the check found */
 } pc_fit_curve;
 
 /* Fits goal's spline to the samples (sorted, from t_lo to t_hi, which it

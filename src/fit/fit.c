@@ -112,7 +112,7 @@ static projcurve_status adaptive_best(projcurve_context *ctx, pc_fit_branch *fb,
     if (st != PROJCURVE_OK || soft <= PC_FIT_SOFT_FEATURES_MAX)
         return st;
     if (*ok)
-        goal.max_poles = out->n_poles - 1;
+        goal.max_poles = out->spline.n_poles - 1;
     pc_fit_curve other = {0};
     int other_ok = 0;
     if (goal.max_poles >= (size_t)goal.degree + 1)
@@ -142,8 +142,8 @@ static projcurve_status fit_one(projcurve_context *ctx, pc_fit_branch *fb,
     if (st != PROJCURVE_OK)
         return st;
     if (own_ok)
-        max_poles = own.n_poles - 1;
-    if (own_ok && (own.n_poles <= PC_FIT_OWN_SPACE_KEEP || max_poles < (size_t)degree + 1)) {
+        max_poles = own.spline.n_poles - 1;
+    if (own_ok && (own.spline.n_poles <= PC_FIT_OWN_SPACE_KEEP || max_poles < (size_t)degree + 1)) {
         *out = own;
         *ok = 1;
         return PROJCURVE_OK;
@@ -159,10 +159,12 @@ static projcurve_status fit_one(projcurve_context *ctx, pc_fit_branch *fb,
     return st;
 }
 
-static projcurve_status keep(projcurve_context *ctx, pc_bspline *dst, const pc_fit_curve *c)
+/* Moves c's spline into dst (c is left empty). */
+static void keep(pc_bspline *dst, pc_fit_curve *c)
 {
-    return pc_bspline_set(ctx, dst, c->degree, c->dim, c->n_poles, c->knots, c->poles,
-                          c->weights);
+    pc_bspline_free(dst);
+    *dst = c->spline;
+    c->spline = (pc_bspline){0};
 }
 
 /* The pcurve and the 3D curve of one branch. */
@@ -192,10 +194,10 @@ static projcurve_status fit_branch(projcurve_context *ctx, pc_fit_branch *fb,
     if (st == PROJCURVE_OK && !have_pcurve)
         st = pc_fit_joined_pcurve(ctx, fb, &pcurve);
     if (st == PROJCURVE_OK)
-        st = keep(ctx, &b->compact_pcurve, &pcurve);
+        keep(&b->compact_pcurve, &pcurve);
     b->compact_pcurve_error = have_pcurve ? pcurve.error : -1.0;
     if (st == PROJCURVE_OK && have_curve)
-        st = keep(ctx, &b->compact_curve, &curve);
+        keep(&b->compact_curve, &curve);
     b->compact_curve_error = have_curve ? curve.error : -1.0;
     if (st != PROJCURVE_OK)
         b->compact = PC_COMPACT_NONE;

@@ -28,14 +28,14 @@ projcurve_status pc_fit_joined_pcurve(projcurve_context *ctx, const pc_fit_branc
                                       pc_fit_curve *out)
 {
     const size_t np = fb->b->n_pieces, n = 3 * np + 1;
-    out->degree = 3;
-    out->dim = 2;
-    out->n_poles = n;
+    out->spline.degree = 3;
+    out->spline.dim = 2;
+    out->spline.n_poles = n;
     out->error = 0.0;
-    out->weights = NULL;
-    out->knots = malloc((n + 4) * sizeof *out->knots);
-    out->poles = malloc(2 * n * sizeof *out->poles);
-    if (out->knots == NULL || out->poles == NULL) {
+    out->spline.weights = NULL;
+    out->spline.knots = malloc((n + 4) * sizeof *out->spline.knots);
+    out->spline.poles = malloc(2 * n * sizeof *out->spline.poles);
+    if (out->spline.knots == NULL || out->spline.poles == NULL) {
         pc_fit_curve_free(out);
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory joining a pcurve");
     }
@@ -46,14 +46,14 @@ projcurve_status pc_fit_joined_pcurve(projcurve_context *ctx, const pc_fit_branc
         pc_fit_piece_range(p, &lo, &hi);
         for (size_t i = k == 0 ? 0 : 1; i < 4; ++i)
             for (size_t d = 0; d < 2; ++d)
-                out->poles[2 * (3 * k + i) + d] = c[2 * i + d];
+                out->spline.poles[2 * (3 * k + i) + d] = c[2 * i + d];
         for (size_t i = 0; i < 3; ++i)
-            out->knots[1 + 3 * k + i] = lo;
+            out->spline.knots[1 + 3 * k + i] = lo;
         if (k == 0)
-            out->knots[0] = lo;
+            out->spline.knots[0] = lo;
         if (k + 1 == np)
             for (size_t i = 0; i < 4; ++i)
-                out->knots[n + i] = hi;
+                out->spline.knots[n + i] = hi;
     }
     return PROJCURVE_OK;
 }

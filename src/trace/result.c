@@ -6,7 +6,6 @@
  */
 #include "trace/result.h"
 
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -137,38 +136,6 @@ void pc_branch_clear_pieces(pc_branch *b)
         free(b->pieces[i].weights);
     }
     b->n_pieces = 0;
-}
-
-projcurve_status pc_bspline_set(projcurve_context *ctx, pc_bspline *dst, int degree, int dim,
-                                size_t n_poles, const double *knots, const double *poles,
-                                const double *weights)
-{
-    const size_t n_knots = n_poles + (size_t)degree + 1;
-    if (degree < 1 || dim < 1 || n_poles < (size_t)degree + 1 ||
-        n_poles > SIZE_MAX / sizeof(double) / (size_t)dim - (size_t)degree - 1)
-        return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "B-spline of degree %d with %zu poles",
-                       degree, n_poles);
-    double *k = malloc(n_knots * sizeof *k);
-    double *p = malloc(n_poles * (size_t)dim * sizeof *p);
-    double *w = weights ? malloc(n_poles * sizeof *w) : NULL;
-    if (k == NULL || p == NULL || (weights != NULL && w == NULL)) {
-        free(k);
-        free(p);
-        free(w);
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory keeping a B-spline");
-    }
-    memcpy(k, knots, n_knots * sizeof *k);
-    memcpy(p, poles, n_poles * (size_t)dim * sizeof *p);
-    if (w != NULL)
-        memcpy(w, weights, n_poles * sizeof *w);
-    pc_bspline_free(dst);
-    dst->degree = degree;
-    dst->dim = dim;
-    dst->n_poles = n_poles;
-    dst->knots = k;
-    dst->poles = p;
-    dst->weights = w;
-    return PROJCURVE_OK;
 }
 
 void pc_bspline_free(pc_bspline *s)

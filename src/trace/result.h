@@ -98,12 +98,7 @@ projcurve_status pc_branch_add_piece(projcurve_context *ctx, pc_branch *b, int d
  * the straight segment between the piece's (u, v) ends): degree 1..3 with
  * degree + 1 (u, v) control points. */
 void pc_branch_set_last_pcurve(pc_branch *b, int degree, const double *uv_ctrl);
-/* Copies a B-spline (degree, dim, n_poles poles, n_poles + degree + 1
- * knots, n_poles weights or NULL) into *dst, releasing what *dst held.
- * Statuses: OK, NO_MEMORY, OVERFLOW (dst unchanged on failure). */
-projcurve_status pc_bspline_set(projcurve_context *ctx, pc_bspline *dst, int degree, int dim,
-                                size_t n_poles, const double *knots, const double *poles,
-                                const double *weights);
+/* Releases what *s holds and leaves it empty (n_poles 0). */
 void pc_bspline_free(pc_bspline *s);
 /* Removes every piece of the branch (when recomposing). */
 void pc_branch_clear_pieces(pc_branch *b);

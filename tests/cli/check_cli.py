@@ -430,6 +430,32 @@ def part_cases(exe, shared, work):
                   f"{name}: deviation {b['deviation']} > eps_D {tol}")
         check_svg(out_svg, got, 1, 1, name)
     check_several_inputs(exe, shared, work)
+    check_unit_kept(exe, shared, work)
+
+
+def global_section(path):
+    """The global section of an IGES file as one string."""
+    with open(path) as f:
+        return "".join(line[:72] for line in f if len(line) > 72 and line[72] == "G")
+
+
+def check_unit_kept(exe, shared, work):
+    """The output declares the length unit of the first input that declares
+    one: sunglasses_lens.igs is in inches ("1,2HIN" in its global section),
+    the cases in millimetres. Coordinates are written as read, so a file
+    that said millimetres would make the lens 25.4 times too small."""
+    case = os.path.join(shared, "cases", "song_yong_example1.igs")
+    lens = os.path.join(shared, "real", "sunglasses_lens.igs")
+    runs = [([case], ",2,2HMM,")]
+    if os.path.isfile(lens):
+        runs.append(([lens, case], ",1,2HIN,"))
+    for inputs, expected in runs:
+        out = os.path.join(work, "unit.igs")
+        what = f"unit of {[os.path.basename(i) for i in inputs]}"
+        if run([exe, "project"] + inputs + ["--dir", "0,0,-1", "-o", out], 0, what).returncode:
+            continue
+        g = global_section(out)
+        check(expected in g, f"{what}: {expected} not in the global section {g!r}")
 
 
 def check_several_inputs(exe, shared, work):
