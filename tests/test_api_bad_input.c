@@ -94,6 +94,16 @@ static void test_writer(void)
                 "writer");
     CHECK_FAILS(projcurve_iges_writer_write(ctx, w, "/nonexistent-dir/x.igs"), PROJCURVE_ERR_IO,
                 "nonexistent-dir");
+    CHECK_FAILS(projcurve_iges_writer_add_result_pieces(ctx, w, plane, implicit_result),
+                PROJCURVE_ERR_INVALID_ARGUMENT, "implicit");
+    CHECK_FAILS(projcurve_iges_writer_add_result_pieces(ctx, NULL, plane, result),
+                PROJCURVE_ERR_NULL_ARGUMENT, "writer");
+    CHECK_FAILS(projcurve_iges_writer_set_length_unit(ctx, NULL, 0.001),
+                PROJCURVE_ERR_NULL_ARGUMENT, "writer");
+    CHECK_FAILS(projcurve_iges_writer_set_length_unit(ctx, w, NAN), PROJCURVE_ERR_NOT_FINITE,
+                "finite");
+    CHECK_FAILS(projcurve_iges_writer_set_length_unit(ctx, w, 0.5), PROJCURVE_ERR_OUT_OF_RANGE,
+                "IGES units");
     /* a result traced but not composed is written as its pcurves */
     CHECK_OK(projcurve_iges_writer_add_result(ctx, w, plane, traced_only));
     projcurve_iges_writer_destroy(w);
@@ -191,6 +201,15 @@ static void test_result(void)
     CHECK_FAILS(projcurve_result_branch_curve(ctx, result, n, &c), PROJCURVE_ERR_INDEX, "branch");
     CHECK_FAILS(projcurve_result_branch_curve(ctx, traced_only, 0, &c),
                 PROJCURVE_ERR_INVALID_ARGUMENT, "COMPOSE 0");
+    CHECK_FAILS(projcurve_result_branch_compact_curve(ctx, result, n, &c), PROJCURVE_ERR_INDEX,
+                "branch");
+    CHECK_FAILS(projcurve_result_branch_compact_pcurve(ctx, traced_only, 0, &c),
+                PROJCURVE_ERR_INVALID_ARGUMENT, "COMPOSE 0");
+    CHECK(projcurve_result_branch_count(implicit_result) > 0);
+    CHECK_FAILS(projcurve_result_branch_compact_info(ctx, implicit_result, 0, NULL, NULL, NULL),
+                PROJCURVE_ERR_INVALID_ARGUMENT, "implicit");
+    CHECK_FAILS(projcurve_surface_nurbs_data(ctx, NULL, NULL, NULL, NULL, NULL),
+                PROJCURVE_ERR_NULL_ARGUMENT, "surface");
     CHECK_FAILS(projcurve_result_piece(ctx, traced_only, 0, 0, &degree, NULL, NULL, NULL, NULL),
                 PROJCURVE_ERR_INDEX, "piece 0 of 0");
     CHECK(c == SENTINEL);

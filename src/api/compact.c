@@ -47,27 +47,17 @@ static projcurve_status handle_of(projcurve_context *ctx, const pc_bspline *s,
     return st;
 }
 
-projcurve_status projcurve_result_branch_compact_pcurve(projcurve_context *ctx,
-                                                        const projcurve_result *result,
-                                                        size_t branch, projcurve_curve **out)
+/* The compact 3D curve (curve3d) or pcurve of a branch as a handle. */
+static projcurve_status compact_handle(projcurve_context *ctx, const projcurve_result *r,
+                                       size_t branch, int curve3d, projcurve_curve **out)
 {
     const pc_branch *b = NULL;
-    projcurve_status st = compact_branch(ctx, result, branch, &b);
+    projcurve_status st = compact_branch(ctx, r, branch, &b);
     if (st != PROJCURVE_OK)
         return st;
     PC_REQUIRE(ctx, out, "out");
-    return handle_of(ctx, &b->compact_pcurve, out);
-}
-
-projcurve_status projcurve_result_branch_compact_curve(projcurve_context *ctx,
-                                                       const projcurve_result *result,
-                                                       size_t branch, projcurve_curve **out)
-{
-    const pc_branch *b = NULL;
-    projcurve_status st = compact_branch(ctx, result, branch, &b);
-    if (st != PROJCURVE_OK)
-        return st;
-    PC_REQUIRE(ctx, out, "out");
+    if (!curve3d)
+        return handle_of(ctx, &b->compact_pcurve, out);
     if (b->compact_curve.n_poles == 0)
         return pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
                        "branch %zu: no compact 3D curve within eps_D was found within the "
@@ -75,6 +65,20 @@ projcurve_status projcurve_result_branch_compact_curve(projcurve_context *ctx,
                        "(projcurve_result_branch_curve) and its compact pcurve are exact",
                        branch);
     return handle_of(ctx, &b->compact_curve, out);
+}
+
+projcurve_status projcurve_result_branch_compact_pcurve(projcurve_context *ctx,
+                                                        const projcurve_result *result,
+                                                        size_t branch, projcurve_curve **out)
+{
+    return compact_handle(ctx, result, branch, 0, out);
+}
+
+projcurve_status projcurve_result_branch_compact_curve(projcurve_context *ctx,
+                                                       const projcurve_result *result,
+                                                       size_t branch, projcurve_curve **out)
+{
+    return compact_handle(ctx, result, branch, 1, out);
 }
 
 projcurve_status projcurve_result_branch_compact_info(projcurve_context *ctx,

@@ -109,15 +109,7 @@ projcurve_status projcurve_surface_nurbs_data(projcurve_context *ctx,
 {
     PC_REQUIRE(ctx, surface, "surface");
     const pc_nurbs_surface *s = &surface->nurbs;
-    const size_t n = s->n_u * s->n_v;
-    for (size_t i = 0; i < n; ++i) {
-        const double w = s->cw[4 * i + 3];
-        if (ctrl != NULL)
-            for (size_t k = 0; k < 3; ++k)
-                ctrl[3 * i + k] = s->cw[4 * i + k] / w;
-        if (weights != NULL)
-            weights[i] = w;
-    }
+    pc_nurbs_points_from_homogeneous(s->cw, s->n_u * s->n_v, ctrl, weights);
     if (knots_u != NULL)
         memcpy(knots_u, s->knots_u, (s->n_u + (size_t)s->deg_u + 1) * sizeof *knots_u);
     if (knots_v != NULL)
