@@ -27,30 +27,13 @@
 
 static char path[256];
 
-static char *file_text(const char *p, size_t *len)
-{
-    FILE *fp = fopen(p, "rb");
-    if (fp == NULL)
-        return NULL;
-    fseek(fp, 0, SEEK_END);
-    const long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL;
-    if (text != NULL) {
-        *len = fread(text, 1, (size_t)n, fp);
-        text[*len] = '\0';
-    }
-    fclose(fp);
-    return text;
-}
-
 /* Checks S(pcurve(t)) against every piece of branch 0 of r; the pcurve is
  * the 2D curve of the written file's first 142. */
 static void check_written_pcurve(const projcurve_surface *s, const projcurve_result *r,
                                  int expect_degree)
 {
     size_t len = 0;
-    char *text = file_text(path, &len);
+    char *text = pc_test_read_file(path, &len);
     CHECK(text != NULL);
     if (text == NULL)
         return;

@@ -103,23 +103,6 @@ static void test_step(void)
     }
 }
 
-static char *file_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (f == NULL)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    const long n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    char *text = n >= 0 ? calloc((size_t)n + 1, 1) : NULL;
-    if (text != NULL && fread(text, 1, (size_t)n, f) != (size_t)n) {
-        free(text);
-        text = NULL;
-    }
-    fclose(f);
-    return text;
-}
-
 /* Written with a unit (or the default), read back with it; the global
  * section carries the flag and its name. */
 static void test_write(void)
@@ -147,7 +130,7 @@ static void test_write(void)
         CHECK_OK(projcurve_iges_writer_add_curve(NULL, w, c));
         CHECK_OK(projcurve_iges_writer_write(NULL, w, path));
         projcurve_iges_writer_destroy(w);
-        char *text = file_text(path);
+        char *text = pc_test_read_file(path, NULL);
         CHECK(text != NULL && strstr(text, cases[k].global) != NULL);
         free(text);
         projcurve_model *m = NULL;
@@ -171,7 +154,7 @@ static void test_write(void)
     CHECK_OK(projcurve_iges_writer_add_curve(NULL, w, c));
     CHECK_OK(projcurve_iges_writer_write(NULL, w, path));
     projcurve_iges_writer_destroy(w);
-    char *text = file_text(path);
+    char *text = pc_test_read_file(path, NULL);
     CHECK(text != NULL && strstr(text, ",1,2HIN,") != NULL);
     free(text);
     remove(path);
