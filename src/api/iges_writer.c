@@ -178,8 +178,10 @@ static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer
         return add_traced_pcurve(ctx, w, r, branch, de);
     projcurve_curve *pcurve = NULL;
     projcurve_status st = PROJCURVE_ERR_INVALID_ARGUMENT;
-    if (compact)
+    if (compact) /* without ctx: a missing compact form is no failure here */
         st = projcurve_result_branch_compact_pcurve(NULL, r, branch, &pcurve);
+    if (st == PROJCURVE_ERR_NO_MEMORY)
+        return pc_fail(ctx, st, "out of memory for the compact pcurve of branch %zu", branch);
     if (st == PROJCURVE_ERR_INVALID_ARGUMENT) /* no compact forms: the pieces' */
         st = pc_branch_pcurve(ctx, r, branch, &pcurve);
     if (st == PROJCURVE_ERR_INVALID_ARGUMENT)
@@ -208,6 +210,9 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
         st = PROJCURVE_ERR_LIMIT_REACHED;
         if (compact)
             st = projcurve_result_branch_compact_curve(NULL, r, branch, &c);
+        if (st == PROJCURVE_ERR_NO_MEMORY)
+            return pc_fail(ctx, st, "out of memory for the compact curve of branch %zu",
+                           branch);
         /* no compact 3D curve (its fit hit its bound, or no compact forms):
          * the pieces joined */
         if (st == PROJCURVE_ERR_LIMIT_REACHED || st == PROJCURVE_ERR_INVALID_ARGUMENT)
