@@ -83,7 +83,9 @@ static void measure_spans(const projcurve_surface *s, const pc_projector *oracle
         if (!(b > a))
             continue;
         for (int i = 0; i <= SAMPLES_PER_SPAN; ++i) {
-            const double t = a + (b - a) * i / SAMPLES_PER_SPAN;
+            /* the span's end itself: a + (b - a) can round 1 ulp past b,
+             * outside the curve's domain */
+            const double t = i == SAMPLES_PER_SPAN ? b : a + (b - a) * i / SAMPLES_PER_SPAN;
             double uv[3], on_s[3], x[3], y[3];
             CHECK_OK(projcurve_curve_eval(NULL, q, t, 0, uv));
             if (!exact_at(oracle, s, t, uv, x)) {
