@@ -14,6 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/curve.h"
+#include "geom/surface.h"
 #include "projcurve.h"
 
 #define MAX_SEED 1024
