@@ -85,7 +85,8 @@ static int by_t(const void *a, const void *b)
  * continuity) and drops those at the branch's ends. */
 static void tidy(pc_fit_features *f, double t_lo, double t_hi, double merge)
 {
-    qsort(f->items, f->count, sizeof *f->items, by_t);
+    if (f->count > 1) /* items is NULL while there are none */
+        qsort(f->items, f->count, sizeof *f->items, by_t);
     size_t m = 0;
     for (size_t i = 0; i < f->count; ++i) {
         const pc_fit_feature x = f->items[i];
