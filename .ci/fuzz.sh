@@ -1,15 +1,22 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Fuzzes every file reader with libFuzzer for a bounded time.
-#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 60; PROJCURVE_FUZZ_SECONDS also works)
+# Fuzzes every file reader, the projection pipeline and the IGES writer
+# with libFuzzer for a bounded time.
+#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 50, six targets: 5 min in all;
+#                                       PROJCURVE_FUZZ_SECONDS also works)
 #   PROJCURVE_FUZZ_KEEP_CORPUS=1 keeps the corpus of earlier runs.
 # Builds the targets of tests/fuzz with clang (-DPROJCURVE_FUZZ=ON) in
-# build-fuzz/, seeds each from tests/data (and tests/fuzz/seeds), and stops at the first crash,
-# leak or hang (the reproducer is left in build-fuzz/artifacts/).
+# build-fuzz/, first runs every file of the committed corpora
+# (tests/fuzz/corpus/: the pipeline targets' minimised seeds and the inputs
+# of past findings) through ctest, then seeds each target from tests/data,
+# tests/fuzz/seeds and tests/fuzz/corpus, and stops at the first crash, leak
+# or input slower than 10 s (-timeout; a pipeline input makes two
+# projections of at most 2 s each, FUZZ_TIME_LIMIT in tests/fuzz/fuzz_shapes.h;
+# the reproducer is left in build-fuzz/artifacts/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-seconds=${1:-${PROJCURVE_FUZZ_SECONDS:-60}}
+seconds=${1:-${PROJCURVE_FUZZ_SECONDS:-50}}
 if ! [[ $seconds =~ ^[1-9][0-9]*$ ]]; then
     echo "fuzz.sh: seconds per target must be a positive integer, not '$seconds'" >&2
     exit 2
@@ -30,7 +37,10 @@ fi
 
 cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DPROJCURVE_FUZZ=ON -DPROJCURVE_BUILD_BENCH=OFF -DPROJCURVE_BUILD_CLI=OFF
-cmake --build build-fuzz -j2 --target fuzz_iges fuzz_step fuzz_gismo fuzz_teapot
+targets=(iges step gismo teapot project iges_write)
+cmake --build build-fuzz -j2 --target "${targets[@]/#/fuzz_}"
+# Every file of the committed corpora once: a past finding fails here.
+ctest --test-dir build-fuzz -R '^fuzz_.*_corpus$' --output-on-failure -j2
 
 test_data=tests/data
 declare -A seeds=(
@@ -38,9 +48,11 @@ declare -A seeds=(
     [step]="$test_data/real/test-joinsurf_01.stp tests/fuzz/seeds/step_complex_rational.stp $test_data/cases-brep/cylinder_analytic.step $test_data/cases-brep/gtest_cone_line_circle.step"
     [gismo]="$test_data/real/horn.xml $test_data/real/shroud_kaplan.xml"
     [teapot]="$test_data/real/teapot_newell_spd.txt"
+    [project]="tests/fuzz/corpus/project"
+    [iges_write]="tests/fuzz/corpus/iges_write"
 )
 mkdir -p build-fuzz/artifacts
-for reader in iges step gismo teapot; do
+for reader in "${targets[@]}"; do
     corpus=build-fuzz/corpus/$reader
     # Each run starts from the seeds: a corpus grown by earlier runs takes
     # longer to load than the time budget (PROJCURVE_FUZZ_KEEP_CORPUS=1
@@ -50,13 +62,17 @@ for reader in iges step gismo teapot; do
     fi
     mkdir -p "$corpus"
     for seed in ${seeds[$reader]}; do
-        if [[ -d $seed ]]; then cp -n "$seed"/*.igs "$corpus"/ 2>/dev/null || true
+        if [[ -d $seed && $seed == tests/fuzz/corpus/* ]]; then cp -n "$seed"/* "$corpus"/
+        elif [[ -d $seed ]]; then cp -n "$seed"/*.igs "$corpus"/ 2>/dev/null || true
         elif [[ -f $seed ]]; then cp -n "$seed" "$corpus"/
         fi
     done
+    # The pipeline targets read at most ~300 bytes (fuzz_shapes.c).
+    max_len=()
+    [[ $reader == project || $reader == iges_write ]] && max_len=(-max_len=512)
     echo "==== fuzz_$reader: ${seconds}s ===="
     build-fuzz/tests/fuzz/fuzz_$reader -max_total_time="$seconds" -timeout=10 \
-        -rss_limit_mb=2048 -print_final_stats=1 \
+        -rss_limit_mb=2048 -print_final_stats=1 "${max_len[@]}" \
         -artifact_prefix=build-fuzz/artifacts/"$reader"- "$corpus"
 done
-echo "fuzzing: no crash, leak or hang found"
+echo "fuzzing: no crash, leak or slow input found"

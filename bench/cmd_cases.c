@@ -83,6 +83,15 @@ static void write_case_json(pcb_json *j, const case_row *r)
     pcb_json_number(j, "cubic_control_points", r->cubic.control_points);
     pcb_json_number(j, "cubic_max_joint_angle_deg", r->cubic.max_joint_deg);
     pcb_json_number(j, "cubic_deviation", r->cubic.deviation.hausdorff);
+    pcb_json_number(j, "compact_poles", m->compact_poles);
+    pcb_json_number(j, "compact_degree", m->compact_degree);
+    pcb_json_number(j, "compact_deviation", m->compact_deviation.hausdorff);
+    pcb_json_number(j, "pcurve_poles", m->pcurve_poles);
+    pcb_json_number(j, "pcurve_degree", m->pcurve_degree);
+    pcb_json_number(j, "fit_ms", m->fit_ms);
+    pcb_json_number(j, "cubic_compact_poles", r->cubic.compact_poles);
+    pcb_json_number(j, "cubic_pcurve_poles", r->cubic.pcurve_poles);
+    pcb_json_number(j, "cubic_fit_ms", r->cubic.fit_ms);
     pcb_json_object_end(j);
 }
 
@@ -283,6 +292,20 @@ int pcb_cmd_cases(const pcb_args *args)
                r->cubic.ms, r->m.pieces, r->cubic.pieces, r->cubic.max_joint_deg,
                r->cubic.deviation.hausdorff, r->c->tol_dist, r->m.ms / r->cubic.ms);
         fflush(stdout);
+    }
+    printf("\ncompact results (src/fit/): poles and degree of the 3D curves and pcurves "
+           "(all branches), their deviation, the time the fits add; straight / cubic pieces\n");
+    printf("%-30s %8s %9s %6s %9s %6s %11s %9s %8s %9s %9s\n", "case", "ctrl", "3d_poles",
+           "3d_deg", "uv_poles", "uv_deg", "deviation", "fit_ms", "fit_%", "cub_3d", "cub_uv");
+    for (size_t i = 0; i < list.n; ++i) {
+        const case_row *r = &rows[i];
+        if (r->c->error[0])
+            continue;
+        const pcb_measurement *m = &r->m;
+        printf("%-30s %8.0f %9.0f %6.0f %9.0f %6.0f %11.3e %9.3f %8.1f %9.0f %9.0f\n",
+               r->c->name, m->control_points, m->compact_poles, m->compact_degree,
+               m->pcurve_poles, m->pcurve_degree, m->compact_deviation.hausdorff, m->fit_ms,
+               100.0 * m->fit_ms / m->ms, r->cubic.compact_poles, r->cubic.pcurve_poles);
     }
     printf("\nsecond order against RK4, whole projection, same tolerances\n");
     printf("%-30s %10s %10s %8s %9s %9s\n", "case", "second_ms", "rk4_ms", "rk4/2nd", "pts_2nd",

@@ -11,6 +11,8 @@
  * ours / theirs is the median of ratios taken run by run.
  */
 #include <BRepAdaptor_Curve.hxx>
+#include <BRep_Tool.hxx>
+#include <Geom_TrimmedCurve.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepProj_Projection.hxx>
@@ -242,6 +244,9 @@ struct ours_run {
     double ratio = NAN;     /* median of per-run ratios ours / occt */
     double dev = NAN;       /* measured deviation */
     double branches = NAN;
+    /* The compact forms (src/fit/): poles over the branches, largest
+     * degree, the 3D curves' measured deviation, the pcurves' poles. */
+    double poles = NAN, degree = NAN, compact_dev = NAN, pcurve_poles = NAN;
 };
 
 struct row {
@@ -249,7 +254,12 @@ struct row {
     ours_run at_case_tol;   /* the case's eps_D */
     ours_run matched;       /* eps_D = Open CASCADE's measured deviation */
     ours_run cubic_at_case_tol, cubic_matched; /* the same with cubic pcurves */
+    /* Ours at eps_D = Open CASCADE's deviation also where ours was the more
+     * accurate at the case's eps_D: the compact poles at equal accuracy
+     * (not timed). */
+    ours_run poles_at_occt_dev;
     double occt_dev = NAN, occt_branches = NAN;
+    double occt_poles = NAN, occt_degree = NAN; /* of its result's B-spline edges */
     /* The pair reported as ours / occt: `matched` when Open CASCADE is the
      * more accurate at the case tolerance, else `at_case_tol`. */
     const ours_run &reported() const
@@ -295,11 +305,15 @@ bool measure_ours(const pcb_case *c, const projcurve_options *opts, const pcb_ex
 {
     projcurve_context *ctx = nullptr;
     projcurve_result *res = nullptr;
-    pcb_result_curves rc = {nullptr, 0};
+    pcb_result_curves rc = {nullptr, 0}, compact = {nullptr, 0};
     projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx);
     projcurve_status st = pcb_case_project(ctx, c, opts, &res);
     if (st == PROJCURVE_OK)
         st = pcb_result_curves_init(ctx, res, &rc);
+    double pcurve_degree = 0.0;
+    if (st == PROJCURVE_OK)
+        st = pcb_result_compact_curves_init(ctx, res, &compact, &run.poles, &run.degree,
+                                            &run.pcurve_poles, &pcurve_degree);
     bool ok = st == PROJCURVE_OK;
     if (!ok) {
         status = std::string("ours: ") + projcurve_status_string(st) + ": " +
@@ -314,10 +328,14 @@ bool measure_ours(const pcb_case *c, const projcurve_options *opts, const pcb_ex
         pcb_deviation dev;
         ok = pcb_measure_deviation(&ex, &set, per_curve, &dev) == 0;
         run.dev = dev.hausdorff;
+        const pcb_curve_set compact_set = pcb_result_curve_set(&compact);
+        ok = ok && pcb_measure_deviation(&ex, &compact_set, sampling.min_per_curve, &dev) == 0;
+        run.compact_dev = dev.hausdorff;
         if (!ok)
             status = "deviation of our result";
     }
     pcb_result_curves_free(&rc);
+    pcb_result_curves_free(&compact);
     projcurve_result_destroy(res);
     projcurve_context_destroy(ctx);
     return ok;
@@ -328,6 +346,21 @@ bool measure_occt(occt_case &oc, const pcb_exact &ex, const pcb_sampling &sampli
     if (!occt_project(oc, true))
         return false;
     r.occt_branches = oc.branches;
+    r.occt_poles = r.occt_degree = 0.0;
+    for (const TopoDS_Edge &e : oc.edges) {
+        Standard_Real first = 0.0, last = 0.0;
+        Handle(Geom_Curve) g = BRep_Tool::Curve(e, first, last);
+        Handle(Geom_TrimmedCurve) trimmed = Handle(Geom_TrimmedCurve)::DownCast(g);
+        if (!trimmed.IsNull())
+            g = trimmed->BasisCurve();
+        Handle(Geom_BSplineCurve) bs = Handle(Geom_BSplineCurve)::DownCast(g);
+        if (bs.IsNull()) {
+            r.occt_poles = NAN; /* not a B-spline: no pole count */
+            continue;
+        }
+        r.occt_poles += bs->NbPoles();
+        r.occt_degree = std::max(r.occt_degree, static_cast<double>(bs->Degree()));
+    }
     oc.adaptors.clear();
     for (const TopoDS_Edge &e : oc.edges)
         oc.adaptors.emplace_back(e);
@@ -435,6 +468,16 @@ bool run_case(const pcb_args *args, const pcb_case *c, row &r)
         r.occt_dev < r.cubic_at_case_tol.dev)
         ok = run_ours(args, &cubic, std::max(r.occt_dev, floor_tol), ex, &oc, r.cubic_matched,
                       ours_status);
+    if (ok && occt_ok && !args->quick && std::isfinite(r.occt_dev)) {
+        const pcb_sampling dense = pcb_sampling_for(0);
+        projcurve_options *opts = nullptr;
+        r.poles_at_occt_dev.tol = std::max(r.occt_dev, floor_tol);
+        ok = pcb_case_options(nullptr, c, &opts) == PROJCURVE_OK &&
+             projcurve_options_set_double(nullptr, opts, PROJCURVE_OPT_TOL_DISTANCE,
+                                          r.poles_at_occt_dev.tol) == PROJCURVE_OK &&
+             measure_ours(c, opts, ex, dense, r.poles_at_occt_dev, ours_status);
+        projcurve_options_destroy(opts);
+    }
     if (!ok)
         r.status = ours_status;
     pcb_exact_free(&ex);
@@ -472,6 +515,16 @@ void write_json(const pcb_args *args, const std::vector<row> &rows)
         pcb_json_number(&j, "cubic_ours_over_occt", cub.ratio);
         pcb_json_number(&j, "cubic_ours_deviation", cub.dev);
         pcb_json_number(&j, "cubic_ours_tol_dist", cub.tol);
+        const ours_run &pol =
+            std::isfinite(r.poles_at_occt_dev.tol) ? r.poles_at_occt_dev : r.reported();
+        pcb_json_number(&j, "ours_compact_tol_dist", pol.tol);
+        pcb_json_number(&j, "ours_compact_poles", pol.poles);
+        pcb_json_number(&j, "ours_compact_degree", pol.degree);
+        pcb_json_number(&j, "ours_compact_deviation", pol.compact_dev);
+        pcb_json_number(&j, "ours_pcurve_poles", pol.pcurve_poles);
+        pcb_json_number(&j, "occt_poles", r.occt_poles);
+        pcb_json_number(&j, "occt_degree", r.occt_degree);
+        pcb_json_number(&j, "poles_over_occt", pol.poles / r.occt_poles);
         pcb_json_string(&j, "status", r.status.empty() ? "ok" : r.status.c_str());
         pcb_json_object_end(&j);
     }
@@ -542,6 +595,17 @@ extern "C" int pcb_cmd_occt(const pcb_args *args)
             print_run(r, "", r.cubic_matched, "cubic pcurves, eps_D = Open CASCADE's deviation");
         std::fflush(stdout);
         rows.push_back(r);
+    }
+    std::printf("\ncompact results against Open CASCADE's, at equal accuracy (ours run with eps_D = "
+                "Open CASCADE's measured deviation)\n");
+    std::printf("%-30s %9s %11s %11s %8s %6s %8s %6s %8s %8s\n", "case", "eps_D", "ours_dev",
+                "occt_dev", "3d_poles", "3d_deg", "occt_pl", "oc_deg", "poles/oc", "uv_poles");
+    for (const row &r : rows) {
+        const ours_run &rep =
+            std::isfinite(r.poles_at_occt_dev.tol) ? r.poles_at_occt_dev : r.reported();
+        std::printf("%-30s %9.2e %11.3e %11.3e %8.0f %6.0f %8.0f %6.0f %8.3f %8.0f\n",
+                    r.name.c_str(), rep.tol, rep.compact_dev, r.occt_dev, rep.poles, rep.degree,
+                    r.occt_poles, r.occt_degree, rep.poles / r.occt_poles, rep.pcurve_poles);
     }
     write_json(args, rows);
     write_svg(args, rows);

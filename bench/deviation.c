@@ -144,6 +144,53 @@ projcurve_status pcb_result_curves_init(projcurve_context *ctx, const projcurve_
     return PROJCURVE_OK;
 }
 
+/* Adds c's pole count to *poles and raises *degree to its degree. */
+static void count_poles(const projcurve_curve *c, double *poles, double *degree)
+{
+    int d = 0;
+    size_t n = 0;
+    if (projcurve_curve_nurbs_info(NULL, c, &d, &n, NULL, NULL) != PROJCURVE_OK)
+        return;
+    if (poles)
+        *poles += (double)n;
+    if (degree)
+        *degree = fmax(*degree, (double)d);
+}
+
+projcurve_status pcb_result_compact_curves_init(projcurve_context *ctx,
+                                                const projcurve_result *result,
+                                                pcb_result_curves *rc, double *poles,
+                                                double *degree, double *pcurve_poles,
+                                                double *pcurve_degree)
+{
+    double *outs[4] = {poles, degree, pcurve_poles, pcurve_degree};
+    for (int k = 0; k < 4; ++k)
+        if (outs[k])
+            *outs[k] = 0.0;
+    rc->n = 0;
+    const size_t n = projcurve_result_branch_count(result);
+    rc->curves = n ? calloc(n, sizeof *rc->curves) : NULL;
+    if (n && !rc->curves)
+        return PROJCURVE_ERR_NO_MEMORY;
+    for (size_t b = 0; b < n; ++b) {
+        projcurve_status st = projcurve_result_branch_compact_curve(NULL, result, b,
+                                                                    &rc->curves[b]);
+        if (st != PROJCURVE_OK)
+            st = projcurve_result_branch_curve(ctx, result, b, &rc->curves[b]);
+        if (st != PROJCURVE_OK) {
+            pcb_result_curves_free(rc);
+            return st;
+        }
+        rc->n = b + 1;
+        count_poles(rc->curves[b], poles, degree);
+        projcurve_curve *q = NULL;
+        if (projcurve_result_branch_compact_pcurve(NULL, result, b, &q) == PROJCURVE_OK)
+            count_poles(q, pcurve_poles, pcurve_degree);
+        projcurve_curve_destroy(q);
+    }
+    return PROJCURVE_OK;
+}
+
 void pcb_result_curves_free(pcb_result_curves *rc)
 {
     for (size_t i = 0; i < rc->n; ++i)

@@ -50,6 +50,16 @@ typedef struct pcb_result_curves {
 
 projcurve_status pcb_result_curves_init(projcurve_context *ctx, const projcurve_result *result,
                                         pcb_result_curves *rc);
+/* The same with each branch's compact 3D curve
+ * (projcurve_result_branch_compact_curve; the joined pieces where it has
+ * none); *poles and *degree (may be NULL) get their pole count summed and
+ * their largest degree, *pcurve_poles and *pcurve_degree the compact
+ * pcurves'. */
+projcurve_status pcb_result_compact_curves_init(projcurve_context *ctx,
+                                                const projcurve_result *result,
+                                                pcb_result_curves *rc, double *poles,
+                                                double *degree, double *pcurve_poles,
+                                                double *pcurve_degree);
 void pcb_result_curves_free(pcb_result_curves *rc);
 pcb_curve_set pcb_result_curve_set(pcb_result_curves *rc);
 

@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "api/options.h" /* the internal switch of the compact fits */
+
 #define PI 3.14159265358979323846
 /* Oracle samples and result samples: 2001 curve parameters resolve every
  * case's features; 16 samples per composed piece catch a piece that bulges
@@ -26,6 +28,9 @@ void pcb_measurement_clear(pcb_measurement *m)
     m->ms = m->branches = m->pieces = m->control_points = m->points = m->max_joint_deg = NAN;
     m->deviation.result_to_exact = m->deviation.exact_to_result = m->deviation.hausdorff = NAN;
     m->uniform_pieces = NAN;
+    m->compact_poles = m->compact_degree = m->pcurve_poles = m->pcurve_degree = NAN;
+    m->compact_deviation = m->deviation;
+    m->fit_ms = NAN;
 }
 
 typedef struct project_work {
@@ -110,7 +115,8 @@ int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, const pcb_samp
     projcurve_context *ctx = NULL;
     projcurve_options *opts = NULL;
     projcurve_result *r = NULL;
-    pcb_result_curves rc = {NULL, 0};
+    projcurve_options *no_fit = NULL;
+    pcb_result_curves rc = {NULL, 0}, compact = {NULL, 0};
     pcb_exact ex = {0};
     int ok = 0;
     projcurve_status st = projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx);
@@ -122,6 +128,14 @@ int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, const pcb_samp
         st = pcb_result_shape(ctx, r, m);
     if (st == PROJCURVE_OK)
         st = pcb_result_curves_init(ctx, r, &rc);
+    if (st == PROJCURVE_OK)
+        st = pcb_result_compact_curves_init(ctx, r, &compact, &m->compact_poles,
+                                            &m->compact_degree, &m->pcurve_poles,
+                                            &m->pcurve_degree);
+    if (st == PROJCURVE_OK)
+        st = pcb_case_options(ctx, c, &no_fit);
+    if (st == PROJCURVE_OK)
+        no_fit->compact = 0;
     if (st == PROJCURVE_OK)
         st = pcb_exact_sample(ctx, &ex, c->surface, c->curve, c->orthogonal, c->dir,
                               sampling->exact_samples);
@@ -138,19 +152,30 @@ int pcb_measure_case(const pcb_case *c, const pcb_timing *timing, const pcb_samp
         snprintf(status, status_size, "deviation: evaluation failed");
         goto cleanup;
     }
+    /* the compact curves have a few dozen spans: the minimum per curve
+     * samples them more densely than the pieces are */
+    const pcb_curve_set compact_set = pcb_result_curve_set(&compact);
+    if (pcb_measure_deviation(&ex, &compact_set, sampling->min_per_curve,
+                              &m->compact_deviation) != 0) {
+        snprintf(status, status_size, "deviation of the compact curves: evaluation failed");
+        goto cleanup;
+    }
     if (with_uniform)
         m->uniform_pieces = pcb_uniform_pieces(&ex, r, c->tol_dist, c->tol_angle_deg);
-    project_work w = {c, opts};
-    double seconds = NAN;
-    if (pcb_time_median(timing, work_project, &w, &seconds) != 0) {
+    project_work w = {c, opts}, w_no_fit = {c, no_fit};
+    pcb_pair pair;
+    if (pcb_time_pair(timing, work_project, &w, work_project, &w_no_fit, &pair) != 0) {
         snprintf(status, status_size, "a timed projection failed");
         goto cleanup;
     }
-    m->ms = 1e3 * seconds;
+    m->ms = 1e3 * pair.a_s;
+    m->fit_ms = 1e3 * (pair.a_s - pair.b_s);
     ok = 1;
 cleanup:
     pcb_exact_free(&ex);
     pcb_result_curves_free(&rc);
+    pcb_result_curves_free(&compact);
+    projcurve_options_destroy(no_fit);
     projcurve_result_destroy(r);
     projcurve_options_destroy(opts);
     projcurve_context_destroy(ctx);

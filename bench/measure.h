@@ -22,6 +22,13 @@ typedef struct pcb_measurement {
     double max_joint_deg;   /* worst tangent angle between consecutive pieces */
     pcb_deviation deviation;
     double uniform_pieces;  /* equal-t pieces a uniform split needs for eps_D (NaN: not asked) */
+    /* The compact forms (src/fit/): poles summed over the branches and
+     * the largest degree, of the 3D curves and of the pcurves; the 3D
+     * curves' deviation measured like the pieces'; and the time the fits
+     * add to the projection (ms, the same run with and without them). */
+    double compact_poles, compact_degree, pcurve_poles, pcurve_degree;
+    pcb_deviation compact_deviation;
+    double fit_ms;
 } pcb_measurement;
 
 /* Every field NaN. */

@@ -126,6 +126,35 @@ PROJCURVE_API projcurve_status projcurve_context_status(const projcurve_context 
 /* Forgets the last failure. */
 PROJCURVE_API void projcurve_context_clear(projcurve_context *ctx);
 
+/* Size limits a context puts on the calls made with it (as SQLite's
+ * sqlite3_limit on a connection). A call with a NULL context uses the
+ * defaults. */
+typedef enum projcurve_limit {
+    /* Control points of one curve, or of one surface (n_u * n_v), at
+     * creation and when a model is read. Creating a surface costs about
+     * 1.7 KB per control point (the Bezier patches, their boxes and the
+     * BVH; a 1000 x 1000 net takes 1.7 GB and 5 s), a curve far less. A
+     * larger input is refused with PROJCURVE_ERR_OUT_OF_RANGE and a message
+     * naming the limit. Default PROJCURVE_DEFAULT_MAX_CONTROL_POINTS. */
+    PROJCURVE_LIMIT_CONTROL_POINTS = 0
+} projcurve_limit;
+
+/* 2^18: a 512 x 512 net, about 450 MB to create. */
+#define PROJCURVE_DEFAULT_MAX_CONTROL_POINTS 262144
+
+/* Sets a limit of ctx. The value must be >= 2 (the smallest curve);
+ * sizes whose arrays overflow the address space stay refused
+ * (PROJCURVE_ERR_OVERFLOW) whatever the limit.
+ * Statuses: OK, NULL_ARGUMENT (ctx), UNKNOWN_OPTION (limit), OUT_OF_RANGE
+ * (value); on failure the limit is unchanged. */
+PROJCURVE_API projcurve_status projcurve_context_set_limit(projcurve_context *ctx,
+                                                           projcurve_limit limit, size_t value);
+
+/* The current value of a limit (the default for a NULL ctx).
+ * Statuses: OK, NULL_ARGUMENT (value), UNKNOWN_OPTION (limit). */
+PROJCURVE_API projcurve_status projcurve_context_get_limit(projcurve_context *ctx,
+                                                           projcurve_limit limit, size_t *value);
+
 /* ======================================================================== */
 /* Options                                                                   */
 /* ======================================================================== */
@@ -231,7 +260,13 @@ typedef enum projcurve_option {
      * a segment of the refinement, a fitted piece. The count depends only
      * on the inputs and options, so a call cut by MAX_WORK returns the same
      * partial result (PROJCURVE_ERR_LIMIT_REACHED) on every machine. */
-    PROJCURVE_OPT_MAX_WORK = 15
+    PROJCURVE_OPT_MAX_WORK = 15,
+    /* integer: degree of each branch's compact 3D curve
+     * (projcurve_result_branch_compact_curve), [1, 25], default 5. 25 is
+     * the largest degree Open CASCADE reads (Geom_BSplineCurve). Where
+     * the projection is an affine image of a NURBS curve (onto a plane)
+     * the compact curve keeps the curve's own degree when that is lower. */
+    PROJCURVE_OPT_CURVE_DEGREE = 16
 } projcurve_option;
 
 #define PROJCURVE_FOOT_POINTS_MINIMA 0
@@ -427,6 +462,18 @@ PROJCURVE_API projcurve_status projcurve_surface_info(projcurve_context *ctx,
                                                       size_t *n_u, size_t *n_v,
                                                       size_t *spans_u, size_t *spans_v,
                                                       int *rational);
+
+/* Copies the clamped NURBS data of a surface out (any output may be NULL;
+ * sizes from projcurve_surface_info): ctrl (3 n_u n_v, u fastest), weights
+ * (n_u n_v, all 1 when not rational), knots_u (n_u + deg_u + 1) and
+ * knots_v (n_v + deg_v + 1). Unclamped or periodic input comes back in the
+ * clamped form it was converted to. Statuses: OK, NULL_ARGUMENT.
+ * Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_surface_nurbs_data(projcurve_context *ctx,
+                                                            const projcurve_surface *surface,
+                                                            double *ctrl, double *weights,
+                                                            double *knots_u,
+                                                            double *knots_v);
 
 /* Point and partial derivatives up to total order n_deriv (0..2): out receives
  * S (n_deriv 0), then Su, Sv (1), then Suu, Suv, Svv (2), 3 doubles each.
@@ -735,13 +782,82 @@ PROJCURVE_API projcurve_status projcurve_result_piece_pcurve(projcurve_context *
 PROJCURVE_API size_t projcurve_result_failure_count(const projcurve_result *result);
 
 /* The whole branch as one NURBS curve handle (pieces joined, knots at the
- * joins), usable with the curve functions; release with
- * projcurve_curve_destroy. Statuses: OK, NULL_ARGUMENT, INDEX, NO_MEMORY,
- * INVALID_ARGUMENT (branch without composed pieces). */
+ * joins: exactly on S, degree p + q or 3 (p + q), hundreds or thousands of
+ * poles; for CAD output the compact forms below are the default), usable
+ * with the curve functions; release with projcurve_curve_destroy.
+ * Statuses: OK, NULL_ARGUMENT, INDEX, NO_MEMORY, INVALID_ARGUMENT (branch
+ * without composed pieces), OUT_OF_RANGE (a branch over a t range narrower
+ * than a curve's domain may be, see projcurve_curve_create_nurbs: read its
+ * pieces with projcurve_result_piece; the IGES writer writes its traced
+ * pcurve). */
 PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *ctx,
                                                              const projcurve_result *result,
                                                              size_t branch,
                                                              projcurve_curve **out);
+
+/* Compact results. A composing projection (PROJCURVE_OPT_COMPOSE 1) also
+ * gives each branch on a parametric surface two light B-splines over the
+ * branch's curve-parameter range (t increasing, whichever way the branch
+ * was traced), the output meant for CAD systems: what the IGES writer
+ * writes and the projcurve command reports.
+ *
+ * The compact pcurve q(t): one cubic B-spline in (u, v) with as few poles
+ * as it takes for S(q(t)) to lie within eps_D of the exact projection at
+ * the same t, measured against exact points of the projection (20 per
+ * knot span, and the samples it was fitted to). S o q lies exactly on S.
+ * It is C2 but at the knot lines of S that the branch crosses where S is
+ * C^k, k < 2 (there C^k: a knot of multiplicity 3 - k), at the knots of
+ * the curve P where P is C^k, k < 2 (the same), and at the branch's
+ * creases (pieces meeting at more than max(5, 4 eps_T) degrees: C0).
+ * Where the projection is an affine image of the NURBS curve P over its
+ * whole domain (onto an affinely parametrised plane) it is P's own spline
+ * space instead (P's degree, knots and weights, so a circle stays a
+ * circle), when that has at most 32 poles or the fit needs more. When the fit does not meet eps_D within 3 n_pieces + 1 poles
+ * (e.g. where the exact points cannot be had) or the call's budget
+ * stopped it, the pcurve is the pieces' pcurves joined (cubic, knots of
+ * multiplicity 3 at the joins), which verification checked:
+ * projcurve_result_branch_compact_info tells which.
+ *
+ * The compact 3D curve C(t): one polynomial B-spline of degree
+ * PROJCURVE_OPT_CURVE_DEGREE (default 5) with the fewest poles the fit
+ * finds within eps_D of the exact projection at the same t (the same
+ * check); not exactly on S, but within eps_D of it. C^(degree - 1) but at
+ * the same places (C^k there, also where 2 <= k < degree - 1 while there
+ * are at most 16 such places, e.g. a cubic curve's knots). In P's space too where exact (as above,
+ * when P's degree is at most PROJCURVE_OPT_CURVE_DEGREE).
+ *
+ * Fitting happens in the projection call, after verification, under its
+ * budget; results stay read-only afterwards (thread-safe). */
+
+/* The compact pcurve of a branch as a new curve handle whose control
+ * points are (u, v, 0) (weights only in P's rational space); release with
+ * projcurve_curve_destroy. Its domain is the branch's t range.
+ * Statuses: OK, NULL_ARGUMENT, INDEX, INVALID_ARGUMENT (no compact forms:
+ * the branch is not composed, or the result is implicit), NO_MEMORY.
+ * Thread-safe (the result is only read). */
+PROJCURVE_API projcurve_status projcurve_result_branch_compact_pcurve(
+    projcurve_context *ctx, const projcurve_result *result, size_t branch,
+    projcurve_curve **out);
+
+/* The compact 3D curve of a branch as a new curve handle; release with
+ * projcurve_curve_destroy. Statuses: OK, NULL_ARGUMENT, INDEX,
+ * INVALID_ARGUMENT (as above), LIMIT_REACHED (the fit found no curve
+ * within eps_D with at most n_pieces * degree + 1 poles, or the call's
+ * budget stopped it: the pieces and the compact pcurve remain), NO_MEMORY.
+ * Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_result_branch_compact_curve(
+    projcurve_context *ctx, const projcurve_result *result, size_t branch,
+    projcurve_curve **out);
+
+/* What the fit of a branch's compact forms measured (outputs may be
+ * NULL): *pcurve_fitted 1 for a fitted pcurve, 0 for the joined pieces'
+ * pcurves; the largest distance of S o q (*pcurve_error) and of the 3D
+ * curve (*curve_error) from the exact projection over the dense check,
+ * model units, -1 where there is no fit. Statuses: OK, NULL_ARGUMENT,
+ * INDEX, INVALID_ARGUMENT (as above). Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_result_branch_compact_info(
+    projcurve_context *ctx, const projcurve_result *result, size_t branch,
+    int *pcurve_fitted, double *pcurve_error, double *curve_error);
 
 /* ======================================================================== */
 /* Files: IGES, STEP and G+Smo XML                                           */
@@ -978,14 +1094,40 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_add_surface(projcurve_conte
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_curve(projcurve_context *ctx,
                                                                projcurve_iges_writer *w,
                                                                const projcurve_curve *c);
-/* Adds every composed branch of a projection result onto s: a 3D curve (126)
- * and a curve on surface (142) with its 2D pcurve; s is written too if it
- * was not added before. Statuses: OK, NULL_ARGUMENT, INVALID_ARGUMENT,
- * NO_MEMORY. */
+/* Adds every branch of a projection result onto s: a 3D curve (126) and a
+ * curve on surface (142, preference 3: both describe the projection) with
+ * its 2D pcurve (126 in z = 0, status "parametric"); s is written too if it
+ * was not added before. A composed branch is written in its compact forms
+ * (projcurve_result_branch_compact_pcurve and _compact_curve, each within
+ * eps_D of the projection, of degree at most 25; where the compact 3D curve
+ * is missing, the pieces joined); a branch not composed, or over a t range
+ * narrower than a curve's domain may be, as its traced points (a degree-1
+ * pcurve, no 3D curve). On failure the writer is left as it was (none of
+ * the result's entities added). Statuses: OK, NULL_ARGUMENT,
+ * INVALID_ARGUMENT, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
                                                                 projcurve_iges_writer *w,
                                                                 const projcurve_surface *s,
                                                                 const projcurve_result *r);
+/* The same with the composed pieces: the 3D curve is the pieces joined
+ * (projcurve_result_branch_curve) and the pcurve their pcurves joined, so
+ * that S composed with the pcurve is the 3D curve exactly (degree p + q,
+ * or 3 (p + q) with cubic pcurves; hundreds of pieces). Statuses: those of
+ * projcurve_iges_writer_add_result. */
+PROJCURVE_API projcurve_status projcurve_iges_writer_add_result_pieces(
+    projcurve_context *ctx, projcurve_iges_writer *w, const projcurve_surface *s,
+    const projcurve_result *r);
+/* The length unit of the file, in metres per unit (the default of a new
+ * writer is millimetres, 0.001): give the unit of the model the geometry
+ * came from (projcurve_model_length_unit) so that a CAD system imports it
+ * at its size. It is written as the IGES units flag and name (global
+ * parameters 14 and 15) of inch, mm, foot, mile, metre, km, mil, micron,
+ * cm or microinch, matched to 1e-9 relative. Nothing is scaled.
+ * Statuses: OK, NULL_ARGUMENT, NOT_FINITE, OUT_OF_RANGE (none of those
+ * units); on failure the writer keeps its unit. */
+PROJCURVE_API projcurve_status projcurve_iges_writer_set_length_unit(projcurve_context *ctx,
+                                                                     projcurve_iges_writer *w,
+                                                                     double metres_per_unit);
 /* Writes the file. Statuses: OK, NULL_ARGUMENT, IO, NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,
                                                            const projcurve_iges_writer *w,

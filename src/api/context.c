@@ -2,8 +2,8 @@
 /*
  * Contexts: where the last failure of a call is recorded (status + message).
  *
- * A context holds no other state, so a context per thread makes every call
- * thread-safe; nothing global is touched. Messages are written only by
+ * A context holds no other state than that and its size limits, so a
+ * context per thread makes every call thread-safe; nothing global is touched. Messages are written only by
  * pc_fail (src/common/error.c).
  */
 #include "common/error.h"
@@ -25,6 +25,7 @@ projcurve_status projcurve_context_create(unsigned abi_major, projcurve_context 
     ctx->magic = PC_CONTEXT_MAGIC;
     ctx->last_status = PROJCURVE_OK;
     ctx->last_message[0] = '\0';
+    ctx->max_control_points = PROJCURVE_DEFAULT_MAX_CONTROL_POINTS;
     *out = ctx;
     return PROJCURVE_OK;
 }
@@ -61,4 +62,32 @@ void projcurve_context_clear(projcurve_context *ctx)
         return;
     ctx->last_status = PROJCURVE_OK;
     ctx->last_message[0] = '\0';
+}
+
+/* The smallest limit that still lets a curve (degree 1, 2 points) exist. */
+#define PC_MIN_CONTROL_POINTS_LIMIT 2
+
+projcurve_status projcurve_context_set_limit(projcurve_context *ctx, projcurve_limit limit,
+                                             size_t value)
+{
+    if (ctx == NULL || ctx->magic != PC_CONTEXT_MAGIC)
+        return PROJCURVE_ERR_NULL_ARGUMENT;
+    if (limit != PROJCURVE_LIMIT_CONTROL_POINTS)
+        return pc_fail(ctx, PROJCURVE_ERR_UNKNOWN_OPTION, "unknown limit %d", (int)limit);
+    if (value < PC_MIN_CONTROL_POINTS_LIMIT)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "limit CONTROL_POINTS: %zu is below %d (the smallest curve)", value,
+                       PC_MIN_CONTROL_POINTS_LIMIT);
+    ctx->max_control_points = value;
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_context_get_limit(projcurve_context *ctx, projcurve_limit limit,
+                                             size_t *value)
+{
+    PC_REQUIRE(ctx, value, "value");
+    if (limit != PROJCURVE_LIMIT_CONTROL_POINTS)
+        return pc_fail(ctx, PROJCURVE_ERR_UNKNOWN_OPTION, "unknown limit %d", (int)limit);
+    *value = pc_context_max_control_points(ctx);
+    return PROJCURVE_OK;
 }

@@ -102,14 +102,7 @@ projcurve_status projcurve_curve_nurbs_data(projcurve_context *ctx, const projcu
     if (curve->kind != PC_CURVE_NURBS)
         return pc_fail(ctx, PROJCURVE_ERR_WRONG_KIND, "the curve is a callback curve, not NURBS");
     const pc_nurbs_curve *c = &curve->nurbs;
-    for (size_t i = 0; i < c->n_ctrl; ++i) {
-        const double w = c->cw[4 * i + 3];
-        if (ctrl != NULL)
-            for (size_t k = 0; k < 3; ++k)
-                ctrl[3 * i + k] = c->cw[4 * i + k] / w;
-        if (weights != NULL)
-            weights[i] = w;
-    }
+    pc_nurbs_points_from_homogeneous(c->cw, c->n_ctrl, ctrl, weights);
     if (knots != NULL)
         memcpy(knots, c->knots, (c->n_ctrl + (size_t)c->degree + 1) * sizeof(double));
     return PROJCURVE_OK;

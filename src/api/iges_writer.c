@@ -2,12 +2,15 @@
 /*
  * Public IGES writer: surfaces (128), curves (126) and projection results,
  * each composed branch as its 3D curve (126), its (u, v) pcurve (126 in the
- * plane z = 0: the pieces' pcurves joined, so that S composed with it is the
- * 3D curve; the traced points as a polyline for a branch not composed) and a
- * curve on surface (142, "projection of a curve onto the surface") tying
- * them to the surface. A surface is written once however often it is added (entities
+ * plane z = 0) and a curve on surface (142, "projection of a curve onto the
+ * surface") tying them to the surface. The compact forms by default (fit/:
+ * S composed with the pcurve and the 3D curve are each within eps_D of the
+ * projection); on request the pieces (their pcurves joined, so that S
+ * composed with it is the 3D curve exactly). The traced points as a
+ * polyline for a branch not composed. A surface is written once however often it is added (entities
  * are compared by their parameter text, i.e. exactly).
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -15,7 +18,9 @@
 #include "common/error.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
+#include "io/iges.h"
 #include "io/iges_write.h"
+#include "nurbs/input.h"
 
 #define PC_IGES_CURVE_ON_SURFACE 142
 #define PC_IGES_COS_PROJECTION 1 /* CRTN: created as a projection */
@@ -151,13 +156,34 @@ cleanup:
     return st;
 }
 
-/* The pcurve of a composed branch (its pieces' (u, v) curves joined), or
- * of one that is not composed (its traced points). */
-static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
-                                   const projcurve_result *r, size_t branch, size_t *de)
+/* A branch over a t range narrower than a curve's domain may be
+ * (nurbs/input.h: a sliver of the curve) has pieces but no curve handle of
+ * its own: it is written as its traced pcurve, as a branch not composed. */
+static int branch_forms_curve(const projcurve_result *r, size_t branch)
 {
+    double t[2] = {0.0, 0.0};
+    if (projcurve_result_branch_info(NULL, r, branch, t, NULL, NULL, NULL, NULL) != PROJCURVE_OK)
+        return 0;
+    return pc_input_check_domain(NULL, "branch", fmin(t[0], t[1]), fmax(t[0], t[1])) ==
+           PROJCURVE_OK;
+}
+
+/* The pcurve of a composed branch (compact, or its pieces' (u, v) curves
+ * joined), or of one that is not composed (its traced points). */
+static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   const projcurve_result *r, size_t branch, int compact,
+                                   size_t *de)
+{
+    if (!branch_forms_curve(r, branch))
+        return add_traced_pcurve(ctx, w, r, branch, de);
     projcurve_curve *pcurve = NULL;
-    projcurve_status st = pc_branch_pcurve(ctx, r, branch, &pcurve);
+    projcurve_status st = PROJCURVE_ERR_INVALID_ARGUMENT;
+    if (compact) /* without ctx: a missing compact form is no failure here */
+        st = projcurve_result_branch_compact_pcurve(NULL, r, branch, &pcurve);
+    if (st == PROJCURVE_ERR_NO_MEMORY)
+        return pc_fail(ctx, st, "out of memory for the compact pcurve of branch %zu", branch);
+    if (st == PROJCURVE_ERR_INVALID_ARGUMENT) /* no compact forms: the pieces' */
+        st = pc_branch_pcurve(ctx, r, branch, &pcurve);
     if (st == PROJCURVE_ERR_INVALID_ARGUMENT)
         return add_traced_pcurve(ctx, w, r, branch, de);
     if (st != PROJCURVE_OK)
@@ -171,14 +197,27 @@ static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer
 }
 
 static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer *w,
-                                   size_t surface_de, const projcurve_result *r, size_t branch)
+                                   size_t surface_de, const projcurve_result *r, size_t branch,
+                                   int compact)
 {
     size_t pcurve_de = 0, curve_de = 0;
-    projcurve_status st = add_pcurve(ctx, w, r, branch, &pcurve_de);
+    projcurve_status st = add_pcurve(ctx, w, r, branch, compact, &pcurve_de);
     if (st != PROJCURVE_OK)
         return st;
     projcurve_curve *c = NULL;
-    st = projcurve_result_branch_curve(ctx, r, branch, &c);
+    st = PROJCURVE_ERR_INVALID_ARGUMENT; /* a sliver: the traced pcurve alone */
+    if (branch_forms_curve(r, branch)) {
+        st = PROJCURVE_ERR_LIMIT_REACHED;
+        if (compact)
+            st = projcurve_result_branch_compact_curve(NULL, r, branch, &c);
+        if (st == PROJCURVE_ERR_NO_MEMORY)
+            return pc_fail(ctx, st, "out of memory for the compact curve of branch %zu",
+                           branch);
+        /* no compact 3D curve (its fit hit its bound, or no compact forms):
+         * the pieces joined */
+        if (st == PROJCURVE_ERR_LIMIT_REACHED || st == PROJCURVE_ERR_INVALID_ARGUMENT)
+            st = projcurve_result_branch_curve(ctx, r, branch, &c);
+    }
     if (st == PROJCURVE_OK) {
         st = add_curve(ctx, w, c, PC_IGES_STATUS_PART, &curve_de);
         projcurve_curve_destroy(c);
@@ -201,10 +240,9 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
     return st;
 }
 
-projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
-                                                  projcurve_iges_writer *w,
-                                                  const projcurve_surface *s,
-                                                  const projcurve_result *r)
+static projcurve_status add_result(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   const projcurve_surface *s, const projcurve_result *r,
+                                   int compact)
 {
     PC_REQUIRE(ctx, w, "writer");
     PC_REQUIRE(ctx, s, "surface");
@@ -212,12 +250,50 @@ projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
     if (projcurve_result_point_dim(r) != 3)
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "the result is not on a parametric surface (implicit projection)");
+    /* All or nothing: a failure (memory) part of the way leaves the writer
+     * as it was, not with half a result in it. */
+    const size_t before = w->out.count;
     size_t surface_de;
     projcurve_status st = add_surface(ctx, w, s, &surface_de);
     const size_t n = projcurve_result_branch_count(r);
     for (size_t b = 0; st == PROJCURVE_OK && b < n; ++b)
-        st = add_branch(ctx, w, surface_de, r, b);
+        st = add_branch(ctx, w, surface_de, r, b, compact);
+    if (st != PROJCURVE_OK)
+        pc_iges_out_truncate(&w->out, before);
     return st;
+}
+
+projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
+                                                  projcurve_iges_writer *w,
+                                                  const projcurve_surface *s,
+                                                  const projcurve_result *r)
+{
+    return add_result(ctx, w, s, r, 1);
+}
+
+projcurve_status projcurve_iges_writer_add_result_pieces(projcurve_context *ctx,
+                                                         projcurve_iges_writer *w,
+                                                         const projcurve_surface *s,
+                                                         const projcurve_result *r)
+{
+    return add_result(ctx, w, s, r, 0);
+}
+
+projcurve_status projcurve_iges_writer_set_length_unit(projcurve_context *ctx,
+                                                       projcurve_iges_writer *w,
+                                                       double metres_per_unit)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    if (!isfinite(metres_per_unit))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "length unit is not finite");
+    const int flag = pc_iges_unit_flag(metres_per_unit);
+    if (flag == 0)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "length unit %.17g m is none of the IGES units (in, mm, ft, mi, m, km, "
+                       "mil, um, cm, uin)",
+                       metres_per_unit);
+    w->out.unit_flag = flag;
+    return PROJCURVE_OK;
 }
 
 projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,

@@ -72,6 +72,8 @@ static const pc_option_desc pc_option_table[] = {
      0.0, PC_OPTION_TIME_LIMIT, 0, 0.0, PC_FIELD(time_limit)},
     {PROJCURVE_OPT_MAX_WORK, "MAX_WORK", PROJCURVE_OPTION_INTEGER,
      0.0, PC_OPTION_SIZE_LIMIT, 0, 0.0, PC_FIELD(max_work)},
+    {PROJCURVE_OPT_CURVE_DEGREE, "CURVE_DEGREE", PROJCURVE_OPTION_INTEGER,
+     1.0, 25.0, 0, PC_DEFAULT_CURVE_DEGREE, PC_FIELD(curve_degree)},
 };
 
 /* Integer options whose bounds admit values that mean nothing: the values
@@ -162,6 +164,7 @@ void pc_options_defaults(struct projcurve_options *o)
         else
             *pc_option_int(o, d) = (long long)d->default_value;
     }
+    o->compact = 1;
     o->progress = NULL;
     o->progress_user = NULL;
 }
@@ -195,6 +198,7 @@ void pc_options_to_params(const struct projcurve_options *o, pc_params *p)
 #define PC_COPY_FIELD(type, field) p->field = o->field;
     PC_PARAMS_OPTIONS(PC_COPY_FIELD)
 #undef PC_COPY_FIELD
+    p->compact = o->compact != 0;
 }
 
 projcurve_status projcurve_options_create(projcurve_context *ctx, projcurve_options **out)

@@ -17,6 +17,10 @@ struct projcurve_options {
     long long max_work;        /* units per call, 0 = none: PROJCURVE_OPT_MAX_WORK */
     projcurve_progress_fn progress; /* projcurve_options_set_progress; NULL = none */
     void *progress_user;
+    /* No option key, not in the public API: 0 skips the compact fits
+     * (pc_params.compact), so that the benchmark can time what they add.
+     * 1 (the default) in every projection a caller can ask for. */
+    long long compact;
 };
 
 /* Fills o with every default (used when the caller passes NULL options). */

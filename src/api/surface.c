@@ -5,6 +5,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <string.h>
 
 #include "common/error.h"
 #include "geom/surface.h"
@@ -99,5 +100,19 @@ projcurve_status projcurve_surface_bounds(projcurve_context *ctx,
     PC_REQUIRE(ctx, box, "box");
     for (int k = 0; k < 6; ++k)
         box[k] = surface->box[k];
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_surface_nurbs_data(projcurve_context *ctx,
+                                              const projcurve_surface *surface, double *ctrl,
+                                              double *weights, double *knots_u, double *knots_v)
+{
+    PC_REQUIRE(ctx, surface, "surface");
+    const pc_nurbs_surface *s = &surface->nurbs;
+    pc_nurbs_points_from_homogeneous(s->cw, s->n_u * s->n_v, ctrl, weights);
+    if (knots_u != NULL)
+        memcpy(knots_u, s->knots_u, (s->n_u + (size_t)s->deg_u + 1) * sizeof *knots_u);
+    if (knots_v != NULL)
+        memcpy(knots_v, s->knots_v, (s->n_v + (size_t)s->deg_v + 1) * sizeof *knots_v);
     return PROJCURVE_OK;
 }

@@ -67,10 +67,14 @@ typedef struct cli_job {
     double time_ms;  /* total projection time */
     size_t failures; /* calls that failed, plus the failure places of their
                         results (projcurve_result_failure_count) */
+    double metres_per_unit; /* length unit of the inputs (0: unknown, the
+                               IGES file says millimetres) */
 } cli_job;
 
 /* Projects every curve onto every surface; failures are reported on stderr
- * and counted. Returns 0 only when memory runs out. */
+ * and counted. Returns 0 only when memory runs out (or n_surfaces * n_curves
+ * overflows); job->pairs is then NULL and job->n_pairs 0, so cli_job_free
+ * is safe either way. */
 int cli_run(projcurve_context *ctx, cli_job *job);
 void cli_job_free(cli_job *job);
 
@@ -78,12 +82,14 @@ void cli_job_free(cli_job *job);
  * condition at the traced points (distance of S(u,v) from the line through
  * P(t) along Dir, or the tangential part of S(u,v) - P(t) for orthogonal);
  * deviation = largest distance between the composed curve and S(u,v) at
- * the traced points (negative when not composed). */
+ * the traced points (negative when not composed). Returns 0 when the branch
+ * could not be measured (a failed call or allocation): residual is then NaN,
+ * never a 0 that would read as a perfect branch. */
 typedef struct cli_branch_quality {
     double residual, deviation;
 } cli_branch_quality;
-void cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
-                        size_t branch, cli_branch_quality *q);
+int cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
+                       size_t branch, cli_branch_quality *q);
 
 const char *cli_start_name(projcurve_branch_start s);
 const char *cli_end_name(projcurve_branch_end e);
@@ -93,8 +99,10 @@ int cli_write_iges(projcurve_context *ctx, const cli_job *job, const char *path)
 int cli_write_json(projcurve_context *ctx, const cli_job *job, const char *path);
 int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title,
                   const char *path);
-/* The short summary printed by project and demo. */
-void cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out);
+/* The short summary printed by project and demo; returns the number of
+ * branches that could not be measured (the callers count them as failures:
+ * a summary that cannot be computed is not a success). */
+size_t cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out);
 
 /* ---- commands ---- */
 int cli_cmd_info(int argc, char **argv);

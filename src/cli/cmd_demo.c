@@ -44,7 +44,7 @@ static int run_case(projcurve_context *ctx, const char *dir, const char *name, c
         code = cli_usage_error("out of memory");
     } else {
         printf("%s: ", title);
-        cli_print_summary(ctx, &job, stdout);
+        const size_t unmeasured = cli_print_summary(ctx, &job, stdout);
         char path[4096];
         int ok = 1;
         snprintf(path, sizeof path, "%s/%s.igs", dir, name);
@@ -55,7 +55,7 @@ static int run_case(projcurve_context *ctx, const char *dir, const char *name, c
         ok &= cli_write_svg(ctx, &job, title, path);
         if (!ok)
             code = CLI_EXIT_USAGE;
-        else if (job.failures)
+        else if (job.failures || unmeasured)
             code = CLI_EXIT_PROJECTION;
         else
             printf("  wrote %s/%s.igs, .json, .svg\n", dir, name);

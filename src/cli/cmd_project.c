@@ -135,7 +135,7 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
 {
     if (!cli_run(ctx, job))
         return cli_usage_error("out of memory");
-    cli_print_summary(ctx, job, stdout);
+    const size_t unmeasured = cli_print_summary(ctx, job, stdout);
     int ok = 1;
     if (a->iges)
         ok &= cli_write_iges(ctx, job, a->iges);
@@ -145,7 +145,7 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
         ok &= cli_write_svg(ctx, job, title, a->svg);
     if (!ok)
         return CLI_EXIT_USAGE;
-    return job->failures ? CLI_EXIT_PROJECTION : CLI_EXIT_OK;
+    return job->failures || unmeasured ? CLI_EXIT_PROJECTION : CLI_EXIT_OK;
 }
 
 int cli_cmd_project(int argc, char **argv)
@@ -184,6 +184,10 @@ int cli_cmd_project(int argc, char **argv)
         job.n_curves = in.n_curves;
         job.orthogonal = a.orthogonal;
         memcpy(job.dir, a.dir, sizeof job.dir);
+        /* the unit of the first input that declares one: coordinates are
+         * written as read, so the output keeps the input's size */
+        for (size_t m = 0; m < in.n_models && job.metres_per_unit == 0.0; ++m)
+            projcurve_model_length_unit(in.models[m], &job.metres_per_unit);
         job.opts = opts;
         char title[256];
         snprintf(title, sizeof title, "projcurve: %s projection of %s%s",

@@ -10,6 +10,13 @@ int cli_write_iges(projcurve_context *ctx, const cli_job *job, const char *path)
     if (projcurve_iges_writer_create(ctx, &w) != PROJCURVE_OK)
         return 0;
     int ok = 1;
+    /* a unit IGES has no flag for (a STEP file's own conversion) stays
+     * millimetres: the coordinates are written as read either way */
+    if (job->metres_per_unit > 0.0 &&
+        projcurve_iges_writer_set_length_unit(NULL, w, job->metres_per_unit) != PROJCURVE_OK)
+        fprintf(stderr, "projcurve: the input's length unit (%g m) has no IGES units flag; "
+                        "the output says millimetres\n",
+                job->metres_per_unit);
     for (size_t s = 0; ok && s < job->n_surfaces; ++s)
         ok = projcurve_iges_writer_add_surface(ctx, w, job->surfaces[s]) == PROJCURVE_OK;
     for (size_t c = 0; ok && c < job->n_curves; ++c) {

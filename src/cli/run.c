@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "cli.h"
@@ -8,10 +9,18 @@
 
 int cli_run(projcurve_context *ctx, cli_job *job)
 {
-    job->n_pairs = job->n_surfaces * job->n_curves;
-    job->pairs = calloc(job->n_pairs ? job->n_pairs : 1, sizeof *job->pairs);
-    if (job->pairs == NULL)
+    /* n_pairs is set only with the array it counts, so that cli_job_free
+     * never walks a NULL or short array. */
+    job->pairs = NULL;
+    job->n_pairs = 0;
+    const size_t n = job->n_surfaces * job->n_curves;
+    if (job->n_curves != 0 && n / job->n_curves != job->n_surfaces)
         return 0;
+    cli_pair *pairs = calloc(n ? n : 1, sizeof *pairs);
+    if (pairs == NULL)
+        return 0;
+    job->pairs = pairs;
+    job->n_pairs = n;
     job->time_ms = 0.0;
     job->failures = 0;
     size_t k = 0;
@@ -81,24 +90,43 @@ static double residual_at(projcurve_context *ctx, const cli_job *job, const cli_
     return norm3(c) / norm3(job->dir);
 }
 
-void cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
-                        size_t branch, cli_branch_quality *q)
+int cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
+                       size_t branch, cli_branch_quality *q)
 {
-    q->residual = 0.0;
+    /* Unknown until measured: a failure below leaves NaN, never a 0 that
+     * would read as a perfect branch. */
+    q->residual = NAN;
     q->deviation = -1.0;
     size_t n = 0;
     double probe[3];
-    if (projcurve_result_branch_points(ctx, pair->result, branch, 0, probe, &n) != PROJCURVE_OK ||
-        n == 0)
-        return;
+    if (projcurve_result_branch_points(ctx, pair->result, branch, 0, probe, &n) != PROJCURVE_OK)
+        return 0;
+    if (n == 0) {
+        q->residual = 0.0; /* no traced point: nothing violates the condition */
+        return 1;
+    }
+    if (n > SIZE_MAX / (3 * sizeof(double)))
+        return 0;
     double *tuv = malloc(3 * n * sizeof *tuv);
     if (tuv == NULL)
-        return;
+        return 0;
     projcurve_curve *composed = NULL;
-    if (projcurve_result_branch_curve(ctx, pair->result, branch, &composed) == PROJCURVE_OK)
+    const projcurve_status cst = projcurve_result_branch_curve(ctx, pair->result, branch, &composed);
+    /* A branch without composed pieces (INVALID_ARGUMENT) or too short in t
+     * to form a curve (OUT_OF_RANGE) has no deviation; any other failure
+     * (memory) makes the measurement unknown. */
+    int measured = cst == PROJCURVE_OK || cst == PROJCURVE_ERR_INVALID_ARGUMENT ||
+                   cst == PROJCURVE_ERR_OUT_OF_RANGE;
+    if (cst == PROJCURVE_OK)
         q->deviation = 0.0;
     size_t got = 0;
-    if (projcurve_result_branch_points(ctx, pair->result, branch, n, tuv, &got) == PROJCURVE_OK) {
+    if (!measured) {
+        /* leave the residual unknown */
+    } else if (projcurve_result_branch_points(ctx, pair->result, branch, n, tuv, &got) !=
+               PROJCURVE_OK) {
+        measured = 0;
+    } else {
+        q->residual = 0.0;
         double t0 = 0.0, t1 = 0.0;
         if (composed)
             projcurve_curve_domain(ctx, composed, &t0, &t1);
@@ -117,6 +145,11 @@ void cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pa
     }
     projcurve_curve_destroy(composed);
     free(tuv);
+    if (!measured) {
+        q->residual = NAN;
+        q->deviation = -1.0;
+    }
+    return measured;
 }
 
 const char *cli_start_name(projcurve_branch_start s)

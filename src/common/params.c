@@ -24,8 +24,10 @@ void pc_params_defaults(pc_params *p)
         .jump_detection = PC_DEFAULT_JUMP_DETECTION,
         .pcurve_degree = PC_DEFAULT_PCURVE_DEGREE,
         .foot_points = PC_DEFAULT_FOOT_POINTS,
+        .curve_degree = PC_DEFAULT_CURVE_DEGREE,
         .budget = NULL,
         .sweep_criteria_only = 0,
+        .compact = 1,
     };
 }
 

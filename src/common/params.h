@@ -27,6 +27,7 @@
 #define PC_DEFAULT_JUMP_DETECTION 1
 #define PC_DEFAULT_PCURVE_DEGREE 1
 #define PC_DEFAULT_FOOT_POINTS PROJCURVE_FOOT_POINTS_MINIMA
+#define PC_DEFAULT_CURVE_DEGREE 5
 
 /* Automatic eps_D, while TOL_DISTANCE is unset: this fraction of the model
  * size (projcurve.h). */
@@ -55,7 +56,8 @@
     X(long long, compose)                                                                  \
     X(long long, jump_detection)                                                           \
     X(long long, pcurve_degree)  /* 1 or 3 */                                              \
-    X(long long, foot_points)    /* PROJCURVE_FOOT_POINTS_* */
+    X(long long, foot_points)    /* PROJCURVE_FOOT_POINTS_* */                             \
+    X(long long, curve_degree)   /* of the compact 3D curve (fit/) */
 
 #define PC_PARAMS_DECLARE_FIELD(type, field) type field;
 
@@ -71,6 +73,10 @@ typedef struct pc_params {
      * periodic full search), so that tests can show what the criteria
      * alone find. 0 in every projection a caller can ask for. */
     int sweep_criteria_only;
+    /* Not an option: 0 skips the compact fits (fit/), so that the
+     * benchmark can time what they add. 1 in every projection a caller
+     * can ask for. */
+    int compact;
 } pc_params;
 
 /* Fills p with the default of every option, eps_D unset, no budget. */

@@ -2,7 +2,8 @@
 /*
  * pc_directional_project: the directional equations and the line seed
  * finder handed to the tracing engine, then tolerance control and
- * composition (refine/) when asked, then the verification pass.
+ * composition (refine/) when asked, then the verification pass and the
+ * compact forms (fit/).
  */
 #include "directional/directional_project.h"
 
@@ -11,6 +12,7 @@
 #include "common/error.h"
 #include "directional/directional.h"
 #include "directional/line_seeds.h"
+#include "fit/fit.h"
 #include "refine/refine.h"
 #include "trace/result.h"
 #include "trace/trace.h"
@@ -54,13 +56,14 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
      * MAX_POINTS; not once the budget is spent (the traced polylines stay) */
     if (p->compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED) &&
         pc_budget_status(budget) == PROJCURVE_OK) {
-        pc_budget_stage(budget, 0.5, 1.0);
+        pc_budget_stage(budget, 0.5, PC_FIT_STAGE_FROM);
         const projcurve_status cs = pc_refine_and_compose(ctx, &proj, p, r);
         if (cs != PROJCURVE_OK)
             st = cs;
     }
     /* only verified branches are returned, also from a partial result */
     st = pc_verify_kept(ctx, &proj, p, r, st);
+    st = pc_fit_stage(ctx, &proj, p, r, st);
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     if (finder.no_memory && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))

@@ -121,6 +121,11 @@ projcurve_status pc_iges_analytic_surface(const pc_iges_file *f, size_t de, cons
  * into the model (iges_units.c); fields that are missing or not understood
  * leave the model's unit or precision unset. */
 projcurve_status pc_iges_read_units(const pc_iges_file *f, projcurve_model *model);
+/* The units flag (1 .. 11, not 3) of a length unit given in metres, 0 when
+ * no flag names it (iges_units.c). */
+int pc_iges_unit_flag(double metres_per_unit);
+/* The unit name (field 15) of a units flag; NULL for 3 and non-flags. */
+const char *pc_iges_unit_name(int flag);
 
 /* Faces and the shape of the file (iges_topology.c), after the entities:
  * marks what it reads in consumed. */

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * IGES global section: the units flag (field 14), the units name (field 15)
- * and the minimum resolution (field 19, in model units), IGES 5.3 s2.2.4.
+ * and the minimum resolution (field 19, in model units), IGES 5.3 s2.2.4;
+ * and the flag and name a writer gives a length unit.
  */
 #include <ctype.h>
 #include <math.h>
@@ -22,16 +23,34 @@ typedef struct gfield {
     size_t len;
 } gfield;
 
-/* The metres of the units flags 1 .. 11 (IGES 5.3 table 3). */
-static const double k_flag_metres[] = {0.0,    0.0254, 0.001,   0.0,  0.3048, 1609.344,
-                                       1.0,    1000.0, 2.54e-5, 1e-6, 0.01,   2.54e-8};
-
+/* The units flags 1 .. 11 (IGES 5.3 table 3): metres and unit name (field
+ * 15); flag 3 names its unit in field 15 alone and has no entry. */
 static const struct {
-    const char *name;
     double metres;
-} k_unit_names[] = {{"IN", 0.0254},    {"INCH", 0.0254}, {"MM", 0.001},  {"FT", 0.3048},
-                    {"MI", 1609.344},  {"M", 1.0},       {"KM", 1000.0}, {"MIL", 2.54e-5},
-                    {"UM", 1e-6},      {"CM", 0.01},     {"UIN", 2.54e-8}};
+    const char *name;
+} k_flags[] = {{0.0, NULL},      {0.0254, "IN"},  {0.001, "MM"}, {0.0, NULL},
+               {0.3048, "FT"},   {1609.344, "MI"}, {1.0, "M"},    {1000.0, "KM"},
+               {2.54e-5, "MIL"}, {1e-6, "UM"},    {0.01, "CM"},  {2.54e-8, "UIN"}};
+#define PC_IGES_FLAG_COUNT ((int)(sizeof k_flags / sizeof *k_flags))
+/* Two lengths in metres name the same unit when they agree to this
+ * fraction: a unit computed from a STEP conversion factor (25.4 mm) carries
+ * rounding of a few ulps. */
+#define PC_IGES_UNIT_MATCH 1e-9
+
+int pc_iges_unit_flag(double metres_per_unit)
+{
+    for (int flag = 1; flag < PC_IGES_FLAG_COUNT; ++flag)
+        if (k_flags[flag].name != NULL &&
+            fabs(metres_per_unit - k_flags[flag].metres) <=
+                PC_IGES_UNIT_MATCH * k_flags[flag].metres)
+            return flag;
+    return 0;
+}
+
+const char *pc_iges_unit_name(int flag)
+{
+    return flag > 0 && flag < PC_IGES_FLAG_COUNT ? k_flags[flag].name : NULL;
+}
 
 /* Splits the global text into fields 1 .. n (Hollerith strings kept whole). */
 static size_t split(const pc_iges_file *f, const char *g, size_t len, gfield *out, size_t max)
@@ -80,12 +99,19 @@ static int number(const gfield *fd, double *out)
     return 1;
 }
 
+static int field_is(const gfield *fd, const char *name)
+{
+    return fd->len == strlen(name) && memcmp(fd->text, name, fd->len) == 0;
+}
+
+/* The metres of a unit name (field 15): a flag's name, or INCH. */
 static double named_unit(const gfield *fd)
 {
-    for (size_t i = 0; i < sizeof k_unit_names / sizeof *k_unit_names; ++i)
-        if (fd->len == strlen(k_unit_names[i].name) &&
-            memcmp(fd->text, k_unit_names[i].name, fd->len) == 0)
-            return k_unit_names[i].metres;
+    if (field_is(fd, "INCH"))
+        return k_flags[1].metres;
+    for (int flag = 1; flag < PC_IGES_FLAG_COUNT; ++flag)
+        if (k_flags[flag].name != NULL && field_is(fd, k_flags[flag].name))
+            return k_flags[flag].metres;
     return 0.0;
 }
 
@@ -105,7 +131,7 @@ projcurve_status pc_iges_read_units(const pc_iges_file *f, projcurve_model *mode
     double flag = 0.0, resolution = 0.0, metres = 0.0;
     if (n >= PC_IGES_UNITS_FLAG && number(&fields[PC_IGES_UNITS_FLAG - 1], &flag) &&
         flag >= 1.0 && flag <= 11.0 && flag == floor(flag))
-        metres = k_flag_metres[(int)flag];
+        metres = k_flags[(int)flag].metres;
     if (metres == 0.0 && n >= PC_IGES_UNITS_NAME)
         metres = named_unit(&fields[PC_IGES_UNITS_NAME - 1]);
     if (metres > 0.0) {

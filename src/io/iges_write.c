@@ -10,7 +10,11 @@
 #include <string.h>
 
 #include "common/error.h"
+#include "io/iges.h"
 #include "io/iges_write.h"
+
+/* The units flag of millimetres, the unit of a writer told no other. */
+#define PC_IGES_UNIT_FLAG_MM 2
 
 #define PC_IGES_G_WIDTH 72
 #define PC_IGES_P_WIDTH 64
@@ -40,6 +44,14 @@ projcurve_status pc_iges_out_add(projcurve_context *ctx, pc_iges_out *out, int t
     *de = 2 * out->count + 1;
     ++out->count;
     return PROJCURVE_OK;
+}
+
+void pc_iges_out_truncate(pc_iges_out *out, size_t count)
+{
+    for (size_t i = count; i < out->count; ++i)
+        free(out->entities[i].params);
+    if (count < out->count)
+        out->count = count;
 }
 
 void pc_iges_out_free(pc_iges_out *out)
@@ -114,22 +126,28 @@ static void hollerith(char *out, size_t cap, const char *s)
     snprintf(out, cap, "%zuH%s,", strlen(s), s);
 }
 
-static size_t global_section(sink *s)
+/* unit_flag: pc_iges_unit_flag's, 0 for millimetres */
+static size_t global_section(sink *s, int unit_flag)
 {
+    const char *unit_name = pc_iges_unit_name(unit_flag);
+    if (unit_name == NULL) {
+        unit_flag = PC_IGES_UNIT_FLAG_MM;
+        unit_name = pc_iges_unit_name(unit_flag);
+    }
     char g[1024], h[6][96];
     hollerith(h[0], sizeof h[0], "libprojcurve model");
     hollerith(h[1], sizeof h[1], "projcurve.igs");
     hollerith(h[2], sizeof h[2], "libprojcurve " PROJCURVE_VERSION_STRING);
     hollerith(h[3], sizeof h[3], "libprojcurve " PROJCURVE_VERSION_STRING);
     hollerith(h[4], sizeof h[4], "20000101.000000");
-    hollerith(h[5], sizeof h[5], "MM");
+    hollerith(h[5], sizeof h[5], unit_name);
     /* Delimiters, sender id, file, system, preprocessor, integer bits,
-     * single/double precision ranges, receiver id, scale, units (2 = mm),
+     * single/double precision ranges, receiver id, scale, units (flag, name),
      * line weights, max width, date, resolution, max coordinate, author,
      * organisation, IGES version 11 (= 5.3), drafting standard, date. */
     snprintf(g, sizeof g,
-             "1H,,1H;,%s%s%s%s32,38,6,308,15,%s1.,2,%s1,1.,%s1.E-10,0.,,,11,0,%s", h[0],
-             h[1], h[2], h[3], h[0], h[5], h[4], h[4]);
+             "1H,,1H;,%s%s%s%s32,38,6,308,15,%s1.,%d,%s1,1.,%s1.E-10,0.,,,11,0,%s", h[0],
+             h[1], h[2], h[3], h[0], unit_flag, h[5], h[4], h[4]);
     g[strlen(g) - 1] = ';';
     return records(s, g, PC_IGES_G_WIDTH, 'G', 1, 0);
 }
@@ -139,7 +157,7 @@ static projcurve_status layout(projcurve_context *ctx, const pc_iges_out *out, s
     char line[96];
     snprintf(line, sizeof line, "%-72sS%7d\n", "libprojcurve: projected curves on NURBS surfaces", 1);
     put(s, line);
-    const size_t n_g = global_section(s);
+    const size_t n_g = global_section(s, out->unit_flag);
     /* Parameter record counts first: the directory points into P. */
     size_t *p_start = calloc(out->count + 1, sizeof *p_start);
     size_t *p_count = calloc(out->count + 1, sizeof *p_count);

@@ -28,6 +28,7 @@ typedef struct pc_iges_out_entity {
 typedef struct pc_iges_out {
     pc_iges_out_entity *entities;
     size_t count, cap;
+    int unit_flag; /* global parameters 14 and 15 (pc_iges_unit_flag); 0 = millimetres */
 } pc_iges_out;
 
 /* A growing text buffer for parameter fields. */
@@ -47,6 +48,9 @@ void pc_text_buf_end(pc_text_buf *b);
 projcurve_status pc_iges_out_add(projcurve_context *ctx, pc_iges_out *out, int type, int form,
                                  const char *status, pc_text_buf *params, size_t *de);
 void pc_iges_out_free(pc_iges_out *out);
+/* Drops the entities from index count on (those added since out held
+ * count), so that a failed addition of several entities leaves none. */
+void pc_iges_out_truncate(pc_iges_out *out, size_t count);
 
 /* Parameter text of entity 128 / 126 from the library's NURBS storage; for
  * 126 `planar_z` != 0 marks a curve lying in the plane z = 0 (a pcurve). */

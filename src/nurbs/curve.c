@@ -63,6 +63,19 @@ projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, 
     return PROJCURVE_OK;
 }
 
+void pc_nurbs_points_from_homogeneous(const double *cw, size_t n, double *ctrl,
+                                      double *weights)
+{
+    for (size_t i = 0; i < n; ++i) {
+        const double w = cw[4 * i + 3];
+        if (ctrl != NULL)
+            for (size_t k = 0; k < 3; ++k)
+                ctrl[3 * i + k] = cw[4 * i + k] / w;
+        if (weights != NULL)
+            weights[i] = w;
+    }
+}
+
 void pc_nurbs_curve_free(pc_nurbs_curve *c)
 {
     if (c == NULL)

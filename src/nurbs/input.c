@@ -78,6 +78,13 @@ projcurve_status pc_input_check_sizes(projcurve_context *ctx, int degree_u, size
         return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW,
                        "a control net of %zu x %zu points overflows the address space", n_u,
                        n_v);
+    /* The caller's size limit, once the sizes are known to be representable. */
+    const size_t limit = pc_context_max_control_points(ctx);
+    if (n_u * n_v > limit)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "%zu x %zu control points exceed the limit CONTROL_POINTS = %zu "
+                       "(see projcurve_context_set_limit)",
+                       n_u, n_v, limit);
     return PROJCURVE_OK;
 }
 

@@ -16,7 +16,8 @@ projcurve_status pc_input_check_degree(projcurve_context *ctx, const char *name,
                                        size_t n_ctrl);
 
 /* OVERFLOW unless every array derived from an n_u x n_v net fits in memory
- * arithmetic (curves pass n_v = 1, degree_v = 0). */
+ * arithmetic (curves pass n_v = 1, degree_v = 0); OUT_OF_RANGE when
+ * n_u * n_v passes the context's PROJCURVE_LIMIT_CONTROL_POINTS. */
 projcurve_status pc_input_check_sizes(projcurve_context *ctx, int degree_u, size_t n_u,
                                       int degree_v, size_t n_v);
 

@@ -100,6 +100,10 @@ void pc_nurbs_surface_bind(pc_nurbs_surface *s);
 projcurve_status pc_nurbs_curve_init(projcurve_context *ctx, pc_nurbs_curve *c, int degree,
                                      size_t n_ctrl, const double *ctrl, const double *weights,
                                      const double *knots);
+/* The n homogeneous points cw (w x, w y, w z, w) as Cartesian points ctrl
+ * (3 n) and weights (n); either output may be NULL. */
+void pc_nurbs_points_from_homogeneous(const double *cw, size_t n, double *ctrl,
+                                      double *weights);
 void pc_nurbs_curve_free(pc_nurbs_curve *c);
 
 projcurve_status pc_nurbs_surface_init(projcurve_context *ctx, pc_nurbs_surface *s,

@@ -3,11 +3,12 @@
  * pc_ortho_project and pc_ortho_project_implicit ([PW96]): the orthogonal
  * equations and foot-point seeds handed to the tracing engine, the
  * splitting at centres of curvature, tolerance control and composition,
- * verification; and the implicit-surface variant.
+ * verification, the compact forms (fit/); and the implicit-surface variant.
  */
 #include "ortho/ortho_project.h"
 
 #include "common/error.h"
+#include "fit/fit.h"
 #include "ortho/implicit.h"
 #include "ortho/ortho_centres.h"
 #include "ortho/ortho_duplicates.h"
@@ -67,12 +68,13 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
         name_singular_ends(r);
         r->stats.tol_distance = p->tol_distance;
         if (p->compose && pc_budget_status(budget) == PROJCURVE_OK) {
-            pc_budget_stage(budget, 0.5, 1.0);
+            pc_budget_stage(budget, 0.5, PC_FIT_STAGE_FROM);
             status = pc_refine_and_compose(ctx, &proj, p, r);
         }
     }
     /* only verified branches are returned, also from a partial result */
     status = pc_verify_kept(ctx, &proj, p, r, status);
+    status = pc_fit_stage(ctx, &proj, p, r, status);
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */
     if (cache.callback_failed && pc_status_keeps_result(status))

@@ -311,7 +311,7 @@ static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_
 {
     const projcurve_branch_end last_end = res->branches[i].end;
     const size_t n = out->count;
-    size_t pos = 0, lo, hi, runs = 0, index = i;
+    size_t pos = 0, lo, hi, runs = 0, index = i, last_lo = 0, last_hi = 0;
     *pieces = 0;
     int silhouette = 0; /* the kind of the gaps before the current run */
     int at_end = 0;     /* the last run reaches the branch's end */
@@ -333,8 +333,8 @@ static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_
         }
         if (!at_start)
             b->start = silhouette ? PROJCURVE_START_SILHOUETTE : PROJCURVE_START_FAILED;
-        at_end = descending ? lo == 0 || gap_stretch_short(r, out, 0, lo - 1, lo)
-                            : hi + 1 == n || gap_stretch_short(r, out, hi + 1, n - 1, hi);
+        last_lo = lo;
+        last_hi = hi;
         b->end = last_end;
         const projcurve_status st = store_run(r, b, out, lo, hi, descending);
         *pieces += b->n_pieces;
@@ -342,6 +342,14 @@ static projcurve_status store_branch(pc_refiner *r, projcurve_result *res, size_
             return st;
         ++runs;
     }
+    /* Whether the last run reaches the branch's end, checked once: checking
+     * it after every run walked the rest of the polyline each time, O(runs
+     * x vertices) after the work limit had stopped the call (5 s on a
+     * fuzzed orthogonal input, tests/fuzz/corpus/project/regression-gap-runs). */
+    if (runs > 0)
+        at_end = descending ? last_lo == 0 || gap_stretch_short(r, out, 0, last_lo - 1, last_lo)
+                            : last_hi + 1 == n ||
+                                  gap_stretch_short(r, out, last_hi + 1, n - 1, last_hi);
     if (runs == 0 && last_end != PROJCURVE_END_LIMIT) /* nothing could be composed:
                                                          the traced polyline stays */
         res->branches[i].end = PROJCURVE_END_FAILED;

@@ -138,8 +138,18 @@ void pc_branch_clear_pieces(pc_branch *b)
     b->n_pieces = 0;
 }
 
+void pc_bspline_free(pc_bspline *s)
+{
+    free(s->knots);
+    free(s->poles);
+    free(s->weights);
+    memset(s, 0, sizeof *s);
+}
+
 static void branch_free(pc_branch *b)
 {
+    pc_bspline_free(&b->compact_pcurve);
+    pc_bspline_free(&b->compact_curve);
     pc_branch_clear_pieces(b);
     free(b->pieces);
     free(b->points);

@@ -26,6 +26,24 @@ typedef struct pc_piece {
     double uv_ctrl[2 * PROJCURVE_MAX_PCURVE_POINTS];
 } pc_piece;
 
+/* A B-spline over the curve parameter: `dim` Cartesian coordinates per
+ * pole, n_poles + degree + 1 clamped knots, weights NULL when polynomial.
+ * n_poles 0: none. */
+typedef struct pc_bspline {
+    int degree, dim;
+    size_t n_poles;
+    double *knots;
+    double *poles;
+    double *weights;
+} pc_bspline;
+
+/* How a branch's compact pcurve was made (fit/). */
+typedef enum pc_compact_kind {
+    PC_COMPACT_NONE = 0,   /* no compact forms (not composed, or not fitted) */
+    PC_COMPACT_FITTED = 1, /* the fitted cubic, checked within eps_D */
+    PC_COMPACT_JOINED = 2  /* the fit hit its bound: the pieces' pcurves joined */
+} pc_compact_kind;
+
 typedef struct pc_branch {
     double *points;     /* point_dim doubles per vertex: t, u, v (or t, x, y, z) */
     size_t n_points, cap_points;
@@ -33,6 +51,12 @@ typedef struct pc_branch {
     projcurve_branch_end end;
     pc_piece *pieces;
     size_t n_pieces, cap_pieces;
+    /* The compact forms (fit/), over increasing t: the pcurve (dim 2) and
+     * the 3D curve (dim 3, n_poles 0 when the fit hit its bound), with the
+     * largest distance the fit measured from the exact projection. */
+    pc_compact_kind compact;
+    pc_bspline compact_pcurve, compact_curve;
+    double compact_pcurve_error, compact_curve_error;
 } pc_branch;
 
 typedef struct pc_stats {
@@ -74,6 +98,8 @@ projcurve_status pc_branch_add_piece(projcurve_context *ctx, pc_branch *b, int d
  * the straight segment between the piece's (u, v) ends): degree 1..3 with
  * degree + 1 (u, v) control points. */
 void pc_branch_set_last_pcurve(pc_branch *b, int degree, const double *uv_ctrl);
+/* Releases what *s holds and leaves it empty (n_poles 0). */
+void pc_bspline_free(pc_bspline *s);
 /* Removes every piece of the branch (when recomposing). */
 void pc_branch_clear_pieces(pc_branch *b);
 /* Removes the branch at index i, keeping the order of the others. */

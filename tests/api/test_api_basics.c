@@ -115,6 +115,7 @@ static const option_case option_cases[] = {
      PROJCURVE_FOOT_POINTS_ALL, PROJCURVE_FOOT_POINTS_MINIMA, 0},
     {PROJCURVE_OPT_TIME_LIMIT, PROJCURVE_OPTION_DOUBLE, 0.0, 1e9, 0.0, 0},
     {PROJCURVE_OPT_MAX_WORK, PROJCURVE_OPTION_INTEGER, 0, 1099511627776.0, 0, 0},
+    {PROJCURVE_OPT_CURVE_DEGREE, PROJCURVE_OPTION_INTEGER, 1, 25, 5, 0},
 };
 #define N_OPTION_CASES (sizeof option_cases / sizeof option_cases[0])
 
@@ -134,7 +135,7 @@ static void test_option_info(void)
     }
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    const int unknown[] = {0, -1, 16, 1000};
+    const int unknown[] = {0, -1, 17, 1000};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         double untouched = 42.0;
         CHECK_STATUS(projcurve_option_info(ctx, (projcurve_option)unknown[i], NULL, NULL, NULL,
@@ -282,7 +283,7 @@ static void test_options_bad_handles(void)
     CHECK_STATUS(projcurve_options_get_int(ctx, opts, k_i, NULL), PROJCURVE_ERR_NULL_ARGUMENT);
     CHECK(v == 3.0 && iv == 3);
 
-    const int unknown[] = {0, -5, 16, 77};
+    const int unknown[] = {0, -5, 17, 77};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         const projcurve_option k = (projcurve_option)unknown[i];
         CHECK_STATUS(projcurve_options_set_double(ctx, opts, k, 1.0), PROJCURVE_ERR_UNKNOWN_OPTION);

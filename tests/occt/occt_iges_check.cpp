@@ -17,6 +17,7 @@
 #include <BRep_Tool.hxx>
 #include <Geom_Curve.hxx>
 #include <Geom2d_Curve.hxx>
+#include <Geom_BSplineCurve.hxx>
 #include <Geom_BSplineSurface.hxx>
 #include <Geom_Surface.hxx>
 #include <IGESGeom_BSplineCurve.hxx>
@@ -277,6 +278,82 @@ void check_curves_on_surface(const std::string &path, const projcurve_surface *s
     }
 }
 
+// The compact forms (projcurve_iges_writer_add_result) as Open CASCADE
+// reads them: each 142's 3D curve is a Geom_BSplineCurve of degree at most
+// Geom_BSplineCurve::MaxDegree() (25) with the poles of our compact curve,
+// and agrees with it, and S at OCCT's pcurve agrees with S at ours, at
+// kPieceSamples parameters per knot span.
+void check_compact_curves(const std::string &path, const projcurve_surface *s,
+                          const projcurve_result *r, double scale)
+{
+    IGESControl_Reader reader;
+    CHECK(reader.ReadFile(path.c_str()) == IFSelect_RetDone);
+    Handle(IGESData_IGESModel) model = reader.IGESModel();
+    std::vector<Handle(IGESGeom_CurveOnSurface)> cos;
+    for (Standard_Integer i = 1; !model.IsNull() && i <= model->NbEntities(); ++i) {
+        Handle(IGESGeom_CurveOnSurface) c =
+            Handle(IGESGeom_CurveOnSurface)::DownCast(model->Entity(i));
+        if (!c.IsNull())
+            cos.push_back(c);
+    }
+    CHECK(cos.size() == projcurve_result_branch_count(r));
+    IGESToBRep_BasicCurve curves;
+    IGESToBRep_BasicSurface surfaces;
+    for (size_t b = 0; b < cos.size() && b < projcurve_result_branch_count(r); ++b) {
+        Handle(IGESGeom_BSplineSurface) gs =
+            Handle(IGESGeom_BSplineSurface)::DownCast(cos[b]->Surface());
+        Handle(IGESGeom_BSplineCurve) g2 =
+            Handle(IGESGeom_BSplineCurve)::DownCast(cos[b]->CurveUV());
+        Handle(IGESGeom_BSplineCurve) g3 =
+            Handle(IGESGeom_BSplineCurve)::DownCast(cos[b]->Curve3D());
+        CHECK(!gs.IsNull() && !g2.IsNull() && !g3.IsNull());
+        if (gs.IsNull() || g2.IsNull() || g3.IsNull())
+            continue;
+        Handle(Geom_Surface) occt_s = surfaces.TransferBSplineSurface(gs);
+        Handle(Geom2d_Curve) occt_p = curves.Transfer2dBSplineCurve(g2);
+        Handle(Geom_BSplineCurve) occt_c =
+            Handle(Geom_BSplineCurve)::DownCast(curves.TransferBSplineCurve(g3));
+        CHECK(!occt_s.IsNull() && !occt_p.IsNull() && !occt_c.IsNull());
+        projcurve_curve *ours = nullptr, *pcurve = nullptr;
+        CHECK_OK(projcurve_result_branch_compact_curve(ctx, r, b, &ours));
+        CHECK_OK(projcurve_result_branch_compact_pcurve(ctx, r, b, &pcurve));
+        if (occt_s.IsNull() || occt_p.IsNull() || occt_c.IsNull() || !ours || !pcurve) {
+            projcurve_curve_destroy(ours);
+            projcurve_curve_destroy(pcurve);
+            continue;
+        }
+        int degree = 0;
+        size_t n_poles = 0, n_knots = 0;
+        CHECK_OK(projcurve_curve_nurbs_info(ctx, ours, &degree, &n_poles, &n_knots, nullptr));
+        CHECK(occt_c->Degree() == degree && occt_c->Degree() <= Geom_BSplineCurve::MaxDegree());
+        CHECK(occt_c->NbPoles() == static_cast<int>(n_poles));
+        std::vector<double> knots(n_knots);
+        CHECK_OK(projcurve_curve_nurbs_data(ctx, ours, nullptr, nullptr, knots.data()));
+        double gap_c = 0.0, gap_s = 0.0;
+        for (size_t k = static_cast<size_t>(degree); k < n_poles; ++k)
+            for (int i = 0; i < kPieceSamples; ++i) {
+                const double t = knots[k] + i / (kPieceSamples - 1.0) * (knots[k + 1] - knots[k]);
+                double p[3], uv[3], q[3];
+                CHECK_OK(projcurve_curve_eval(ctx, ours, t, 0, p));
+                CHECK_OK(projcurve_curve_eval(ctx, pcurve, t, 0, uv));
+                CHECK_OK(projcurve_surface_eval(ctx, s, uv[0], uv[1], 0, q));
+                const gp_Pnt2d puv = occt_p->Value(t);
+                gap_c = std::max(gap_c, distance(occt_c->Value(t), p));
+                gap_s = std::max(gap_s, distance(occt_s->Value(puv.X(), puv.Y()), q));
+            }
+        if (!(gap_c <= kAgreeRel * scale) || !(gap_s <= kAgreeRel * scale))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "%s: 142 #%zu: OCCT's compact 3D curve is %g from ours, its "
+                            "S(p(t)) %g from ours (allowed %g)",
+                            path.c_str(), b, gap_c, gap_s, kAgreeRel * scale);
+        ++pc_test_checks;
+        std::printf("%s: branch %zu: OCCT reads the compact curve of degree %d with %d poles\n",
+                    path.c_str(), b, occt_c->Degree(), occt_c->NbPoles());
+        projcurve_curve_destroy(ours);
+        projcurve_curve_destroy(pcurve);
+    }
+}
+
 projcurve_surface *plane()
 {
     const double ctrl[] = {0, 0, 0, 10, 0, 0, 0, 10, 1, 10, 10, 1};
@@ -339,7 +416,7 @@ void check_case(const std::string &dir_out, const char *name, const double dir[3
     CHECK(branches > 0);
     projcurve_iges_writer *w = nullptr;
     CHECK_OK(projcurve_iges_writer_create(ctx, &w));
-    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, w, s, r));
     const std::string out = dir_out + "/occt_" + name + ".igs";
     CHECK_OK(projcurve_iges_writer_write(ctx, w, out.c_str()));
     projcurve_iges_writer_destroy(w);
@@ -353,6 +430,14 @@ void check_case(const std::string &dir_out, const char *name, const double dir[3
                                                  corners[1][1] - corners[0][1],
                                                  corners[1][2] - corners[0][2]));
     check_curves_on_surface(out, s, r, size);
+    // the default output: the compact forms
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    const std::string compact = dir_out + "/occt_compact_" + name + ".igs";
+    CHECK_OK(projcurve_iges_writer_write(ctx, w, compact.c_str()));
+    projcurve_iges_writer_destroy(w);
+    check_file(compact, {{128, 1}, {126, 2 * branches}, {142, branches}}, 0, branches);
+    check_compact_curves(compact, s, r, size);
     projcurve_result_destroy(r);
     projcurve_model_destroy(in);
 }

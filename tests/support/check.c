@@ -64,3 +64,27 @@ double pc_test_rng_uniform(pc_test_rng *rng, double lo, double hi)
     const unsigned long long r = x * 0x2545F4914F6CDD1Dull;
     return lo + (hi - lo) * ((double)(r >> 11) * 0x1.0p-53);
 }
+
+char *pc_test_read_file(const char *path, size_t *len)
+{
+    FILE *fp = fopen(path, "rb");
+    if (fp == NULL)
+        return NULL;
+    char *text = NULL;
+    long n = -1;
+    if (fseek(fp, 0, SEEK_END) == 0)
+        n = ftell(fp);
+    if (n >= 0 && fseek(fp, 0, SEEK_SET) == 0)
+        text = malloc((size_t)n + 1);
+    if (text != NULL && fread(text, 1, (size_t)n, fp) != (size_t)n) {
+        free(text);
+        text = NULL;
+    }
+    fclose(fp);
+    if (text != NULL) {
+        text[n] = '\0';
+        if (len != NULL)
+            *len = (size_t)n;
+    }
+    return text;
+}

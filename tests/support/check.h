@@ -66,6 +66,11 @@ void pc_test_missing_data(const char *what);
  * $PROJCURVE_TEST_DATA_DIR if set, else the source tree's tests/data. */
 const char *pc_test_data_path(const char *relative);
 
+/* The whole file at path, NUL-terminated, malloc'd (release with free);
+ * its length in *len (may be NULL). NULL when it cannot be opened or read
+ * whole. */
+char *pc_test_read_file(const char *path, size_t *len);
+
 /* Deterministic pseudo-random numbers for tests (xorshift64*). */
 typedef struct pc_test_rng {
     unsigned long long state;

@@ -27,30 +27,13 @@
 
 static char path[256];
 
-static char *file_text(const char *p, size_t *len)
-{
-    FILE *fp = fopen(p, "rb");
-    if (fp == NULL)
-        return NULL;
-    fseek(fp, 0, SEEK_END);
-    const long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *text = n >= 0 ? malloc((size_t)n + 1) : NULL;
-    if (text != NULL) {
-        *len = fread(text, 1, (size_t)n, fp);
-        text[*len] = '\0';
-    }
-    fclose(fp);
-    return text;
-}
-
 /* Checks S(pcurve(t)) against every piece of branch 0 of r; the pcurve is
  * the 2D curve of the written file's first 142. */
 static void check_written_pcurve(const projcurve_surface *s, const projcurve_result *r,
                                  int expect_degree)
 {
     size_t len = 0;
-    char *text = file_text(path, &len);
+    char *text = pc_test_read_file(path, &len);
     CHECK(text != NULL);
     if (text == NULL)
         return;
@@ -119,7 +102,7 @@ static void write_example1(int degree)
     CHECK(r != NULL && projcurve_result_branch_count(r) == 1);
     projcurve_iges_writer *w = NULL;
     CHECK_OK(projcurve_iges_writer_create(NULL, &w));
-    CHECK_OK(projcurve_iges_writer_add_result(NULL, w, s, r));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(NULL, w, s, r));
     CHECK_OK(projcurve_iges_writer_write(NULL, w, path));
     projcurve_iges_writer_destroy(w);
     if (r != NULL && projcurve_result_branch_count(r) == 1)

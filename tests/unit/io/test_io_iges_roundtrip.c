@@ -92,23 +92,6 @@ static projcurve_model *read_back(const char *path)
     return m;
 }
 
-static char *file_text(const char *path)
-{
-    FILE *fp = fopen(path, "rb");
-    if (fp == NULL)
-        return NULL;
-    fseek(fp, 0, SEEK_END);
-    const long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *t = calloc((size_t)n + 1, 1);
-    if (t != NULL && fread(t, 1, (size_t)n, fp) != (size_t)n) {
-        free(t);
-        t = NULL;
-    }
-    fclose(fp);
-    return t;
-}
-
 /* An exact quarter cylinder (rational, u) x a cubic in v with uneven knots,
  * at a large offset so that digits matter. */
 static projcurve_surface *rational_surface(void)
@@ -185,7 +168,7 @@ static void surfaces_and_curves(void)
             CHECK_OK(projcurve_iges_writer_add_curve(ctx, w, projcurve_model_curve(m, i)));
         CHECK_OK(projcurve_iges_writer_write(ctx, w, path_b));
         projcurve_iges_writer_destroy(w);
-        char *a = file_text(path_a), *b = file_text(path_b);
+        char *a = pc_test_read_file(path_a, NULL), *b = pc_test_read_file(path_b, NULL);
         CHECK(a != NULL && b != NULL && strcmp(a, b) == 0);
         /* Every record is 80 columns. */
         size_t col = 0, bad = 0;
@@ -237,10 +220,10 @@ static void result_round_trip(void)
     }
     projcurve_iges_writer *w = NULL;
     CHECK_OK(projcurve_iges_writer_create(ctx, &w));
-    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, w, s, r));
     CHECK_OK(projcurve_iges_writer_write(ctx, w, path_a));
     projcurve_iges_writer_destroy(w);
-    char *text = file_text(path_a);
+    char *text = pc_test_read_file(path_a, NULL);
     /* 128, 126 (pcurve), 126 (3D), 142 in the directory. */
     CHECK(text != NULL && strstr(text, "     128       1") != NULL);
     CHECK(text != NULL && strstr(text, "     142") != NULL);
@@ -282,7 +265,7 @@ static void projected_round_trip(void)
     CHECK(projcurve_result_branch_count(r) == 1);
     projcurve_iges_writer *w = NULL;
     CHECK_OK(projcurve_iges_writer_create(ctx, &w));
-    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, w, s, r));
     CHECK_OK(projcurve_iges_writer_write(ctx, w, path_a));
     projcurve_iges_writer_destroy(w);
     projcurve_model *m = read_back(path_a);
@@ -387,10 +370,10 @@ static void curve_on_surface_pcurves(void)
         CHECK(projcurve_result_branch_count(r) == 1);
         projcurve_iges_writer *w = NULL;
         CHECK_OK(projcurve_iges_writer_create(ctx, &w));
-        CHECK_OK(projcurve_iges_writer_add_result(ctx, w, projcurve_model_surface(in, 0), r));
+        CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, w, projcurve_model_surface(in, 0), r));
         CHECK_OK(projcurve_iges_writer_write(ctx, w, path_a));
         projcurve_iges_writer_destroy(w);
-        char *text = file_text(path_a);
+        char *text = pc_test_read_file(path_a, NULL);
         int pcurve_degree = 0;
         if (text != NULL)
             check_curve_on_surface(text, 7, &pcurve_degree); /* 128, 126, 126, 142 */

@@ -33,27 +33,6 @@
 
 static projcurve_context *ctx;
 
-static char *slurp(const char *path, size_t *len)
-{
-    FILE *fp = fopen(path, "rb");
-    if (fp == NULL)
-        return NULL;
-    fseek(fp, 0, SEEK_END);
-    const long n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    char *buf = malloc((size_t)n + 1);
-    if (buf && fread(buf, 1, (size_t)n, fp) != (size_t)n) {
-        free(buf);
-        buf = NULL;
-    }
-    fclose(fp);
-    if (buf) {
-        buf[n] = '\0';
-        *len = (size_t)n;
-    }
-    return buf;
-}
-
 typedef struct indexed {
     char *text;
     size_t work;
@@ -229,7 +208,7 @@ static void check_model_file(const char *relative, const kind_count *want, size_
 {
     const char *path = pc_test_data_path(relative);
     size_t len = 0;
-    char *text = slurp(path, &len);
+    char *text = pc_test_read_file(path, &len);
     if (text == NULL) {
         pc_test_missing_data(path);
         return;

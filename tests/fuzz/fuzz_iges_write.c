@@ -1,0 +1,174 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/* libFuzzer target: the IGES writer. A surface, a curve and (with a flag)
+ * the result of projecting it, from the bytes (fuzz_shapes.h), are written
+ * to a file and read back: the file must read, and its first surface and
+ * first curve must be the ones written (the same stored NURBS data bit for
+ * bit: reals are written with 17 significant digits; weights may come back
+ * scaled by a common factor, which is compared up to rounding). */
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "fuzz_shapes.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+static void finding(const char *what, projcurve_context *ctx)
+{
+    fprintf(stderr, "fuzz finding: %s (%s)\n", what, projcurve_context_message(ctx));
+    abort();
+}
+
+/* The stored data of a NURBS curve, malloc'd (NULL without memory). */
+typedef struct curve_data {
+    int degree;
+    size_t n, n_knots;
+    double *ctrl, *weights, *knots;
+} curve_data;
+
+static int read_curve(projcurve_context *ctx, const projcurve_curve *c, curve_data *d)
+{
+    memset(d, 0, sizeof *d);
+    if (projcurve_curve_nurbs_info(ctx, c, &d->degree, &d->n, &d->n_knots, NULL) != PROJCURVE_OK)
+        return 0;
+    d->ctrl = malloc(3 * d->n * sizeof(double));
+    d->weights = malloc(d->n * sizeof(double));
+    d->knots = malloc(d->n_knots * sizeof(double));
+    return d->ctrl && d->weights && d->knots &&
+           projcurve_curve_nurbs_data(ctx, c, d->ctrl, d->weights, d->knots) == PROJCURVE_OK;
+}
+
+static void free_curve(curve_data *d)
+{
+    free(d->ctrl);
+    free(d->weights);
+    free(d->knots);
+}
+
+/* Weights that differ by a common factor give the same curve (the writer
+ * writes equal weights as a polynomial curve). */
+static int proportional(const double *a, const double *b, size_t n)
+{
+    for (size_t i = 0; i < n; ++i)
+        if (fabs(a[i] * b[0] - b[i] * a[0]) > 4 * DBL_EPSILON * fabs(a[i] * b[0]))
+            return 0;
+    return 1;
+}
+
+static void compare_curves(projcurve_context *ctx, const projcurve_curve *a,
+                           const projcurve_curve *b)
+{
+    curve_data x, y;
+    if (read_curve(ctx, a, &x) && read_curve(ctx, b, &y)) {
+        if (x.degree != y.degree || x.n != y.n || x.n_knots != y.n_knots ||
+            memcmp(x.ctrl, y.ctrl, 3 * x.n * sizeof(double)) != 0 ||
+            !proportional(x.weights, y.weights, x.n) ||
+            memcmp(x.knots, y.knots, x.n_knots * sizeof(double)) != 0) {
+            fprintf(stderr, "written: degree %d, %zu points, %zu knots; read: %d, %zu, %zu\n",
+                    x.degree, x.n, x.n_knots, y.degree, y.n, y.n_knots);
+            for (size_t i = 0; i < x.n_knots && i < y.n_knots; ++i)
+                fprintf(stderr, "knot %zu: %.17g %.17g\n", i, x.knots[i], y.knots[i]);
+            for (size_t i = 0; i < x.n && i < y.n; ++i)
+                fprintf(stderr, "point %zu: %.17g %.17g %.17g w %.17g | %.17g %.17g %.17g w %.17g\n",
+                        i, x.ctrl[3 * i], x.ctrl[3 * i + 1], x.ctrl[3 * i + 2], x.weights[i],
+                        y.ctrl[3 * i], y.ctrl[3 * i + 1], y.ctrl[3 * i + 2], y.weights[i]);
+            finding("the curve read back differs from the curve written", ctx);
+        }
+    }
+    free_curve(&x);
+    free_curve(&y);
+}
+
+static int surface_rational(projcurve_context *ctx, const projcurve_surface *s)
+{
+    int du, dv, rational = 0;
+    size_t nu, nv, su, sv;
+    if (projcurve_surface_info(ctx, s, &du, &dv, &nu, &nv, &su, &sv, &rational) != PROJCURVE_OK)
+        finding("surface_info failed", ctx);
+    return rational;
+}
+
+/* Surfaces have no data accessor: compare on a grid with derivatives. A
+ * non-rational surface reads back bit for bit; a rational one may come
+ * back with its weights scaled by a common factor (all equal: as a
+ * polynomial surface), the same surface evaluated with other rounding
+ * (1e-12 of the largest value covers the division by w of a few terms). */
+static void compare_surfaces(projcurve_context *ctx, const projcurve_surface *a,
+                             const projcurve_surface *b)
+{
+    double da[4], db[4];
+    if (projcurve_surface_domain(ctx, a, da) != PROJCURVE_OK ||
+        projcurve_surface_domain(ctx, b, db) != PROJCURVE_OK)
+        finding("a surface domain cannot be read", ctx);
+    if (memcmp(da, db, sizeof da) != 0)
+        finding("the surface read back has another domain", ctx);
+    const int exact = !surface_rational(ctx, a) && !surface_rational(ctx, b);
+    for (int i = 0; i <= 4; ++i)
+        for (int j = 0; j <= 4; ++j) {
+            const double u = da[0] + (da[1] - da[0]) * i / 4.0, v = da[2] + (da[3] - da[2]) * j / 4.0;
+            double pa[18], pb[18], scale = 0.0;
+            if (projcurve_surface_eval(ctx, a, u, v, 2, pa) != PROJCURVE_OK ||
+                projcurve_surface_eval(ctx, b, u, v, 2, pb) != PROJCURVE_OK)
+                finding("a surface cannot be evaluated in its domain", ctx);
+            for (int k = 0; k < 18; ++k)
+                scale = fmax(scale, fabs(pa[k]));
+            for (int k = 0; k < 18; ++k)
+                if (exact ? pa[k] != pb[k] : !(fabs(pa[k] - pb[k]) <= 1e-12 * scale)) {
+                    fprintf(stderr, "(%.17g, %.17g) value %d: %.17g written, %.17g read\n", u, v,
+                            k, pa[k], pb[k]);
+                    finding("the surface read back evaluates differently", ctx);
+                }
+        }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fuzz_bytes b = {data, size, 0};
+    projcurve_context *ctx = NULL;
+    if (projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx) != PROJCURVE_OK)
+        return 0;
+    projcurve_surface *s = NULL;
+    projcurve_curve *c = NULL;
+    projcurve_options *o = NULL;
+    projcurve_result *r = NULL;
+    projcurve_iges_writer *w = NULL;
+    projcurve_model *m = NULL;
+    double dir[3];
+    char path[64];
+    snprintf(path, sizeof path, "/tmp/fuzz_iges_write.%ld.igs", (long)getpid());
+    if (fuzz_make_surface(ctx, &b, &s) != PROJCURVE_OK || fuzz_make_curve(ctx, &b, &c) != PROJCURVE_OK)
+        goto done;
+    fuzz_make_direction(&b, dir);
+    if (fuzz_make_options(ctx, &b, &o) != PROJCURVE_OK)
+        goto done;
+    if (fuzz_byte(&b) & 1)
+        (void)projcurve_project_directional(ctx, s, c, dir, o, &r);
+    if (projcurve_iges_writer_create(ctx, &w) != PROJCURVE_OK ||
+        projcurve_iges_writer_add_surface(ctx, w, s) != PROJCURVE_OK ||
+        projcurve_iges_writer_add_curve(ctx, w, c) != PROJCURVE_OK)
+        finding("adding a valid surface and curve failed", ctx);
+    if (r != NULL && projcurve_iges_writer_add_result(ctx, w, s, r) != PROJCURVE_OK)
+        finding("adding a result failed", ctx);
+    if (projcurve_iges_writer_write(ctx, w, path) != PROJCURVE_OK)
+        finding("writing failed", ctx);
+    if (projcurve_model_read_file(ctx, path, &m) != PROJCURVE_OK)
+        finding("the written file does not read", ctx);
+    if (projcurve_model_surface_count(m) < 1 || projcurve_model_curve_count(m) < 1)
+        finding("the file read back lacks the surface or the curve", ctx);
+    compare_surfaces(ctx, s, projcurve_model_surface(m, 0));
+    compare_curves(ctx, c, projcurve_model_curve(m, 0));
+done:
+    remove(path);
+    projcurve_model_destroy(m);
+    projcurve_iges_writer_destroy(w);
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+    projcurve_context_destroy(ctx);
+    return 0;
+}
