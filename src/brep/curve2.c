@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 
 projcurve_status pc_curve2_init(projcurve_context *ctx, pc_curve2 *c, int degree, size_t n_ctrl,
@@ -111,14 +112,13 @@ void pc_curve2_eval(const pc_curve2 *c, double t, double out[2])
 
 projcurve_status pc_polyline2_push(projcurve_context *ctx, pc_polyline2 *line, double x, double y)
 {
-    if (line->count == line->capacity) {
-        const size_t fresh = line->capacity ? 2 * line->capacity : 64;
-        double *p = realloc(line->xy, 2 * fresh * sizeof *p);
-        if (p == NULL)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory flattening a loop");
-        line->xy = p;
-        line->capacity = fresh;
-    }
+    void *xy = line->xy;
+    const projcurve_status st =
+        pc_array_reserve(ctx, &xy, &line->capacity, line->count, line->count + 1,
+                         2 * sizeof *line->xy, 64, NULL, "flattened loop points");
+    line->xy = xy;
+    if (st != PROJCURVE_OK)
+        return st;
     line->xy[2 * line->count] = x;
     line->xy[2 * line->count + 1] = y;
     ++line->count;
@@ -136,24 +136,29 @@ void pc_polyline2_free(pc_polyline2 *line)
 typedef struct hspline {
     size_t p, n;
     double *h, *u;
-    size_t cap;
+    size_t cap_h, cap_u; /* points of h, knots of u */
 } hspline;
 
-/* Boehm's insertion of t (inside the domain) once. */
-static int insert_knot(hspline *s, double t)
+/* Room in s for one more point and its knot. Statuses: OK, NO_MEMORY. */
+static projcurve_status reserve_knot(projcurve_context *ctx, hspline *s)
 {
-    if (s->n + 1 > s->cap) {
-        const size_t fresh = 2 * s->cap + 8;
-        double *h = realloc(s->h, 3 * fresh * sizeof *h);
-        if (h == NULL)
-            return 0;
-        s->h = h;
-        double *u = realloc(s->u, (fresh + s->p + 1) * sizeof *u);
-        if (u == NULL)
-            return 0;
-        s->u = u;
-        s->cap = fresh;
-    }
+    void *h = s->h, *u = s->u;
+    projcurve_status st = pc_array_reserve(ctx, &h, &s->cap_h, s->n, s->n + 1,
+                                           3 * sizeof *s->h, 8, NULL, "knot-inserted points");
+    s->h = h;
+    if (st == PROJCURVE_OK)
+        st = pc_array_reserve(ctx, &u, &s->cap_u, s->n + s->p + 1, s->n + s->p + 2,
+                              sizeof *s->u, 8, NULL, "knot-inserted knots");
+    s->u = u;
+    return st;
+}
+
+/* Boehm's insertion of t (inside the domain) once. Statuses: OK, NO_MEMORY. */
+static projcurve_status insert_knot(projcurve_context *ctx, hspline *s, double t)
+{
+    const projcurve_status st = reserve_knot(ctx, s);
+    if (st != PROJCURVE_OK)
+        return st;
     const size_t p = s->p, k = find_span(s->u, p, s->n, t);
     for (size_t i = s->n; i > k; --i) /* Q[i] = P[i-1] for i >= k + 1 */
         memcpy(s->h + 3 * i, s->h + 3 * (i - 1), 3 * sizeof *s->h);
@@ -167,7 +172,7 @@ static int insert_knot(hspline *s, double t)
     memmove(s->u + k + 2, s->u + k + 1, (s->n + p - k) * sizeof *s->u);
     s->u[k + 1] = t;
     ++s->n;
-    return 1;
+    return PROJCURVE_OK;
 }
 
 static size_t multiplicity(const hspline *s, double t)
@@ -237,7 +242,7 @@ projcurve_status pc_curve2_flatten(projcurve_context *ctx, const pc_curve2 *c, d
                                    pc_polyline2 *line, const char *what)
 {
     const size_t p = (size_t)c->degree, n = c->n_ctrl;
-    hspline s = {.p = p, .n = n, .cap = n};
+    hspline s = {.p = p, .n = n, .cap_h = n, .cap_u = n + p + 1};
     s.h = malloc(3 * n * sizeof *s.h);
     s.u = malloc((n + p + 1) * sizeof *s.u);
     projcurve_status st = PROJCURVE_OK;
@@ -260,8 +265,7 @@ projcurve_status pc_curve2_flatten(projcurve_context *ctx, const pc_curve2 *c, d
         if (t < t0 || t > t1 || (i > p && t == s.u[i - 1]))
             continue;
         while (st == PROJCURVE_OK && multiplicity(&s, t) < p)
-            if (!insert_knot(&s, t))
-                st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "%s: out of memory", what);
+            st = insert_knot(ctx, &s, t);
     }
     flattener fl = {.ctx = ctx, .line = line, .err = err, .p = p, .what = what,
                     .limit = line->count + PC_CURVE2_MAX_POINTS};

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "fit/lsq.h"
 
@@ -278,13 +279,11 @@ static projcurve_status new_block(fit_state *f, double a, double b, size_t *firs
         }
         st = pc_fit_samples_push(f->ctx, &f->cache, &x);
     }
-    if (st == PROJCURVE_OK && f->n_blocks == f->cap_blocks) {
-        const size_t n = f->cap_blocks ? 2 * f->cap_blocks : 64;
-        check_block *blocks = realloc(f->blocks, n * sizeof *blocks);
-        if (blocks == NULL)
-            return pc_fail(f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit");
+    if (st == PROJCURVE_OK) {
+        void *blocks = f->blocks;
+        st = pc_array_reserve(f->ctx, &blocks, &f->cap_blocks, f->n_blocks, f->n_blocks + 1,
+                              sizeof *f->blocks, 64, NULL, "fit check blocks");
         f->blocks = blocks;
-        f->cap_blocks = n;
     }
     if (st == PROJCURVE_OK)
         f->blocks[f->n_blocks++] = (check_block){a, b, *first};

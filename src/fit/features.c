@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "common/array.h"
 #include "common/error.h"
 
 /* A joint this close to a knot line (relative to the knot vector's range)
@@ -56,19 +57,14 @@ static int joint_is_crease(const pc_piece *a, const pc_piece *b, double cos_limi
     return da[0] * db[0] + da[1] * db[1] + da[2] * db[2] < cos_limit;
 }
 
-static projcurve_status push(projcurve_context *ctx, pc_fit_features *f, size_t *cap, double t,
-                             int continuity)
+static projcurve_status push(projcurve_context *ctx, pc_fit_features *f, double t, int continuity)
 {
     if (continuity >= PC_FIT_SMOOTH)
         return PROJCURVE_OK;
-    if (f->count == *cap) {
-        const size_t n = *cap ? 2 * *cap : 16;
-        pc_fit_feature *items = realloc(f->items, n * sizeof *items);
-        if (items == NULL)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory listing features");
-        f->items = items;
-        *cap = n;
-    }
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, ctx, f, f->count + 1, 16, "fit features");
+    if (st != PROJCURVE_OK)
+        return st;
     f->items[f->count].t = t;
     f->items[f->count].continuity = continuity;
     f->count++;
@@ -106,8 +102,7 @@ projcurve_status pc_fit_features_find(projcurve_context *ctx, pc_fit_branch *fb,
                                       double crease_deg, pc_fit_features *out)
 {
     out->items = NULL;
-    out->count = 0;
-    size_t cap = 0;
+    out->count = out->capacity = 0;
     const pc_nurbs_surface *s = fb->surface;
     const double tol_u = PC_FIT_ON_KNOT_REL * (s->domain[1] - s->domain[0]);
     const double tol_v = PC_FIT_ON_KNOT_REL * (s->domain[3] - s->domain[2]);
@@ -121,14 +116,14 @@ projcurve_status pc_fit_features_find(projcurve_context *ctx, pc_fit_branch *fb,
         int c = cu < cv ? cu : cv;
         if (joint_is_crease(pc_fit_piece(fb, k), pc_fit_piece(fb, k + 1), cos_limit))
             c = 0;
-        st = push(ctx, out, &cap, j.t, c);
+        st = push(ctx, out, j.t, c);
     }
     const projcurve_curve *curve = fb->proj->curve;
     if (curve != NULL && curve->kind == PC_CURVE_NURBS) {
         const pc_nurbs_curve *c = &curve->nurbs;
         for (size_t k = (size_t)c->degree + 1; st == PROJCURVE_OK && k < c->n_ctrl; ++k)
             if (k == (size_t)c->degree + 1 || c->knots[k] != c->knots[k - 1])
-                st = push(ctx, out, &cap, c->knots[k],
+                st = push(ctx, out, c->knots[k],
                           knot_continuity(c->knots, c->n_ctrl, c->degree, c->knots[k], 0.0));
     }
     if (st != PROJCURVE_OK) {
@@ -141,7 +136,5 @@ projcurve_status pc_fit_features_find(projcurve_context *ctx, pc_fit_branch *fb,
 
 void pc_fit_features_free(pc_fit_features *f)
 {
-    free(f->items);
-    f->items = NULL;
-    f->count = 0;
+    PC_ARRAY_FREE(f);
 }

@@ -22,7 +22,7 @@ typedef struct pc_fit_feature {
 
 typedef struct pc_fit_features {
     pc_fit_feature *items; /* increasing t, inside (t_lo, t_hi) */
-    size_t count;
+    size_t count, capacity;
 } pc_fit_features;
 
 /* Finds the features of the branch; crease_deg: the joint angle above

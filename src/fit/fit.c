@@ -173,7 +173,7 @@ static projcurve_status fit_branch(projcurve_context *ctx, pc_fit_branch *fb,
 {
     const double eps_d = p->tol_distance;
     const size_t np = b->n_pieces;
-    pc_fit_features f = {NULL, 0};
+    pc_fit_features f = {NULL, 0, 0};
     pc_fit_samples data = {NULL, 0, 0, 0, 0};
     pc_fit_curve pcurve = {0}, curve = {0};
     int complete = 0, have_pcurve = 0, have_curve = 0;

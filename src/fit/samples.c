@@ -4,21 +4,16 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 
 projcurve_status pc_fit_samples_push(projcurve_context *ctx, pc_fit_samples *s,
                                      const pc_fit_sample *x)
 {
-    if (s->count == s->cap) {
-        const size_t n = s->cap ? 2 * s->cap : 64;
-        if (n > ((size_t)-1) / sizeof *s->items)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "fit sample count overflows");
-        pc_fit_sample *items = realloc(s->items, n * sizeof *items);
-        if (items == NULL)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for fit samples");
-        s->items = items;
-        s->cap = n;
-    }
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, ctx, s, s->count + 1, 64, "fit samples");
+    if (st != PROJCURVE_OK)
+        return st;
     if (s->count > 0 && x->t < s->items[s->count - 1].t)
         s->unsorted = 1;
     s->items[s->count++] = *x;
@@ -59,9 +54,7 @@ void pc_fit_samples_sort(pc_fit_samples *s)
 
 void pc_fit_samples_free(pc_fit_samples *s)
 {
-    free(s->items);
-    s->items = NULL;
-    s->count = s->cap = 0;
+    PC_ARRAY_FREE(s);
     s->unsorted = 0;
     s->sorted = 0;
 }

@@ -11,7 +11,7 @@
 
 typedef struct pc_fit_samples {
     pc_fit_sample *items;
-    size_t count, cap;
+    size_t count, capacity;
     int unsorted;  /* appended out of order since the last pc_fit_samples_sort */
     size_t sorted; /* items[0 .. sorted) were in order at the last sort */
 } pc_fit_samples;

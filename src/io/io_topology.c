@@ -9,28 +9,26 @@
 
 #include "brep/face.h"
 #include "brep/shape.h"
+#include "common/array.h"
 #include "io/io_model.h"
 
-static int make_room(void **items, size_t n, size_t *cap, size_t elem)
+/* Room for one more of the n elements in *items (the common array's
+ * policy, from 16). Statuses: OK, NO_MEMORY (recorded in ctx). */
+static projcurve_status make_room(projcurve_context *ctx, void **items, size_t n, size_t *cap,
+                                  size_t elem, const char *what)
 {
-    if (n < *cap)
-        return 1;
-    const size_t fresh = *cap ? 2 * *cap : 16;
-    void *p = realloc(*items, fresh * elem);
-    if (p == NULL)
-        return 0;
-    *items = p;
-    *cap = fresh;
-    return 1;
+    return pc_array_reserve(ctx, items, cap, n, n + 1, elem, 16, NULL, what);
 }
 
 projcurve_status pc_model_add_face(projcurve_context *ctx, projcurve_model *model,
                                    projcurve_face *face)
 {
     void *items = model->faces;
-    if (!make_room(&items, model->n_faces, &model->cap_faces, sizeof *model->faces)) {
+    const projcurve_status st = make_room(ctx, &items, model->n_faces, &model->cap_faces,
+                                          sizeof *model->faces, "model faces");
+    if (st != PROJCURVE_OK) {
         pc_face_free(face);
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory adding a face");
+        return st;
     }
     model->faces = items;
     model->faces[model->n_faces++] = face;
@@ -41,9 +39,11 @@ projcurve_status pc_model_add_shape(projcurve_context *ctx, projcurve_model *mod
                                     projcurve_shape *shape)
 {
     void *items = model->shapes;
-    if (!make_room(&items, model->n_shapes, &model->cap_shapes, sizeof *model->shapes)) {
+    const projcurve_status st = make_room(ctx, &items, model->n_shapes, &model->cap_shapes,
+                                          sizeof *model->shapes, "model shapes");
+    if (st != PROJCURVE_OK) {
         pc_shape_free(shape);
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory adding a shape");
+        return st;
     }
     model->shapes = items;
     model->shapes[model->n_shapes++] = shape;
@@ -53,14 +53,20 @@ projcurve_status pc_model_add_shape(projcurve_context *ctx, projcurve_model *mod
 projcurve_status pc_model_add_unbuilt(projcurve_context *ctx, projcurve_model *model,
                                       const char *kind, const char *fmt, ...)
 {
+    /* the reasons and kinds share cap_unbuilt: both grow from it to the
+     * same capacity, recorded once both have it */
     size_t cap = model->cap_unbuilt;
     void *reasons = model->unbuilt, *kinds = model->unbuilt_kind;
-    if (!make_room(&reasons, model->n_unbuilt, &cap, sizeof *model->unbuilt))
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory listing a face");
+    projcurve_status st = make_room(ctx, &reasons, model->n_unbuilt, &cap,
+                                    sizeof *model->unbuilt, "unbuilt face reasons");
+    if (st != PROJCURVE_OK)
+        return st;
     model->unbuilt = reasons;
     cap = model->cap_unbuilt;
-    if (!make_room(&kinds, model->n_unbuilt, &cap, sizeof *model->unbuilt_kind))
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory listing a face");
+    st = make_room(ctx, &kinds, model->n_unbuilt, &cap, sizeof *model->unbuilt_kind,
+                   "unbuilt face kinds");
+    if (st != PROJCURVE_OK)
+        return st;
     model->unbuilt_kind = kinds;
     model->cap_unbuilt = cap;
     char *text = malloc(PC_MODEL_SKIPPED_TEXT);

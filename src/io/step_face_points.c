@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "io/step_analytic.h"
 #include "io/step_geom.h"
@@ -36,22 +37,18 @@ typedef struct gather {
     pc_arena *arena;
     long surface;
     face_point *items;
-    size_t n, cap;
+    size_t count, capacity;
 } gather;
 
 static projcurve_status add_point(gather *g, const double p[3])
 {
-    if (g->n == g->cap) {
-        const size_t cap = g->cap ? 2 * g->cap : 256;
-        face_point *items = realloc(g->items, cap * sizeof *items);
-        if (items == NULL)
-            return pc_fail(g->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP faces");
-        g->items = items;
-        g->cap = cap;
-    }
-    g->items[g->n].surface = g->surface;
-    memcpy(g->items[g->n].p, p, sizeof g->items[g->n].p);
-    ++g->n;
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, g->f->ctx, g, g->count + 1, 256, "STEP face points");
+    if (st != PROJCURVE_OK)
+        return st;
+    g->items[g->count].surface = g->surface;
+    memcpy(g->items[g->count].p, p, sizeof g->items[g->count].p);
+    ++g->count;
     return PROJCURVE_OK;
 }
 
@@ -176,7 +173,7 @@ static int by_surface(const void *a, const void *b)
 /* The first point of surface id in the sorted list and their count. */
 static size_t points_of(const gather *g, long id, size_t *count)
 {
-    size_t lo = 0, hi = g->n;
+    size_t lo = 0, hi = g->count;
     while (lo < hi) {
         const size_t mid = lo + (hi - lo) / 2;
         if (g->items[mid].surface < id)
@@ -185,7 +182,7 @@ static size_t points_of(const gather *g, long id, size_t *count)
             hi = mid;
     }
     size_t end = lo;
-    while (end < g->n && g->items[end].surface == id)
+    while (end < g->count && g->items[end].surface == id)
         ++end;
     *count = end - lo;
     return lo;
@@ -249,15 +246,15 @@ projcurve_status pc_step_read_analytic(pc_step_file *f, projcurve_model *model)
         }
         pc_arena_release(&arena);
     }
-    if (st == PROJCURVE_OK && g.n > 1)
-        qsort(g.items, g.n, sizeof *g.items, by_surface);
+    if (st == PROJCURVE_OK && g.count > 1)
+        qsort(g.items, g.count, sizeof *g.items, by_surface);
     for (size_t i = 0; st == PROJCURVE_OK && i < f->n_instances; ++i) {
         const pc_step_instance *inst = &f->instances[i];
         if (pc_step_name(f, inst, name) && pc_step_is_analytic_surface(name))
             st = read_one(f, &arena, model, &g, inst, name);
         pc_arena_release(&arena);
     }
-    free(g.items);
+    PC_ARRAY_FREE(&g);
     pc_arena_release(&arena);
     return st;
 }
