@@ -3,6 +3,7 @@
 
 #include "brep/face.h"
 #include "brep/shape.h"
+#include "common/array.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -41,18 +42,15 @@ void pc_model_free(projcurve_model *model)
     free(model);
 }
 
-/* Makes room for one more element in a growing array (doubling); returns
- * the array, moved or not, or NULL when memory runs out (the old array is
- * then still valid). */
+/* Makes room for one more element in a growing array (the common
+ * array's policy, from 16); returns the array, moved or not, or NULL when
+ * memory runs out (the old array and *cap are then unchanged). No context:
+ * the caller records the failure with the origin of the entity. */
 static void *grow(void *items, size_t n, size_t *cap, size_t elem)
 {
-    if (n < *cap)
-        return items;
-    const size_t fresh = *cap ? 2 * *cap : 16;
-    void *p = realloc(items, fresh * elem);
-    if (p != NULL)
-        *cap = fresh;
-    return p;
+    const projcurve_status st =
+        pc_array_reserve(NULL, &items, cap, n, n + 1, elem, 16, NULL, "a model list");
+    return st == PROJCURVE_OK ? items : NULL;
 }
 
 static const double *weights_or_null(const double *w, size_t n)
