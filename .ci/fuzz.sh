@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Fuzzes every file reader, the projection pipeline and the IGES writer
 # with libFuzzer for a bounded time.
-#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 50, six targets: 5 min in all;
+#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 30, six targets: 3 min in all;
 #                                       PROJCURVE_FUZZ_SECONDS also works)
 #   PROJCURVE_FUZZ_KEEP_CORPUS=1 keeps the corpus of earlier runs.
 # Builds the targets of tests/fuzz with clang (-DPROJCURVE_FUZZ=ON) in
@@ -16,7 +16,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-seconds=${1:-${PROJCURVE_FUZZ_SECONDS:-50}}
+seconds=${1:-${PROJCURVE_FUZZ_SECONDS:-30}}
 if ! [[ $seconds =~ ^[1-9][0-9]*$ ]]; then
     echo "fuzz.sh: seconds per target must be a positive integer, not '$seconds'" >&2
     exit 2
