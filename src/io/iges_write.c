@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "io/iges.h"
 #include "io/iges_write.h"
@@ -25,15 +26,13 @@ projcurve_status pc_iges_out_add(projcurve_context *ctx, pc_iges_out *out, int t
     if (params->failed || params->text == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory formatting IGES entity %d",
                        type);
-    if (out->count == out->cap) {
-        const size_t fresh = out->cap ? 2 * out->cap : 16;
-        pc_iges_out_entity *p = realloc(out->entities, fresh * sizeof *p);
-        if (p == NULL)
-            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory adding IGES entity %d",
-                           type);
-        out->entities = p;
-        out->cap = fresh;
-    }
+    void *items = out->entities;
+    const projcurve_status grown =
+        pc_array_reserve(ctx, &items, &out->cap, out->count, out->count + 1,
+                         sizeof *out->entities, 16, NULL, "the written IGES entities");
+    out->entities = items;
+    if (grown != PROJCURVE_OK)
+        return grown;
     pc_iges_out_entity *e = &out->entities[out->count];
     e->type = type;
     e->form = form;
@@ -74,18 +73,14 @@ static void put(sink *s, const char *line)
     const size_t n = strlen(line);
     if (s->failed)
         return;
-    if (s->len + n + 1 > s->cap) {
-        size_t fresh = s->cap ? 2 * s->cap : 1u << 16;
-        while (fresh < s->len + n + 1)
-            fresh *= 2;
-        char *p = realloc(s->text, fresh);
-        if (p == NULL) {
-            s->failed = 1;
-            return;
-        }
-        s->text = p;
-        s->cap = fresh;
+    void *items = s->text;
+    /* no context here: a failure is the sink's flag, which layout reports */
+    if (pc_array_reserve(NULL, &items, &s->cap, s->len, s->len + n + 1, 1, 1u << 16, NULL,
+                         "IGES text") != PROJCURVE_OK) {
+        s->failed = 1;
+        return;
     }
+    s->text = items;
     memcpy(s->text + s->len, line, n + 1);
     s->len += n;
 }

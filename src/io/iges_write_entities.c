@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "io/iges_write.h"
 
 #define PC_IGES_REAL_TEXT 40
@@ -17,18 +18,15 @@ static void append(pc_text_buf *b, const char *s, size_t n)
 {
     if (b->failed)
         return;
-    if (b->len + n + 1 > b->cap) {
-        size_t fresh = b->cap ? 2 * b->cap : 256;
-        while (fresh < b->len + n + 1)
-            fresh *= 2;
-        char *p = realloc(b->text, fresh);
-        if (p == NULL) {
-            b->failed = 1;
-            return;
-        }
-        b->text = p;
-        b->cap = fresh;
+    void *items = b->text;
+    /* no context here: a failure is the buffer's flag, which
+     * pc_iges_out_add reports */
+    if (pc_array_reserve(NULL, &items, &b->cap, b->len, b->len + n + 1, 1, 256, NULL,
+                         "IGES parameters") != PROJCURVE_OK) {
+        b->failed = 1;
+        return;
     }
+    b->text = items;
     memcpy(b->text + b->len, s, n);
     b->len += n;
     b->text[b->len] = '\0';

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "io/io_text.h"
 #include "io/step.h"
@@ -127,14 +128,13 @@ projcurve_status pc_step_index(pc_step_file *f)
         if (stop >= len)
             return pc_fail(f->ctx, PROJCURVE_ERR_PARSE,
                            "STEP line %zu: instance #%ld is not ended by ';'", start_line, id);
-        if (f->n_instances == cap) {
-            const size_t fresh = cap ? 2 * cap : 1024;
-            pc_step_instance *p = realloc(f->instances, fresh * sizeof *p);
-            if (p == NULL)
-                return pc_fail(f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory indexing STEP");
-            f->instances = p;
-            cap = fresh;
-        }
+        void *items = f->instances;
+        const projcurve_status grown =
+            pc_array_reserve(f->ctx, &items, &cap, f->n_instances, f->n_instances + 1,
+                             sizeof *f->instances, 1024, NULL, "the STEP instance index");
+        if (grown != PROJCURVE_OK)
+            return grown;
+        f->instances = items;
         if (f->n_instances > 0 && f->instances[f->n_instances - 1].id >= id)
             sorted = 0;
         f->instances[f->n_instances++] =

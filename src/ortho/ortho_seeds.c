@@ -4,6 +4,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "ortho/collapsed.h"
 #include "ortho/ortho_minima.h"
@@ -15,17 +16,13 @@
 
 static projcurve_status grow(projcurve_context *ctx, pc_ortho_finder_state *st, size_t need)
 {
-    if (need <= st->capacity)
-        return PROJCURVE_OK;
-    size_t cap = st->capacity ? st->capacity : ORTHO_FOOT_CAPACITY;
-    while (cap < need && cap <= SIZE_MAX / (4 * sizeof *st->uv))
-        cap *= 2;
-    double *uv = cap >= need ? realloc(st->uv, 2 * cap * sizeof *uv) : NULL;
-    if (uv == NULL)
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for %zu foot points", need);
-    st->uv = uv;
-    st->capacity = cap;
-    return PROJCURVE_OK;
+    /* elements of two doubles: the (u, v) of a foot point */
+    void *items = st->uv;
+    const projcurve_status grown =
+        pc_array_reserve(ctx, &items, &st->capacity, st->capacity, need, 2 * sizeof *st->uv,
+                         ORTHO_FOOT_CAPACITY, NULL, "the foot points of a seed search");
+    st->uv = items;
+    return grown;
 }
 
 /* 1 when (u, v) is a collapsed point of the parametrisation (collapsed.h).

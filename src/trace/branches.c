@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "trace/tracer.h"
 
@@ -366,15 +367,12 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
             break;
         drop_coincident(tr, &found);
         polish_active_points(tr, t, &active);
-        if (found.count > cap_matched) {
-            unsigned char *m = realloc(matched, found.count);
-            if (m == NULL) {
-                st = pc_fail(tr->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory matching seeds");
-                break;
-            }
-            matched = m;
-            cap_matched = found.count;
-        }
+        void *items = matched;
+        st = pc_array_reserve(tr->ctx, &items, &cap_matched, 0, found.count, 1, 16, NULL,
+                              "the seed matches");
+        matched = items;
+        if (st != PROJCURVE_OK)
+            break;
         pc_match_seeds(tr->proj->surface, active.items, active.count, found.items, found.count,
                        tr->ds, matched);
         for (size_t k = 0; k < found.count && st == PROJCURVE_OK && !tr->limit_hit; ++k)

@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "common/array.h"
 #include "common/error.h"
 #include "verify/verify.h"
 #include "verify/verify_internal.h"
@@ -218,7 +219,7 @@ projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *pr
     pc_verifier v = {proj, o->tol_distance + proj->newton_tol, pc_verify_vertex_tolerance(proj),
                      1e-10 * diag, 1e-13 * diag, 0, 0.0, 0.0};
     unsigned char *keep = NULL, *ok = NULL;
-    size_t cap = 0;
+    size_t cap_keep = 0, cap_ok = 0;
     projcurve_status st = PROJCURVE_OK;
     size_t n_checked = r->n_branches; /* runs of cut branches are appended, verified */
     for (size_t i = 0; i < n_checked && st == PROJCURVE_OK;) {
@@ -233,16 +234,14 @@ projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *pr
             continue;
         }
         const size_t need = (b->n_pieces > 0 ? b->n_pieces : b->n_points) + 1;
-        if (need > cap) {
-            unsigned char *k2 = realloc(keep, need), *o2 = realloc(ok, need);
-            keep = k2 ? k2 : keep;
-            ok = o2 ? o2 : ok;
-            if (!k2 || !o2) {
-                st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory verifying a branch");
-                break;
-            }
-            cap = need;
-        }
+        void *k2 = keep, *o2 = ok;
+        st = pc_array_reserve(ctx, &k2, &cap_keep, 0, need, 1, 64, NULL, "the verified pieces");
+        keep = k2;
+        if (st == PROJCURVE_OK)
+            st = pc_array_reserve(ctx, &o2, &cap_ok, 0, need, 1, 64, NULL, "the verified points");
+        ok = o2;
+        if (st != PROJCURVE_OK)
+            break;
         size_t n = 0;
         if (check_branch(&v, b, keep, ok, &n)) {
             ++i;
