@@ -84,6 +84,10 @@ projcurve_status pc_iges_params_of(const pc_iges_file *f, size_t de, pc_iges_par
  * (0) as IGES prescribes. Non-numeric text gives PARSE naming the entity. */
 projcurve_status pc_iges_real(const pc_iges_params *p, size_t i, double *out);
 projcurve_status pc_iges_int(const pc_iges_params *p, size_t i, long *out);
+/* Fields first .. first + n - 1 into out[0 .. n - 1], as pc_iges_real /
+ * pc_iges_int; stops at the first field that fails. */
+projcurve_status pc_iges_reals(const pc_iges_params *p, size_t first, size_t n, double *out);
+projcurve_status pc_iges_ints(const pc_iges_params *p, size_t first, size_t n, long *out);
 /* The entry at DE pointer de, or NULL (with PARSE recorded) when de does not
  * point at the start of a directory entry. */
 const pc_iges_entry *pc_iges_entry_at(const pc_iges_file *f, long de, size_t from_de);

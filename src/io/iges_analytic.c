@@ -50,16 +50,6 @@ static void use(ctx_t *c, long de)
         c->uses[(*c->n_uses)++] = de;
 }
 
-static projcurve_status reals(const pc_iges_params *p, size_t first, size_t n, double *out)
-{
-    for (size_t i = 0; i < n; ++i) {
-        projcurve_status st = pc_iges_real(p, first + i, &out[i]);
-        if (st != PROJCURVE_OK)
-            return st;
-    }
-    return PROJCURVE_OK;
-}
-
 /* The coordinates of the 116 point or 123 direction entity at pointer i. */
 static projcurve_status vector_entity(ctx_t *c, size_t i, int type, double out[3])
 {
@@ -78,7 +68,7 @@ static projcurve_status vector_entity(ctx_t *c, size_t i, int type, double out[3
     if ((st = pc_iges_params_of(c->f, (size_t)de, &q)) != PROJCURVE_OK)
         return st;
     use(c, de);
-    return reals(&q, 1, 3, out);
+    return pc_iges_reals(&q, 1, 3, out);
 }
 
 /* The curve at pointer i, its transformation applied. */
@@ -100,8 +90,8 @@ static projcurve_status plane_108(ctx_t *c, pc_analytic_surface *s, double box[4
     double abcd[4], sym[4];
     long ptr = 0;
     projcurve_status st;
-    if ((st = reals(c->p, 1, 4, abcd)) != PROJCURVE_OK || (st = pc_iges_int(c->p, 5, &ptr)) != PROJCURVE_OK ||
-        (st = reals(c->p, 6, 4, sym)) != PROJCURVE_OK)
+    if ((st = pc_iges_reals(c->p, 1, 4, abcd)) != PROJCURVE_OK || (st = pc_iges_int(c->p, 5, &ptr)) != PROJCURVE_OK ||
+        (st = pc_iges_reals(c->p, 6, 4, sym)) != PROJCURVE_OK)
         return st;
     const double n2 = abcd[0] * abcd[0] + abcd[1] * abcd[1] + abcd[2] * abcd[2];
     if (!(n2 > 0.0)) {
@@ -203,7 +193,7 @@ static projcurve_status revolution_120(ctx_t *c, pc_analytic_surface *s, pc_io_c
         dir[k] = a1[k] - a0[k];
     if ((st = pc_frame_make(c->f->ctx, a0, dir, NULL, &s->frame)) != PROJCURVE_OK ||
         (st = curve_at(c, 2, gen, skip)) != PROJCURVE_OK || *skip != NULL ||
-        (st = reals(c->p, 3, 2, box)) != PROJCURVE_OK)
+        (st = pc_iges_reals(c->p, 3, 2, box)) != PROJCURVE_OK)
         return st;
     s->kind = PC_ANALYTIC_REVOLUTION;
     s->curve = gen;
@@ -215,7 +205,7 @@ static projcurve_status tabulated_122(ctx_t *c, pc_analytic_surface *s, pc_io_cu
 {
     double end[3];
     projcurve_status st = curve_at(c, 1, dir, skip);
-    if (st != PROJCURVE_OK || *skip != NULL || (st = reals(c->p, 2, 3, end)) != PROJCURVE_OK)
+    if (st != PROJCURVE_OK || *skip != NULL || (st = pc_iges_reals(c->p, 2, 3, end)) != PROJCURVE_OK)
         return st;
     double start[3];
     pc_rational_curve_eval(dir, dir->knots[dir->degree], start);

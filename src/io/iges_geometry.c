@@ -30,16 +30,6 @@ static projcurve_status need(const pc_iges_params *p, size_t required)
                    p->type, p->de, p->count - 1, required - 1);
 }
 
-static projcurve_status reals(const pc_iges_params *p, size_t first, size_t n, double *out)
-{
-    for (size_t i = 0; i < n; ++i) {
-        projcurve_status st = pc_iges_real(p, first + i, &out[i]);
-        if (st != PROJCURVE_OK)
-            return st;
-    }
-    return PROJCURVE_OK;
-}
-
 static double *alloc_doubles(const pc_iges_file *f, size_t n)
 {
     return pc_arena_calloc(f->arena, n ? n : 1, sizeof(double));
@@ -71,7 +61,7 @@ static projcurve_status transform_of(const pc_iges_file *f, size_t de, pc_io_aff
         if (st != PROJCURVE_OK)
             return st;
         pc_io_affine m;
-        if ((st = need(&p, 13)) != PROJCURVE_OK || (st = reals(&p, 1, 12, m.m)) != PROJCURVE_OK)
+        if ((st = need(&p, 13)) != PROJCURVE_OK || (st = pc_iges_reals(&p, 1, 12, m.m)) != PROJCURVE_OK)
             return st;
         /* The matrices found so far act first, the one they point to after. */
         *out = pc_io_affine_compose(&m, out);
@@ -114,12 +104,12 @@ static projcurve_status read_126(const pc_iges_params *p, pc_io_curve *out)
     out->ctrl = alloc_doubles(f, 3 * n);
     if (out->knots == NULL || out->weights == NULL || out->ctrl == NULL)
         return pc_fail(f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES entity 126");
-    if ((st = reals(p, base, nk, out->knots)) != PROJCURVE_OK ||
-        (st = reals(p, base + nk, n, out->weights)) != PROJCURVE_OK ||
-        (st = reals(p, base + nk + n, 3 * n, out->ctrl)) != PROJCURVE_OK)
+    if ((st = pc_iges_reals(p, base, nk, out->knots)) != PROJCURVE_OK ||
+        (st = pc_iges_reals(p, base + nk, n, out->weights)) != PROJCURVE_OK ||
+        (st = pc_iges_reals(p, base + nk + n, 3 * n, out->ctrl)) != PROJCURVE_OK)
         return st;
     double v[2];
-    if ((st = reals(p, base + nk + 4 * n, 2, v)) != PROJCURVE_OK)
+    if ((st = pc_iges_reals(p, base + nk + 4 * n, 2, v)) != PROJCURVE_OK)
         return st;
     /* V0, V1 may select a part of the knot domain: cut it out exactly. */
     double t0 = out->knots[m], t1 = out->knots[n];
@@ -141,7 +131,7 @@ static projcurve_status read_110(const pc_iges_params *p, pc_io_curve *out,
         return PROJCURVE_OK;
     }
     double x[6];
-    projcurve_status st = reals(p, 1, 6, x);
+    projcurve_status st = pc_iges_reals(p, 1, 6, x);
     if (st != PROJCURVE_OK)
         return st;
     return pc_io_line_curve(p->file->ctx, p->file->arena, x, x + 3, out);
@@ -151,7 +141,7 @@ static projcurve_status read_100(const pc_iges_params *p, pc_io_curve *out,
                                  const char **skip_reason)
 {
     double x[7];
-    projcurve_status st = reals(p, 1, 7, x);
+    projcurve_status st = pc_iges_reals(p, 1, 7, x);
     if (st != PROJCURVE_OK)
         return st;
     const double centre[3] = {x[1], x[2], x[0]};
@@ -290,15 +280,15 @@ projcurve_status pc_iges_surface(const pc_iges_file *f, size_t de, pc_io_surface
     out->ctrl = alloc_doubles(f, 3 * n);
     if (out->knots_u == NULL || out->knots_v == NULL || out->weights == NULL || out->ctrl == NULL)
         return pc_fail(f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES entity 128");
-    if ((st = reals(&p, base, nk_u, out->knots_u)) != PROJCURVE_OK ||
-        (st = reals(&p, base + nk_u, nk_v, out->knots_v)) != PROJCURVE_OK ||
-        (st = reals(&p, base + nk_u + nk_v, n, out->weights)) != PROJCURVE_OK ||
-        (st = reals(&p, base + nk_u + nk_v + n, 3 * n, out->ctrl)) != PROJCURVE_OK)
+    if ((st = pc_iges_reals(&p, base, nk_u, out->knots_u)) != PROJCURVE_OK ||
+        (st = pc_iges_reals(&p, base + nk_u, nk_v, out->knots_v)) != PROJCURVE_OK ||
+        (st = pc_iges_reals(&p, base + nk_u + nk_v, n, out->weights)) != PROJCURVE_OK ||
+        (st = pc_iges_reals(&p, base + nk_u + nk_v + n, 3 * n, out->ctrl)) != PROJCURVE_OK)
         return st;
     /* U0, U1, V0, V1 may select a part of the knot domain (writers extend
      * surfaces a little beyond their use): cut it out exactly. */
     double dom[4];
-    if ((st = reals(&p, base + nk_u + nk_v + 4 * n, 4, dom)) != PROJCURVE_OK ||
+    if ((st = pc_iges_reals(&p, base + nk_u + nk_v + 4 * n, 4, dom)) != PROJCURVE_OK ||
         (st = pc_io_surface_restrict(f->ctx, f->arena, out, dom[0], dom[1], dom[2], dom[3],
                                      out)) != PROJCURVE_OK)
         return st;

@@ -248,3 +248,23 @@ projcurve_status pc_iges_int(const pc_iges_params *p, size_t i, long *out)
     *out = (long)v;
     return PROJCURVE_OK;
 }
+
+projcurve_status pc_iges_reals(const pc_iges_params *p, size_t first, size_t n, double *out)
+{
+    for (size_t i = 0; i < n; ++i) {
+        const projcurve_status st = pc_iges_real(p, first + i, &out[i]);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_iges_ints(const pc_iges_params *p, size_t first, size_t n, long *out)
+{
+    for (size_t i = 0; i < n; ++i) {
+        const projcurve_status st = pc_iges_int(p, first + i, &out[i]);
+        if (st != PROJCURVE_OK)
+            return st;
+    }
+    return PROJCURVE_OK;
+}

@@ -58,14 +58,13 @@ static projcurve_status curve_on_surface(const pc_iges_file *f, size_t de, pc_io
                                          const char **reason, unsigned char *consumed)
 {
     pc_iges_params p;
-    long bptr = 0, cptr = 0;
+    long ptrs[2] = {0, 0}; /* BPTR, CPTR */
     projcurve_status st = pc_iges_params_of(f, de, &p);
     if (st == PROJCURVE_OK)
-        st = pc_iges_int(&p, 3, &bptr);
-    if (st == PROJCURVE_OK)
-        st = pc_iges_int(&p, 4, &cptr);
+        st = pc_iges_ints(&p, 3, 2, ptrs);
     if (st != PROJCURVE_OK)
         return st;
+    const long bptr = ptrs[0], cptr = ptrs[1];
     if (bptr != 0 && pc_iges_entry_at(f, bptr, de) == NULL)
         return PROJCURVE_ERR_PARSE;
     consume(f, bptr, consumed);

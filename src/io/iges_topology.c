@@ -244,14 +244,13 @@ static projcurve_status loop_of_142(const topo *t, long de, size_t from_de, int 
         return PROJCURVE_OK;
     }
     pc_iges_params params;
-    long bptr = 0, cptr = 0;
+    long ptrs[2] = {0, 0}; /* BPTR, CPTR */
     projcurve_status st = pc_iges_params_of(t->f, (size_t)de, &params);
     if (st == PROJCURVE_OK)
-        st = pc_iges_int(&params, 3, &bptr);
-    if (st == PROJCURVE_OK)
-        st = pc_iges_int(&params, 4, &cptr);
+        st = pc_iges_ints(&params, 3, 2, ptrs);
     if (st != PROJCURVE_OK)
         return st;
+    const long bptr = ptrs[0], cptr = ptrs[1];
     mark(t, de);
     if (cptr != 0 && pc_iges_entry_at(t->f, cptr, (size_t)de) != NULL) {
         mark(t, cptr); /* read through the face */
@@ -323,18 +322,13 @@ static projcurve_status finish_face(const topo *t, const projcurve_surface *surf
 static projcurve_status read_144(const topo *t, size_t de)
 {
     pc_iges_params params;
-    long pts = 0, n1 = 0, n2 = 0, pto = 0;
+    long head[4] = {0, 0, 0, 0}; /* PTS, N1, N2, PTO */
     projcurve_status st = pc_iges_params_of(t->f, de, &params);
     if (st == PROJCURVE_OK)
-        st = pc_iges_int(&params, 1, &pts);
-    if (st == PROJCURVE_OK)
-        st = pc_iges_int(&params, 2, &n1);
-    if (st == PROJCURVE_OK)
-        st = pc_iges_int(&params, 3, &n2);
-    if (st == PROJCURVE_OK)
-        st = pc_iges_int(&params, 4, &pto);
+        st = pc_iges_ints(&params, 1, 4, head);
     if (st != PROJCURVE_OK)
         return st;
+    const long pts = head[0], n1 = head[1], n2 = head[2], pto = head[3];
     mark(t, (long)de);
     char reason[PC_IGES_REASON] = "";
     const projcurve_surface *surface = NULL;
@@ -368,14 +362,13 @@ static projcurve_status read_144(const topo *t, size_t de)
 static projcurve_status read_143(const topo *t, size_t de)
 {
     pc_iges_params params;
-    long sptr = 0, n = 0;
+    long head[2] = {0, 0}; /* SPTR, N */
     projcurve_status st = pc_iges_params_of(t->f, de, &params);
     if (st == PROJCURVE_OK)
-        st = pc_iges_int(&params, 2, &sptr);
-    if (st == PROJCURVE_OK)
-        st = pc_iges_int(&params, 3, &n);
+        st = pc_iges_ints(&params, 2, 2, head);
     if (st != PROJCURVE_OK)
         return st;
+    const long sptr = head[0], n = head[1];
     mark(t, (long)de);
     char reason[PC_IGES_REASON] = "";
     const projcurve_surface *surface = NULL;
@@ -401,11 +394,11 @@ static projcurve_status read_143(const topo *t, size_t de)
         const size_t first = p.count;
         size_t at = 5;
         for (long c = 0; st == PROJCURVE_OK && !reason[0] && c < n_curves; ++c) {
-            long crvpt = 0, sense = 1, k = 0, pscpt = 0;
-            if ((st = pc_iges_int(&bp, at, &crvpt)) != PROJCURVE_OK ||
-                (st = pc_iges_int(&bp, at + 1, &sense)) != PROJCURVE_OK ||
-                (st = pc_iges_int(&bp, at + 2, &k)) != PROJCURVE_OK)
+            long fields[3] = {0, 1, 0}; /* CRVPT, SENSE, K */
+            long pscpt = 0;
+            if ((st = pc_iges_ints(&bp, at, 3, fields)) != PROJCURVE_OK)
                 break;
+            const long crvpt = fields[0], sense = fields[1], k = fields[2];
             mark(t, crvpt);
             if (k < 1) {
                 snprintf(reason, PC_IGES_REASON,
