@@ -102,4 +102,11 @@ typedef enum pc_file_format {
 /* Recognises the format from the first bytes of the file. */
 pc_file_format pc_detect_format(const char *data, size_t len);
 
+/* A new model read from data[0..len) (NUL-terminated at len) by the reader
+ * of its format (io_read.c). Statuses: OK, PARSE (unrecognised format or
+ * the reader's error), the readers' others, NO_MEMORY; *out is set on OK
+ * only. */
+projcurve_status pc_model_read_text(projcurve_context *ctx, const char *data, size_t len,
+                                    projcurve_model **out);
+
 #endif /* PC_IO_MODEL_H */
