@@ -149,7 +149,7 @@ static const project_option options[] = {
      "instead of the files' curves"},
     {"--points", "FILE", set_points,
      "project the polyline through the points of FILE instead\n"
-     "of the files' curves, segment by segment (curves 0, 1, ...):\n"
+     "of the files' curves, one curve per segment (0, 1, ...):\n"
      "one point X Y Z per line, spaces or commas, '#' comments"},
     {"--interpolate", NULL, set_interpolate,
      "with --points: one interpolating cubic through the points\n"
