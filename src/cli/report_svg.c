@@ -216,9 +216,8 @@ int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title,
                "<text x=\"%.1f\" y=\"30\" font-size=\"18\">",
             SVG_VIEW_X0);
     svg_escaped(f, title);
-    fprintf(f, "</text>\n<text x=\"%.1f\" y=\"%.1f\" font-size=\"13\">Three-quarter view "
-               "(z up): surfaces grey, input curves black, projection rays dashed, branches "
-               "in colour</text>\n",
+    fprintf(f, "</text>\n<text x=\"%.1f\" y=\"%.1f\" font-size=\"13\">3D view (z up): "
+               "surfaces grey, curves black, projection rays dashed</text>\n",
             SVG_VIEW_X0, SVG_VIEW_Y0 - 16);
     v.emitting = 1;
     draw_scene(ctx, &v, job);

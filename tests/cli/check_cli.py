@@ -227,6 +227,18 @@ def part_demo(exe, shared, work):
         info = run([exe, "info", os.path.join(work, name + ".igs")], 0, f"info {name}.igs").stdout
         # the input curve and the branch (read back through its 142)
         check("1 surface(s), 2 curve(s)" in info, f"{name}.igs read back:\n{info}")
+    # without -o: build-demo/demo under the current directory (where
+    # ./run-demo.sh writes, run from the source directory), parents created
+    here = os.path.join(work, "cwd")
+    os.makedirs(here, exist_ok=True)
+    proc = subprocess.run([exe, "demo"], cwd=here, capture_output=True, text=True, timeout=240)
+    check(proc.returncode == 0, f"demo without -o: exit {proc.returncode}: {proc.stderr}")
+    written = sorted(os.listdir(os.path.join(here, "build-demo", "demo"))) \
+        if os.path.isdir(os.path.join(here, "build-demo", "demo")) else []
+    check(written == sorted(f"{n}.{e}" for n in ("example1", "freeform")
+                            for e in ("igs", "json", "svg")),
+          f"demo without -o wrote {written} to build-demo/demo")
+    check("wrote build-demo/demo/example1.igs" in proc.stdout, f"demo says where:\n{proc.stdout}")
 
 
 def manifest(shared):
