@@ -53,6 +53,21 @@ static int out_of_range(const char *flag, const char *what, size_t i, size_t n)
     return cli_usage_error("%s %zu: the files hold %ss 0 to %zu", flag, i, what, n - 1);
 }
 
+/* The curves of --line or --points into pk->given (none without them). */
+static int given_curves(projcurve_context *ctx, const project_args *a, project_pick *pk)
+{
+    if (a->points_path)
+        return cli_curves_from_points(ctx, a->points_path, a->interpolate, &pk->given,
+                                      &pk->n_given);
+    if (!a->have_line)
+        return CLI_EXIT_OK;
+    pk->given = calloc(1, sizeof *pk->given);
+    if (pk->given == NULL)
+        return cli_usage_error("out of memory");
+    pk->n_given = 1;
+    return cli_curve_from_line(ctx, a->line, &pk->given[0]);
+}
+
 static int pick(projcurve_context *ctx, const project_args *a, const cli_inputs *in,
                 project_pick *pk, cli_job *job)
 {
@@ -62,17 +77,7 @@ static int pick(projcurve_context *ctx, const project_args *a, const cli_inputs 
         return out_of_range("--curve", "curve", a->curve, in->n_curves);
     if (in->n_surfaces == 0)
         return cli_usage_error("the files hold no surface to project onto");
-    int code = CLI_EXIT_OK;
-    if (a->have_line) {
-        pk->given = calloc(1, sizeof *pk->given);
-        if (pk->given == NULL)
-            return cli_usage_error("out of memory");
-        pk->n_given = 1;
-        code = cli_curve_from_line(ctx, a->line, &pk->given[0]);
-    } else if (a->points_path) {
-        code = cli_curves_from_points(ctx, a->points_path, a->interpolate, &pk->given,
-                                      &pk->n_given);
-    }
+    const int code = given_curves(ctx, a, pk);
     if (code != CLI_EXIT_OK)
         return code;
     if (pk->given == NULL && in->n_curves == 0)
@@ -90,6 +95,7 @@ static int pick(projcurve_context *ctx, const project_args *a, const cli_inputs 
     job->curves = in->curves;
     job->n_curves = in->n_curves;
     if (pk->given) {
+        /* the segments of --points are numbered 0, 1, ...: no map */
         job->curves = (const projcurve_curve *const *)pk->given;
         job->n_curves = pk->n_given;
     } else if (a->have_curve) {
@@ -118,7 +124,8 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
     if (!a->quiet && cli_progress_init(&progress, stderr, job, a->progress)) {
         job->pair_started = cli_progress_pair;
         job->pair_user = &progress;
-        projcurve_options_set_progress(ctx, opts, cli_progress_call, &progress);
+        /* fails only for NULL arguments */
+        (void)projcurve_options_set_progress(ctx, opts, cli_progress_call, &progress);
     }
     const int ran = cli_run(ctx, job);
     if (job->pair_started)

@@ -164,6 +164,15 @@ def given_curves(t, shared, work):
             proc = t.run(base + ["--points", bad_path] + extra, 2, f"--points {text!r}")
             t.check(message in proc.stderr, f"--points {text!r}: '{message}' not in "
                                             f"{proc.stderr!r}")
+    # Windows line ends, a comment longer than any buffer, no final newline
+    odd = os.path.join(work, "odd_points.txt")
+    with open(odd, "w", newline="") as f:
+        f.write("# " + "x" * 100000 + "\r\n10 10 20\r\n50 30 20\r\n90,20,20")
+    igs = os.path.join(work, "odd.igs")
+    if t.run(base + ["--points", odd, "-o", igs], 0, "--points CRLF").returncode == 0:
+        t.check([[p[:3] for p in c.points] for c in iges_geometry.input_curves(igs)] ==
+                [[[10, 10, 20], [50, 30, 20]], [[50, 30, 20], [90, 20, 20]]],
+                "--points with CRLF line ends: other curves")
     proc = t.run(base + ["--points", os.path.join(work, "missing.txt")], 2, "--points missing")
     t.check("cannot open" in proc.stderr, f"--points missing: {proc.stderr!r}")
     t.run(base + ["--interpolate"], 2, "--interpolate without --points")
