@@ -150,18 +150,32 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
     return exit_code(job, unmeasured);
 }
 
-/* "Directional projection along (0, 0, -1) of curve.igs" */
+/* The file name without its folders: titles stay short. */
+static const char *base_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* "Projection along (0, 0, -1): part.igs and 2 more files" */
 static void make_title(const project_args *a, char *title, size_t cap)
 {
-    char kind[96];
+    char kind[96], more[48] = "";
     if (a->orthogonal)
         snprintf(kind, sizeof kind, "Orthogonal projection");
     else
         snprintf(kind, sizeof kind, "Projection along (%g, %g, %g)", a->dir[0], a->dir[1],
                  a->dir[2]);
-    const char *curve = a->have_line ? "a line" : a->points_path ? "the points of " : "";
-    snprintf(title, cap, "%s: %s%s%s%s%s", kind, curve, a->points_path ? a->points_path : "",
-             *curve ? " onto " : "", a->files[0], a->n_files > 1 ? " and more files" : "");
+    if (a->n_files > 1)
+        snprintf(more, sizeof more, " and %zu more file%s", a->n_files - 1,
+                 a->n_files > 2 ? "s" : "");
+    if (a->have_line)
+        snprintf(title, cap, "%s: a line onto %s%s", kind, base_name(a->files[0]), more);
+    else if (a->points_path)
+        snprintf(title, cap, "%s: the points of %s onto %s%s", kind, base_name(a->points_path),
+                 base_name(a->files[0]), more);
+    else
+        snprintf(title, cap, "%s: %s%s", kind, base_name(a->files[0]), more);
 }
 
 int cli_cmd_project(int argc, char **argv)
