@@ -234,8 +234,13 @@ def printing(t, shared, work):
     on_terminal(t, two)
 
     # --timeout: a cut call is reported, its partial result written, exit 3
-    js = os.path.join(work, "timeout.json")
-    proc = t.run(base + ["--timeout", "1e-9", "--json", js], 3, "--timeout 1 ns")
+    js, igs = os.path.join(work, "timeout.json"), os.path.join(work, "timeout.igs")
+    svg = os.path.join(work, "timeout.svg")
+    proc = t.run(base + ["--timeout", "1e-9", "--json", js, "-o", igs, "--svg", svg], 3,
+                 "--timeout 1 ns")
+    t.check(os.path.isfile(igs) and os.path.isfile(svg) and
+            len(iges_geometry.input_curves(igs)) == 1,
+            "--timeout: the IGES and SVG outputs are still written")
     t.check("stopped by --timeout" in proc.stderr and "time limit" in proc.stderr,
             f"--timeout: {proc.stderr!r}")
     data = load_json(js, t.check, "--timeout")
