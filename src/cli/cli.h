@@ -3,7 +3,9 @@
  * The projcurve command: shared declarations of its parts.
  *
  * Exit codes: CLI_EXIT_OK, CLI_EXIT_PROJECTION (a projection call failed),
- * CLI_EXIT_USAGE (bad usage or input that cannot be read).
+ * CLI_EXIT_USAGE (bad usage or input that cannot be read), CLI_EXIT_TIMEOUT
+ * (the only failures were calls stopped by --timeout; their partial results
+ * are reported and written).
  */
 #ifndef PC_CLI_H
 #define PC_CLI_H
@@ -13,13 +15,17 @@
 
 #include "projcurve.h"
 
-enum { CLI_EXIT_OK = 0, CLI_EXIT_PROJECTION = 1, CLI_EXIT_USAGE = 2 };
+enum { CLI_EXIT_OK = 0, CLI_EXIT_PROJECTION = 1, CLI_EXIT_USAGE = 2, CLI_EXIT_TIMEOUT = 3 };
 
 /* ---- argument helpers (args.c) ---- */
 /* "X,Y,Z" -> v; 0 on a malformed or non-finite value. */
 int cli_parse_vec3(const char *text, double v[3]);
+/* n comma-separated finite reals -> v; 0 on anything else. */
+int cli_parse_reals(const char *text, size_t n, double *v);
 /* A finite real; 0 on failure. */
 int cli_parse_double(const char *text, double *v);
+/* A decimal index 0 <= *v < 2^53 (digits only); 0 on failure. */
+int cli_parse_index(const char *text, size_t *v);
 /* 1 when arg is -h or --help. */
 int cli_is_help(const char *arg);
 /* Prints "projcurve: message" to stderr and returns CLI_EXIT_USAGE. */
@@ -30,6 +36,8 @@ int cli_usage_error(const char *fmt, ...)
     ;
 /* Creates directory path if it does not exist; 0 on failure. */
 int cli_make_dir(const char *path);
+/* The same with its missing parents (mkdir -p); 0 on failure. */
+int cli_make_dirs(const char *path);
 /* Milliseconds from a monotonic-enough clock. */
 double cli_now_ms(void);
 
@@ -69,7 +77,26 @@ typedef struct cli_job {
                         results (projcurve_result_failure_count) */
     double metres_per_unit; /* length unit of the inputs (0: unknown, the
                                IGES file says millimetres) */
+    /* The numbers the user knows the surfaces and curves by (as info and
+     * --surface / --curve count them); NULL: 0, 1, ... in job order. */
+    const size_t *surface_numbers, *curve_numbers;
+    /* Called before each projection call with its index k of n (NULL:
+     * none): the progress line. */
+    void (*pair_started)(void *user, size_t k, size_t n);
+    void *pair_user;
+    size_t timeouts; /* calls stopped by PROJCURVE_OPT_TIME_LIMIT (also
+                        counted in failures) */
 } cli_job;
+
+/* The user's number of the job's surface s and curve c. */
+static inline size_t cli_surface_number(const cli_job *job, size_t s)
+{
+    return job->surface_numbers ? job->surface_numbers[s] : s;
+}
+static inline size_t cli_curve_number(const cli_job *job, size_t c)
+{
+    return job->curve_numbers ? job->curve_numbers[c] : c;
+}
 
 /* Projects every curve onto every surface; failures are reported on stderr
  * and counted. Returns 0 only when memory runs out (or n_surfaces * n_curves
@@ -93,15 +120,19 @@ int cli_branch_measure(projcurve_context *ctx, const cli_job *job, const cli_pai
 
 const char *cli_start_name(projcurve_branch_start s);
 const char *cli_end_name(projcurve_branch_end e);
+/* The same in words, for pictures: "the start of the curve", ... */
+const char *cli_start_words(projcurve_branch_start s);
+const char *cli_end_words(projcurve_branch_end e);
 
 /* ---- outputs ---- */
 int cli_write_iges(projcurve_context *ctx, const cli_job *job, const char *path);
 int cli_write_json(projcurve_context *ctx, const cli_job *job, const char *path);
 int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title,
                   const char *path);
-/* The short summary printed by project and demo; returns the number of
- * branches that could not be measured (the callers count them as failures:
- * a summary that cannot be computed is not a success). */
+/* The short summary printed by project and demo (out NULL: only
+ * counted, for --quiet); returns the number of branches that could not be
+ * measured (the callers count them as failures: a summary that cannot be
+ * computed is not a success). */
 size_t cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out);
 
 /* ---- commands ---- */
@@ -109,7 +140,13 @@ int cli_cmd_info(int argc, char **argv);
 /* The shapes, faces, loops and edges of a model (info_topology.c), as text
  * lines or as the JSON object of projcurve info --json. */
 void cli_print_topology(const projcurve_model *m);
-void cli_print_info_json(const char *path, const projcurve_model *m);
+void cli_print_info_json(projcurve_context *ctx, const char *path, const projcurve_model *m);
+/* Degrees, control points, spans, domain and box of each surface and
+ * curve, and the model's box (info_sizes.c): text lines, or the members
+ * surface_list, curve_list and box of the --json object (each line ends
+ * with a comma: more members follow). */
+void cli_print_sizes(projcurve_context *ctx, const projcurve_model *m);
+void cli_print_sizes_json(projcurve_context *ctx, const projcurve_model *m, FILE *out);
 int cli_cmd_project(int argc, char **argv);
 int cli_cmd_demo(int argc, char **argv);
 

@@ -1,12 +1,16 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve demo [-o DIR]: the paper's Example 1 and a freeform case,
- * written as DIR/example1.{igs,svg,json} and DIR/freeform.{igs,svg,json}.
+ * written as DIR/example1.{igs,svg,json} and DIR/freeform.{igs,svg,json};
+ * DIR is DEMO_DEFAULT_DIR unless -o says otherwise (the folder ./run-demo.sh
+ * writes to, when run from the source directory).
  */
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
+
+#define DEMO_DEFAULT_DIR "build-demo/demo"
 
 static void demo_usage(FILE *out)
 {
@@ -15,7 +19,8 @@ static void demo_usage(FILE *out)
           "Projects [SY13]'s Example 1 (a degree 5x1 sheet, a cubic curve, direction\n"
           "(-1,0,0)) and a freeform case (a bicubic wave, an S-shaped cubic, direction\n"
           "(0,0,-1)); writes example1.igs/.svg/.json and freeform.igs/.svg/.json to DIR\n"
-          "(default: the current directory) and prints a summary of each.\n",
+          "(created with its parents; default: " DEMO_DEFAULT_DIR ") and prints a summary\n"
+          "of each.\n",
           out);
 }
 
@@ -68,7 +73,7 @@ static int run_case(projcurve_context *ctx, const char *dir, const char *name, c
 
 int cli_cmd_demo(int argc, char **argv)
 {
-    const char *dir = ".";
+    const char *dir = DEMO_DEFAULT_DIR;
     for (int i = 1; i < argc; ++i) {
         if (cli_is_help(argv[i])) {
             demo_usage(stdout);
@@ -81,15 +86,15 @@ int cli_cmd_demo(int argc, char **argv)
             return cli_usage_error("unexpected argument '%s'", argv[i]);
         }
     }
-    if (!cli_make_dir(dir))
+    if (!cli_make_dirs(dir))
         return cli_usage_error("cannot create the directory %s", dir);
     projcurve_context *ctx = NULL;
     if (projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx) != PROJCURVE_OK)
         return cli_usage_error("cannot create a context");
     static const double example1_dir[3] = {-1.0, 0.0, 0.0}, freeform_dir[3] = {0.0, 0.0, -1.0};
-    int code = run_case(ctx, dir, "example1", "[SY13] Example 1, Dir (-1,0,0)",
+    int code = run_case(ctx, dir, "example1", "Song and Yong's Example 1: projection along (-1, 0, 0)",
                         cli_demo_example1, example1_dir);
-    const int code2 = run_case(ctx, dir, "freeform", "Freeform bicubic wave, Dir (0,0,-1)",
+    const int code2 = run_case(ctx, dir, "freeform", "A bicubic wave: projection along (0, 0, -1)",
                                cli_demo_freeform, freeform_dir);
     projcurve_context_destroy(ctx);
     return code != CLI_EXIT_OK ? code : code2;

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * projcurve info [--json] FILE: surfaces (degrees, nets, spans, rational,
- * domain), curves, shapes, faces, loops and edges, and the skipped entities
+ * domain, box), curves (the same), the model's box, shapes, faces, loops and edges, and the skipped entities
  * summarised by kind; --json the counts as one JSON object.
  */
 #include <stdlib.h>
@@ -17,11 +17,13 @@ static void info_usage(FILE *out)
     fputs("usage: projcurve info [--json] FILE\n"
           "\n"
           "Lists what FILE (IGES, STEP, G+Smo XML or Newell teapot text) holds: each\n"
-          "surface with its degrees, control net, knot spans and domain, each curve,\n"
-          "the shapes, faces (with the faces that could not be built and why), loops\n"
+          "surface and curve with its degrees, control points, knot spans, domain\n"
+          "and bounding box, the box of the whole model, the shapes, faces (with the faces that could not be built and why), loops\n"
           "and edges, and the entities that were not read, counted by kind.\n"
-          "--json prints the counts as one JSON object: surfaces, curves, faces,\n"
-          "loops, edges, shapes, face_kinds ({\"bspline\": 18, ...}) and more.\n",
+          "--json prints one JSON object: the counts (surfaces, curves, faces, loops,\n"
+          "edges, shapes, face_kinds {\"bspline\": 18, ...}), surface_list and\n"
+          "curve_list (degree, poles, spans, domain, box of each), box (the model's)\n"
+          "and more.\n",
           out);
 }
 
@@ -91,7 +93,7 @@ int cli_cmd_info(int argc, char **argv)
         return code;
     }
     if (json) {
-        cli_print_info_json(path, m);
+        cli_print_info_json(ctx, path, m);
         projcurve_model_destroy(m);
         projcurve_context_destroy(ctx);
         return CLI_EXIT_OK;
@@ -99,28 +101,7 @@ int cli_cmd_info(int argc, char **argv)
     printf("%s: %zu surface(s), %zu curve(s), %zu skipped entit%s\n", path,
            projcurve_model_surface_count(m), projcurve_model_curve_count(m),
            projcurve_model_skipped_count(m), projcurve_model_skipped_count(m) == 1 ? "y" : "ies");
-    for (size_t i = 0; i < projcurve_model_surface_count(m); ++i) {
-        int du, dv, rational;
-        size_t nu, nv, su, sv;
-        double d[4];
-        const projcurve_surface *s = projcurve_model_surface(m, i);
-        projcurve_surface_info(ctx, s, &du, &dv, &nu, &nv, &su, &sv, &rational);
-        projcurve_surface_domain(ctx, s, d);
-        printf("  surface %zu: degree %dx%d, %zux%zu control points, %zux%zu spans, %s, "
-               "domain [%g, %g] x [%g, %g]\n",
-               i, du, dv, nu, nv, su, sv, rational ? "rational" : "polynomial", d[0], d[1], d[2],
-               d[3]);
-    }
-    for (size_t i = 0; i < projcurve_model_curve_count(m); ++i) {
-        int deg = 0, rational = 0;
-        size_t n = 0;
-        double t0 = 0.0, t1 = 0.0;
-        const projcurve_curve *c = projcurve_model_curve(m, i);
-        projcurve_curve_nurbs_info(ctx, c, &deg, &n, NULL, &rational);
-        projcurve_curve_domain(ctx, c, &t0, &t1);
-        printf("  curve %zu: degree %d, %zu control points, %s, domain [%g, %g]\n", i, deg, n,
-               rational ? "rational" : "polynomial", t0, t1);
-    }
+    cli_print_sizes(ctx, m);
     cli_print_topology(m);
     print_skipped(m);
     projcurve_model_destroy(m);

@@ -1,112 +1,17 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * projcurve project FILE... (--dir X,Y,Z | --orthogonal) [--tol D]
- *   [--angle DEG] [--pcurve-degree 1|3] [--timeout S] [-o OUT.igs] [--svg OUT.svg]
- *   [--json OUT.json]
+ * projcurve project FILE... (--dir X,Y,Z | --orthogonal) [OPTION]...: the
+ * options are in project_args.c; here the inputs are read, the pairs
+ * picked, the projections run and the outputs written.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
-
-static void project_usage(FILE *out)
-{
-    fputs("usage: projcurve project FILE... (--dir X,Y,Z | --orthogonal) [--tol D]\n"
-          "                         [--angle DEG] [--pcurve-degree 1|3] [--timeout S]\n"
-          "                         [-o OUT.igs] [--svg OUT.svg] [--json OUT.json]\n"
-          "\n"
-          "Projects every curve of the files onto every surface of the files.\n"
-          "\n"
-          "  --dir X,Y,Z     directional projection along (X, Y, Z)\n"
-          "  --orthogonal    orthogonal projection (foot points)\n"
-          "  --tol D         distance tolerance eps_D in model units (default: 1e-4 of\n"
-          "                  the surface size)\n"
-          "  --angle DEG     joint angle tolerance eps_T in degrees (default 1)\n"
-          "  --pcurve-degree N  pieces' (u, v) curves: 1 straight (default), 3 cubic\n"
-          "                  Hermite (far fewer pieces at tight eps_D)\n"
-          "  --timeout S     stop each (curve, surface) projection after S seconds of\n"
-          "                  wall time, keeping what it made (0: no limit, default)\n"
-          "  -o OUT.igs      write surfaces, curves and branches as IGES 5.3\n"
-          "  --svg OUT.svg   write a picture\n"
-          "  --json OUT.json write the branches as JSON (see docs/cli.md)\n"
-          "\n"
-          "Exit codes: 0 ok, 1 a projection failed, 2 bad usage or unreadable input.\n",
-          out);
-}
-
-typedef struct project_args {
-    char **files;
-    size_t n_files;
-    int have_dir, orthogonal;
-    double dir[3];
-    double tol, angle, pcurve_degree, timeout;
-    int have_tol, have_angle, have_pcurve_degree, have_timeout;
-    const char *iges, *svg, *json;
-} project_args;
-
-/* The value following option argv[*i]; NULL (after a message) if missing. */
-static const char *value_of(int argc, char **argv, int *i)
-{
-    if (*i + 1 >= argc) {
-        cli_usage_error("%s needs a value", argv[*i]);
-        return NULL;
-    }
-    return argv[++*i];
-}
-
-static int parse(int argc, char **argv, project_args *a)
-{
-    a->files = calloc((size_t)argc, sizeof *a->files);
-    if (a->files == NULL)
-        return cli_usage_error("out of memory");
-    for (int i = 1; i < argc; ++i) {
-        const char *arg = argv[i], *v = NULL;
-        if (strcmp(arg, "--dir") == 0) {
-            if ((v = value_of(argc, argv, &i)) == NULL)
-                return CLI_EXIT_USAGE;
-            if (!cli_parse_vec3(v, a->dir))
-                return cli_usage_error("--dir wants X,Y,Z, got '%s'", v);
-            a->have_dir = 1;
-        } else if (strcmp(arg, "--orthogonal") == 0) {
-            a->orthogonal = 1;
-        } else if (strcmp(arg, "--tol") == 0 || strcmp(arg, "--angle") == 0) {
-            if ((v = value_of(argc, argv, &i)) == NULL)
-                return CLI_EXIT_USAGE;
-            double *target = arg[2] == 't' ? &a->tol : &a->angle;
-            if (!cli_parse_double(v, target))
-                return cli_usage_error("%s wants a number, got '%s'", arg, v);
-            *(arg[2] == 't' ? &a->have_tol : &a->have_angle) = 1;
-        } else if (strcmp(arg, "--timeout") == 0) {
-            if ((v = value_of(argc, argv, &i)) == NULL)
-                return CLI_EXIT_USAGE;
-            if (!cli_parse_double(v, &a->timeout))
-                return cli_usage_error("%s wants a number of seconds, got '%s'", arg, v);
-            a->have_timeout = 1;
-        } else if (strcmp(arg, "--pcurve-degree") == 0) {
-            if ((v = value_of(argc, argv, &i)) == NULL)
-                return CLI_EXIT_USAGE;
-            if (!cli_parse_double(v, &a->pcurve_degree) ||
-                a->pcurve_degree != floor(a->pcurve_degree) || fabs(a->pcurve_degree) > 1e9)
-                return cli_usage_error("%s wants an integer, got '%s'", arg, v);
-            a->have_pcurve_degree = 1;
-        } else if (strcmp(arg, "-o") == 0 || strcmp(arg, "--svg") == 0 ||
-                   strcmp(arg, "--json") == 0) {
-            if ((v = value_of(argc, argv, &i)) == NULL)
-                return CLI_EXIT_USAGE;
-            *(arg[1] == 'o' ? &a->iges : arg[2] == 's' ? &a->svg : &a->json) = v;
-        } else if (arg[0] == '-' && arg[1] != '\0') {
-            return cli_usage_error("unknown option '%s' (see projcurve project --help)", arg);
-        } else {
-            a->files[a->n_files++] = argv[i];
-        }
-    }
-    if (a->n_files == 0)
-        return cli_usage_error("project needs at least one file");
-    if (a->have_dir == a->orthogonal)
-        return cli_usage_error("give exactly one of --dir X,Y,Z and --orthogonal");
-    return CLI_EXIT_OK;
-}
+#include "curve_input.h"
+#include "progress.h"
+#include "project_args.h"
 
 /* Options from the arguments; a rejected value is a usage error. */
 static int make_options(projcurve_context *ctx, const project_args *a, projcurve_options **opts)
@@ -120,8 +25,8 @@ static int make_options(projcurve_context *ctx, const project_args *a, projcurve
                                                       a->angle) != PROJCURVE_OK)
         return cli_usage_error("--angle: %s", projcurve_context_message(ctx));
     if (a->have_pcurve_degree &&
-        projcurve_options_set_int(ctx, *opts, PROJCURVE_OPT_PCURVE_DEGREE,
-                                  (long long)a->pcurve_degree) != PROJCURVE_OK)
+        projcurve_options_set_int(ctx, *opts, PROJCURVE_OPT_PCURVE_DEGREE, a->pcurve_degree) !=
+            PROJCURVE_OK)
         return cli_usage_error("--pcurve-degree: %s", projcurve_context_message(ctx));
     if (a->have_timeout && projcurve_options_set_double(ctx, *opts, PROJCURVE_OPT_TIME_LIMIT,
                                                         a->timeout) != PROJCURVE_OK)
@@ -129,13 +34,110 @@ static int make_options(projcurve_context *ctx, const project_args *a, projcurve
     return CLI_EXIT_OK;
 }
 
+/* What the job projects: the surfaces and curves of the files, or the one
+ * --surface / --curve picks, or the curve of --line / --points. */
+typedef struct project_pick {
+    projcurve_curve **given;          /* --line / --points, owned */
+    size_t n_given;
+    const projcurve_curve *curve_one; /* the one curve projected, if one */
+    size_t surface_number, curve_number;
+} project_pick;
+
+/* "--surface 7: the files hold surfaces 0 to 4" */
+static int out_of_range(const char *flag, const char *what, size_t i, size_t n)
+{
+    if (n == 0)
+        return cli_usage_error("%s %zu: the files hold no %s", flag, i, what);
+    if (n == 1)
+        return cli_usage_error("%s %zu: the files hold one %s, number 0", flag, i, what);
+    return cli_usage_error("%s %zu: the files hold %ss 0 to %zu", flag, i, what, n - 1);
+}
+
+/* The curves of --line or --points into pk->given (none without them). */
+static int given_curves(projcurve_context *ctx, const project_args *a, project_pick *pk)
+{
+    if (a->points_path)
+        return cli_curves_from_points(ctx, a->points_path, a->interpolate, &pk->given,
+                                      &pk->n_given);
+    if (!a->have_line)
+        return CLI_EXIT_OK;
+    pk->given = calloc(1, sizeof *pk->given);
+    if (pk->given == NULL)
+        return cli_usage_error("out of memory");
+    pk->n_given = 1;
+    return cli_curve_from_line(ctx, a->line, &pk->given[0]);
+}
+
+static int pick(projcurve_context *ctx, const project_args *a, const cli_inputs *in,
+                project_pick *pk, cli_job *job)
+{
+    if (a->have_surface && a->surface >= in->n_surfaces)
+        return out_of_range("--surface", "surface", a->surface, in->n_surfaces);
+    if (a->have_curve && a->curve >= in->n_curves)
+        return out_of_range("--curve", "curve", a->curve, in->n_curves);
+    if (in->n_surfaces == 0)
+        return cli_usage_error("the files hold no surface to project onto");
+    const int code = given_curves(ctx, a, pk);
+    if (code != CLI_EXIT_OK)
+        return code;
+    if (pk->given == NULL && in->n_curves == 0)
+        return cli_usage_error("the files hold %zu surface(s) and no curve; give one with "
+                               "--line or --points",
+                               in->n_surfaces);
+    job->surfaces = in->surfaces;
+    job->n_surfaces = in->n_surfaces;
+    if (a->have_surface) {
+        pk->surface_number = a->surface;
+        job->surfaces = &in->surfaces[a->surface];
+        job->n_surfaces = 1;
+        job->surface_numbers = &pk->surface_number;
+    }
+    job->curves = in->curves;
+    job->n_curves = in->n_curves;
+    if (pk->given) {
+        /* the segments of --points are numbered 0, 1, ...: no map */
+        job->curves = (const projcurve_curve *const *)pk->given;
+        job->n_curves = pk->n_given;
+    } else if (a->have_curve) {
+        pk->curve_one = in->curves[a->curve];
+        pk->curve_number = a->curve;
+        job->curves = &pk->curve_one;
+        job->n_curves = 1;
+        job->curve_numbers = &pk->curve_number;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* The exit code of a finished run (cli.h). */
+static int exit_code(const cli_job *job, size_t unmeasured)
+{
+    if (unmeasured || job->failures > job->timeouts)
+        return CLI_EXIT_PROJECTION;
+    return job->timeouts ? CLI_EXIT_TIMEOUT : CLI_EXIT_OK;
+}
+
 /* Runs the job and writes the requested outputs; the exit code. */
 static int run_and_write(projcurve_context *ctx, cli_job *job, const project_args *a,
-                         const char *title)
+                         projcurve_options *opts, const char *title)
 {
-    if (!cli_run(ctx, job))
+    cli_progress progress;
+    if (!a->quiet && cli_progress_init(&progress, stderr, job, a->progress)) {
+        job->pair_started = cli_progress_pair;
+        job->pair_user = &progress;
+        /* fails only for NULL arguments */
+        (void)projcurve_options_set_progress(ctx, opts, cli_progress_call, &progress);
+    }
+    const int ran = cli_run(ctx, job);
+    if (job->pair_started)
+        cli_progress_finish(&progress);
+    if (!ran)
         return cli_usage_error("out of memory");
-    const size_t unmeasured = cli_print_summary(ctx, job, stdout);
+    const size_t unmeasured = cli_print_summary(ctx, job, a->quiet ? NULL : stdout);
+    if (job->timeouts)
+        fprintf(stderr,
+                "projcurve: %zu projection(s) stopped by --timeout %g s; what they made is "
+                "reported and written (their cut branches end 'limit')\n",
+                job->timeouts, a->timeout);
     int ok = 1;
     if (a->iges)
         ok &= cli_write_iges(ctx, job, a->iges);
@@ -145,19 +147,46 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
         ok &= cli_write_svg(ctx, job, title, a->svg);
     if (!ok)
         return CLI_EXIT_USAGE;
-    return job->failures || unmeasured ? CLI_EXIT_PROJECTION : CLI_EXIT_OK;
+    return exit_code(job, unmeasured);
+}
+
+/* The file name without its folders: titles stay short. */
+static const char *base_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+/* "Projection along (0, 0, -1): part.igs and 2 more files" */
+static void make_title(const project_args *a, char *title, size_t cap)
+{
+    char kind[96], more[48] = "";
+    if (a->orthogonal)
+        snprintf(kind, sizeof kind, "Orthogonal projection");
+    else
+        snprintf(kind, sizeof kind, "Projection along (%g, %g, %g)", a->dir[0], a->dir[1],
+                 a->dir[2]);
+    if (a->n_files > 1)
+        snprintf(more, sizeof more, " and %zu more file%s", a->n_files - 1,
+                 a->n_files > 2 ? "s" : "");
+    if (a->have_line)
+        snprintf(title, cap, "%s: a line onto %s%s", kind, base_name(a->files[0]), more);
+    else if (a->points_path)
+        snprintf(title, cap, "%s: the points of %s onto %s%s", kind, base_name(a->points_path),
+                 base_name(a->files[0]), more);
+    else
+        snprintf(title, cap, "%s: %s%s", kind, base_name(a->files[0]), more);
 }
 
 int cli_cmd_project(int argc, char **argv)
 {
     for (int i = 1; i < argc; ++i)
         if (cli_is_help(argv[i])) {
-            project_usage(stdout);
+            project_args_usage(stdout);
             return CLI_EXIT_OK;
         }
     project_args a;
-    memset(&a, 0, sizeof a);
-    int code = parse(argc, argv, &a);
+    int code = project_args_parse(argc, argv, &a);
     if (code != CLI_EXIT_OK) {
         free(a.files);
         return code;
@@ -168,20 +197,17 @@ int cli_cmd_project(int argc, char **argv)
     memset(&in, 0, sizeof in);
     cli_job job;
     memset(&job, 0, sizeof job);
+    project_pick pk;
+    memset(&pk, 0, sizeof pk);
     if (projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx) != PROJCURVE_OK)
         code = cli_usage_error("cannot create a context");
     if (code == CLI_EXIT_OK)
         code = cli_inputs_load(ctx, a.files, a.n_files, &in);
-    if (code == CLI_EXIT_OK && (in.n_surfaces == 0 || in.n_curves == 0))
-        code = cli_usage_error("the files hold %zu surface(s) and %zu curve(s); need both",
-                               in.n_surfaces, in.n_curves);
     if (code == CLI_EXIT_OK)
         code = make_options(ctx, &a, &opts);
+    if (code == CLI_EXIT_OK)
+        code = pick(ctx, &a, &in, &pk, &job);
     if (code == CLI_EXIT_OK) {
-        job.surfaces = in.surfaces;
-        job.n_surfaces = in.n_surfaces;
-        job.curves = in.curves;
-        job.n_curves = in.n_curves;
         job.orthogonal = a.orthogonal;
         memcpy(job.dir, a.dir, sizeof job.dir);
         /* the unit of the first input that declares one: coordinates are
@@ -189,13 +215,12 @@ int cli_cmd_project(int argc, char **argv)
         for (size_t m = 0; m < in.n_models && job.metres_per_unit == 0.0; ++m)
             projcurve_model_length_unit(in.models[m], &job.metres_per_unit);
         job.opts = opts;
-        char title[256];
-        snprintf(title, sizeof title, "projcurve: %s projection of %s%s",
-                 a.orthogonal ? "orthogonal" : "directional", a.files[0],
-                 a.n_files > 1 ? " and more" : "");
-        code = run_and_write(ctx, &job, &a, title);
+        char title[512];
+        make_title(&a, title, sizeof title);
+        code = run_and_write(ctx, &job, &a, opts, title);
     }
     cli_job_free(&job);
+    cli_curves_free(pk.given, pk.n_given);
     cli_inputs_free(&in);
     projcurve_options_destroy(opts);
     projcurve_context_destroy(ctx);

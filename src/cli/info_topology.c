@@ -118,7 +118,7 @@ static void json_string(FILE *out, const char *s)
     fputc('"', out);
 }
 
-void cli_print_info_json(const char *path, const projcurve_model *m)
+void cli_print_info_json(projcurve_context *ctx, const char *path, const projcurve_model *m)
 {
     topo_counts c;
     count(m, &c);
@@ -127,6 +127,7 @@ void cli_print_info_json(const char *path, const projcurve_model *m)
     printf(",\n  \"surfaces\": %zu,\n  \"curves\": %zu,\n  \"skipped\": %zu,\n",
            projcurve_model_surface_count(m), projcurve_model_curve_count(m),
            projcurve_model_skipped_count(m));
+    cli_print_sizes_json(ctx, m, stdout);
     printf("  \"faces\": %zu,\n  \"faces_built\": %zu,\n  \"loops\": %zu,\n  \"edges\": %zu,\n"
            "  \"shapes\": %zu,\n  \"face_kinds\": {",
            c.faces, projcurve_model_face_count(m), c.loops, c.edges,

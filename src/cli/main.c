@@ -17,13 +17,17 @@ static void usage(FILE *out)
           "\n"
           "commands:\n"
           "  demo [-o DIR]     project the paper's Example 1 and a freeform case;\n"
-          "                    write IGES, SVG and JSON to DIR\n"
-          "  info FILE         list the surfaces, curves and skipped entities of a file\n"
-          "  project FILE...   project every curve onto every surface of the files\n"
+          "                    write IGES, SVG and JSON to DIR (default build-demo/demo)\n"
+          "  info FILE         list the surfaces and curves of a file (sizes, boxes),\n"
+          "                    its faces and the entities it skipped\n"
+          "  project FILE...   project every curve onto every surface of the files, or\n"
+          "                    the pairs --surface / --curve pick, or a curve given by\n"
+          "                    --line / --points\n"
           "\n"
           "Run 'projcurve COMMAND --help' for the options of a command.\n"
           "Files: IGES 5.3, STEP (ISO 10303-21), G+Smo XML, Newell teapot text.\n"
-          "Exit codes: 0 ok, 1 a projection failed, 2 bad usage or unreadable input.\n",
+          "Exit codes: 0 ok, 1 a projection failed, 2 bad usage or unreadable input,\n"
+          "3 a projection stopped by project --timeout.\n",
           out);
 }
 

@@ -4,8 +4,11 @@
  *   {"time_ms": T, "branches": [{"surface": i, "curve": j, "t_range": [a, b],
  *    "pieces": n, "degree": d, "control_points": m, "pcurve_degree": dq,
  *    "pcurve_control_points": mq, "start": "...", "end": "...",
- *    "points": k, "residual": r, "deviation": e}, ...], "failures": f}
- * surface and curve index the inputs in file order; degree and
+ *    "points": k, "residual": r, "deviation": e}, ...], "failures": f,
+ *    "timeouts": n}
+ * surface and curve are the numbers info prints (in file order, also
+ * when --surface / --curve pick one); timeouts counts the calls stopped by
+ * the time limit (also counted in failures); degree and
  * control_points describe the branch's compact 3D curve (the pieces joined
  * into one B-spline where it has none; 0 when it was not composed),
  * pcurve_degree and pcurve_control_points its compact pcurve (0 when not
@@ -43,7 +46,8 @@ static void branch_json(projcurve_context *ctx, const cli_job *job, const cli_pa
     projcurve_curve_destroy(pc);
     cli_branch_quality q;
     cli_branch_measure(ctx, job, p, b, &q);
-    fprintf(f, "    {\"surface\": %zu, \"curve\": %zu, \"t_range\": [", p->surface, p->curve);
+    fprintf(f, "    {\"surface\": %zu, \"curve\": %zu, \"t_range\": [",
+            cli_surface_number(job, p->surface), cli_curve_number(job, p->curve));
     json_number(f, t[0]);
     fputs(", ", f);
     json_number(f, t[1]);
@@ -82,7 +86,8 @@ int cli_write_json(projcurve_context *ctx, const cli_job *job, const char *path)
             first = 0;
         }
     }
-    fprintf(f, "%s], \"failures\": %zu}\n", first ? "" : "\n  ", job->failures);
+    fprintf(f, "%s], \"failures\": %zu, \"timeouts\": %zu}\n", first ? "" : "\n  ",
+            job->failures, job->timeouts);
     const int ok = fclose(f) == 0;
     if (!ok)
         fprintf(stderr, "projcurve: error writing %s\n", path);
@@ -114,6 +119,8 @@ size_t cli_print_summary(projcurve_context *ctx, const cli_job *job, FILE *out)
         }
         branches += n;
     }
+    if (out == NULL)
+        return unmeasured;
     fprintf(out, "%zu curve(s) x %zu surface(s): %zu branch(es), %zu piece(s), %.1f ms; ",
             job->n_curves, job->n_surfaces, branches, pieces, job->time_ms);
     if (branches == unmeasured)

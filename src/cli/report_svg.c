@@ -2,37 +2,24 @@
 /*
  * SVG picture of a projection: on the left a three-quarter view of the
  * surfaces (iso-parameter lines), the input curves, a few projection rays
- * and every branch in its own colour; on the right the (u, v) domain with
- * the branches' pcurves (each surface's domain mapped to the unit square).
- * The file is self-contained SVG 1.1: no scripts, fonts or links.
+ * and every branch in its own colour; on the right a parameter panel per
+ * surface (svg_panels.c); below, the legend. The height grows with the
+ * panels and the legend. The file is self-contained SVG 1.1: no scripts,
+ * fonts or links.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
+#include "svg.h"
 
-#define SVG_WIDTH 1120.0
-#define SVG_HEIGHT 600.0
-#define VIEW_X0 20.0   /* 3D panel */
-#define VIEW_X1 660.0
-#define VIEW_Y0 60.0
-#define VIEW_Y1 520.0
-#define UV_X0 700.0    /* (u, v) panel, a square */
-#define UV_SIZE 400.0
-#define UV_Y0 90.0
 #define AZIMUTH_DEG (-30.0)
 #define ELEVATION_DEG 25.0
-#define ISO_LINES 9        /* per direction and surface */
 #define ISO_SAMPLES 48
 #define CURVE_SAMPLES 240
 #define RAYS_PER_PAIR 7
 #define MAX_SURFACES_DRAWN 64
 #define DEG_TO_RAD (3.14159265358979323846 / 180.0)
-
-static const char *const palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e",
-                                      "#17becf", "#e377c2", "#8c564b", "#bcbd22", "#7f7f7f"};
-#define PALETTE_SIZE (sizeof palette / sizeof *palette)
 
 typedef struct view {
     double right[3], up[3];
@@ -87,8 +74,8 @@ static void draw_surface(projcurve_context *ctx, view *v, const projcurve_surfac
     if (projcurve_surface_domain(ctx, s, d) != PROJCURVE_OK)
         return;
     for (int dir = 0; dir < 2; ++dir)
-        for (int i = 0; i < ISO_LINES; ++i) {
-            const double a = (double)i / (ISO_LINES - 1);
+        for (int i = 0; i < SVG_ISO_LINES; ++i) {
+            const double a = (double)i / (SVG_ISO_LINES - 1);
             begin_line(v, "#9aa5b1", 0.6, "");
             for (int k = 0; k < ISO_SAMPLES; ++k) {
                 const double b = (double)k / (ISO_SAMPLES - 1);
@@ -118,22 +105,6 @@ static void draw_curve(projcurve_context *ctx, view *v, const projcurve_curve *c
     end_line(v);
 }
 
-/* The traced (t, u, v) points of a branch (malloc'ed), or NULL. */
-static double *branch_points(projcurve_context *ctx, const projcurve_result *r, size_t b,
-                             size_t *n)
-{
-    double probe[3];
-    *n = 0;
-    if (projcurve_result_branch_points(ctx, r, b, 0, probe, n) != PROJCURVE_OK || *n == 0)
-        return NULL;
-    double *tuv = malloc(3 * *n * sizeof *tuv);
-    if (tuv && projcurve_result_branch_points(ctx, r, b, *n, tuv, n) != PROJCURVE_OK) {
-        free(tuv);
-        return NULL;
-    }
-    return tuv;
-}
-
 static void draw_branch(projcurve_context *ctx, view *v, const cli_job *job, const cli_pair *p,
                         size_t b, const char *colour)
 {
@@ -144,7 +115,7 @@ static void draw_branch(projcurve_context *ctx, view *v, const cli_job *job, con
         return;
     }
     size_t n;
-    double *tuv = branch_points(ctx, p->result, b, &n);
+    double *tuv = svg_branch_points(ctx, p->result, b, &n);
     if (tuv == NULL)
         return;
     begin_line(v, colour, 2.4, "");
@@ -164,7 +135,7 @@ static void draw_rays(projcurve_context *ctx, view *v, const cli_job *job, const
     const size_t nb = projcurve_result_branch_count(p->result);
     for (size_t b = 0; b < nb; ++b) {
         size_t n;
-        double *tuv = branch_points(ctx, p->result, b, &n);
+        double *tuv = svg_branch_points(ctx, p->result, b, &n);
         if (tuv == NULL)
             continue;
         const size_t rays = RAYS_PER_PAIR / nb + 1;
@@ -205,89 +176,8 @@ static void draw_scene(projcurve_context *ctx, view *v, const cli_job *job)
     for (size_t i = 0; i < job->n_pairs; ++i) {
         const cli_pair *p = &job->pairs[i];
         for (size_t b = 0; b < projcurve_result_branch_count(p->result); ++b, ++k)
-            draw_branch(ctx, v, job, p, b, palette[k % PALETTE_SIZE]);
+            draw_branch(ctx, v, job, p, b, svg_colour(k));
     }
-}
-
-static void uv_panel(projcurve_context *ctx, FILE *f, const cli_job *job)
-{
-    fprintf(f, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"#f7f7f7\" "
-               "stroke=\"#333333\" stroke-width=\"1\"/>\n",
-            UV_X0, UV_Y0, UV_SIZE, UV_SIZE);
-    for (int i = 1; i < ISO_LINES - 1; ++i) {
-        const double a = UV_SIZE * i / (ISO_LINES - 1);
-        fprintf(f,
-                "<path d=\"M%.1f %.1fV%.1fM%.1f %.1fH%.1f\" stroke=\"#dddddd\" "
-                "stroke-width=\"0.6\" fill=\"none\"/>\n",
-                UV_X0 + a, UV_Y0, UV_Y0 + UV_SIZE, UV_X0, UV_Y0 + a, UV_X0 + UV_SIZE);
-    }
-    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"14\" text-anchor=\"middle\">u</text>\n",
-            UV_X0 + UV_SIZE / 2, UV_Y0 + UV_SIZE + 22);
-    fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"14\">v</text>\n", UV_X0 - 16,
-            UV_Y0 + UV_SIZE / 2);
-    size_t k = 0;
-    for (size_t i = 0; i < job->n_pairs; ++i) {
-        const cli_pair *p = &job->pairs[i];
-        double d[4];
-        if (projcurve_surface_domain(ctx, job->surfaces[p->surface], d) != PROJCURVE_OK)
-            continue;
-        for (size_t b = 0; b < projcurve_result_branch_count(p->result); ++b, ++k) {
-            size_t n;
-            double *tuv = branch_points(ctx, p->result, b, &n);
-            if (tuv == NULL)
-                continue;
-            fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"",
-                    palette[k % PALETTE_SIZE]);
-            for (size_t j = 0; j < n; ++j) {
-                const double x = (tuv[3 * j + 1] - d[0]) / (d[1] - d[0]);
-                const double y = (tuv[3 * j + 2] - d[2]) / (d[3] - d[2]);
-                fprintf(f, "%s%.2f,%.2f", j ? " " : "", UV_X0 + UV_SIZE * x,
-                        UV_Y0 + UV_SIZE * (1.0 - y));
-            }
-            fputs("\"/>\n", f);
-            free(tuv);
-        }
-    }
-}
-
-static void escaped(FILE *f, const char *s)
-{
-    for (; *s; ++s) {
-        switch (*s) {
-        case '<': fputs("&lt;", f); break;
-        case '>': fputs("&gt;", f); break;
-        case '&': fputs("&amp;", f); break;
-        case '"': fputs("&quot;", f); break;
-        default:
-            if ((unsigned char)*s >= 32 && (unsigned char)*s < 127)
-                fputc(*s, f);
-        }
-    }
-}
-
-static void legend(projcurve_context *ctx, FILE *f, const cli_job *job)
-{
-    size_t k = 0;
-    double y = VIEW_Y1 + 24;
-    for (size_t i = 0; i < job->n_pairs && y < SVG_HEIGHT - 8; ++i) {
-        const cli_pair *p = &job->pairs[i];
-        for (size_t b = 0; b < projcurve_result_branch_count(p->result) && y < SVG_HEIGHT - 8;
-             ++b, ++k, y += 16) {
-            projcurve_branch_start s = PROJCURVE_START_CURVE_START;
-            projcurve_branch_end e = PROJCURVE_END_CURVE_END;
-            projcurve_result_branch_info(ctx, p->result, b, NULL, &s, &e, NULL, NULL);
-            fprintf(f,
-                    "<rect x=\"%.1f\" y=\"%.1f\" width=\"18\" height=\"4\" fill=\"%s\"/>"
-                    "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">branch %zu: curve %zu on "
-                    "surface %zu, %s to %s</text>\n",
-                    VIEW_X0, y - 4, palette[k % PALETTE_SIZE], VIEW_X0 + 24, y, k, p->curve,
-                    p->surface, cli_start_name(s), cli_end_name(e));
-        }
-    }
-    if (k == 0)
-        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">no branch: the curve does not "
-                   "project onto the surface</text>\n",
-                VIEW_X0, VIEW_Y1 + 24);
 }
 
 int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title, const char *path)
@@ -304,31 +194,35 @@ int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title,
               .f = f};
     draw_scene(ctx, &v, job); /* measure */
     const double w = v.box[2] - v.box[0], h = v.box[3] - v.box[1];
-    v.scale = (w > 0.0 || h > 0.0) ? fmin((VIEW_X1 - VIEW_X0) / fmax(w, 1e-300),
-                                          (VIEW_Y1 - VIEW_Y0) / fmax(h, 1e-300))
+    v.scale = (w > 0.0 || h > 0.0) ? fmin((SVG_VIEW_X1 - SVG_VIEW_X0) / fmax(w, 1e-300),
+                                          (SVG_VIEW_Y1 - SVG_VIEW_Y0) / fmax(h, 1e-300))
                                    : 1.0;
     if (!isfinite(v.scale))
         v.scale = 1.0;
-    v.ox = (VIEW_X0 + VIEW_X1) / 2 - v.scale * (v.box[0] + v.box[2]) / 2;
-    v.oy = (VIEW_Y0 + VIEW_Y1) / 2 + v.scale * (v.box[1] + v.box[3]) / 2;
+    v.ox = (SVG_VIEW_X0 + SVG_VIEW_X1) / 2 - v.scale * (v.box[0] + v.box[2]) / 2;
+    v.oy = (SVG_VIEW_Y0 + SVG_VIEW_Y1) / 2 + v.scale * (v.box[1] + v.box[3]) / 2;
     if (!isfinite(v.ox) || !isfinite(v.oy))
         v.ox = v.oy = 0.0;
+    svg_panels panels;
+    svg_panels_layout(job, &panels);
+    const double legend_y = fmax(SVG_VIEW_Y1, SVG_PANELS_Y0 + svg_panels_height(&panels)) + 12.0;
+    const double height = legend_y + svg_legend_height(svg_branch_total(job)) + 12.0;
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"%.0f\" "
                "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n<title>",
-            SVG_WIDTH, SVG_HEIGHT, SVG_WIDTH, SVG_HEIGHT);
-    escaped(f, title);
+            SVG_WIDTH, height, SVG_WIDTH, height);
+    svg_escaped(f, title);
     fprintf(f, "</title>\n<rect width=\"100%%\" height=\"100%%\" fill=\"#ffffff\"/>\n"
                "<text x=\"%.1f\" y=\"30\" font-size=\"18\">",
-            VIEW_X0);
-    escaped(f, title);
-    fprintf(f, "</text>\n<text x=\"%.1f\" y=\"%.1f\" font-size=\"13\">parameter domain (u, v)"
-               "</text>\n",
-            UV_X0, UV_Y0 - 12);
+            SVG_VIEW_X0);
+    svg_escaped(f, title);
+    fprintf(f, "</text>\n<text x=\"%.1f\" y=\"%.1f\" font-size=\"13\">3D view (z up): "
+               "surfaces grey, curves black, projection rays dashed</text>\n",
+            SVG_VIEW_X0, SVG_VIEW_Y0 - 16);
     v.emitting = 1;
     draw_scene(ctx, &v, job);
-    uv_panel(ctx, f, job);
-    legend(ctx, f, job);
+    svg_panels_write(ctx, f, job, &panels);
+    svg_legend_write(ctx, f, job, legend_y);
     fputs("</svg>\n", f);
     const int ok = fclose(f) == 0;
     if (!ok)

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "cli.h"
 #include "residual.h"
@@ -23,12 +24,15 @@ int cli_run(projcurve_context *ctx, cli_job *job)
     job->n_pairs = n;
     job->time_ms = 0.0;
     job->failures = 0;
+    job->timeouts = 0;
     size_t k = 0;
     for (size_t c = 0; c < job->n_curves; ++c)
         for (size_t s = 0; s < job->n_surfaces; ++s, ++k) {
             cli_pair *p = &job->pairs[k];
             p->surface = s;
             p->curve = c;
+            if (job->pair_started)
+                job->pair_started(job->pair_user, k, n);
             const double t0 = cli_now_ms();
             p->status = job->orthogonal
                             ? projcurve_project_orthogonal(ctx, job->surfaces[s], job->curves[c],
@@ -38,8 +42,14 @@ int cli_run(projcurve_context *ctx, cli_job *job)
                                                             &p->result);
             job->time_ms += cli_now_ms() - t0;
             if (p->status != PROJCURVE_OK) {
-                fprintf(stderr, "projcurve: curve %zu onto surface %zu: %s: %s\n", c, s,
-                        projcurve_status_string(p->status), projcurve_context_message(ctx));
+                const char *why = projcurve_context_message(ctx);
+                fprintf(stderr, "projcurve: curve %zu onto surface %zu: %s: %s\n",
+                        cli_curve_number(job, c), cli_surface_number(job, s),
+                        projcurve_status_string(p->status), why);
+                /* the library's message is the only place that tells the
+                 * time limit from the work and piece limits */
+                if (p->status == PROJCURVE_ERR_LIMIT_REACHED && strstr(why, "time limit"))
+                    ++job->timeouts;
                 /* A partial result (a size, time or work limit, or a
                  * cancel) is kept and reported. */
                 if (p->status != PROJCURVE_ERR_LIMIT_REACHED &&
@@ -55,7 +65,7 @@ int cli_run(projcurve_context *ctx, cli_job *job)
                         "projcurve: curve %zu onto surface %zu: %zu place(s) where the "
                         "projection could not be followed or verified (branches ending or "
                         "starting 'failed')\n",
-                        c, s, failed);
+                        cli_curve_number(job, c), cli_surface_number(job, s), failed);
             job->failures += failed;
         }
     return 1;
@@ -177,4 +187,31 @@ const char *cli_end_name(projcurve_branch_end e)
     case PROJCURVE_END_CURVE_CROSSING: return "curve_crossing";
     }
     return "unknown";
+}
+
+const char *cli_start_words(projcurve_branch_start s)
+{
+    switch (s) {
+    case PROJCURVE_START_CURVE_START: return "the start of the curve";
+    case PROJCURVE_START_JUMP: return "a jump to another part of the surface";
+    case PROJCURVE_START_BOUNDARY: return "the edge of the surface";
+    case PROJCURVE_START_SILHOUETTE: return "a silhouette";
+    case PROJCURVE_START_CURVE_CROSSING: return "where the curve leaves the surface";
+    case PROJCURVE_START_FAILED: return "a stretch that could not be followed";
+    }
+    return "an unknown place";
+}
+
+const char *cli_end_words(projcurve_branch_end e)
+{
+    switch (e) {
+    case PROJCURVE_END_CURVE_END: return "the end of the curve";
+    case PROJCURVE_END_BOUNDARY: return "the edge of the surface";
+    case PROJCURVE_END_SILHOUETTE: return "a silhouette";
+    case PROJCURVE_END_CURVATURE_CENTRE: return "a centre of curvature";
+    case PROJCURVE_END_LIMIT: return "a limit (time, work or pieces)";
+    case PROJCURVE_END_FAILED: return "a stretch that could not be followed";
+    case PROJCURVE_END_CURVE_CROSSING: return "where the curve meets the surface";
+    }
+    return "an unknown place";
 }

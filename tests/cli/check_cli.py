@@ -3,7 +3,8 @@
 """End-to-end checks of the projcurve command.
 
 usage: check_cli.py PART PROJCURVE TEST_DATA_DIR WORK_DIR
-PART is one of: usage, info, demo, cases, svg. Exit 0 = pass, 1 = fail, 77 = skip.
+PART is one of: usage, info, demo, cases, svg, failures, flags.
+Exit 0 = pass, 1 = fail, 77 = skip.
 """
 import json
 import os
@@ -13,6 +14,7 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
+import check_flags
 import iges_geometry
 import model_summary
 
@@ -20,8 +22,11 @@ failures = []
 
 
 def run(args, expect_code, what):
+    """Runs args; expect_code None accepts any exit code but a crash."""
     proc = subprocess.run(args, capture_output=True, text=True, timeout=240)
-    if proc.returncode != expect_code:
+    if expect_code is None and proc.returncode not in (0, 1, 2, 3):
+        failures.append(f"{what}: exit {proc.returncode}\n  command: {' '.join(args)}")
+    elif expect_code is not None and proc.returncode != expect_code:
         failures.append(f"{what}: exit {proc.returncode}, expected {expect_code}\n"
                         f"  command: {' '.join(args)}\n  stderr: {proc.stderr.strip()}")
     return proc
@@ -36,11 +41,20 @@ SVG = "{http://www.w3.org/2000/svg}"
 ISO_LINES = 9  # per direction and surface (docs/cli.md)
 
 
+LEGEND_MAX = 30  # branches named in the legend (docs/cli.md)
+MAX_PANELS = 12  # surfaces with a parameter panel
+# the library's names for branch ends, which the picture must not show
+INTERNAL_WORDS = re.compile(r"\b(curve_start|curve_end|curve_crossing|curvature_centre|"
+                            r"Dir|SY13)\b|\[SY")
+
+
 def check_svg(path, n_branches, n_surfaces, n_curves, what):
     """Well-formed (Python's XML parser; xmllint in part svg), self-contained
     SVG with the parts docs/cli.md describes: iso-parameter lines, the input
-    curves, dashed rays, a legend line per branch and each branch drawn in
-    its legend colour in both panels."""
+    curves, dashed rays, a legend line per branch (up to LEGEND_MAX, then
+    "and N more"), a parameter panel per surface with numbers on its axes,
+    each branch drawn in its legend colour in the 3D view and its panel,
+    and only the user's words in the text."""
     root = ET.parse(path).getroot()
     geometry = ("points", "d", "x", "y", "width", "height")
     check(not any(k in geometry and ("nan" in v.lower() or "inf" in v.lower())
@@ -51,21 +65,41 @@ def check_svg(path, n_branches, n_surfaces, n_curves, what):
     check(not tags & {"script", "image", "foreignObject", "use"}, f"{what}: SVG uses {tags}")
     check(not any("href" in k or "url(" in v for e in root.iter() for k, v in e.attrib.items()),
           f"{what}: SVG refers to something outside the file")
+    height = float(root.get("height"))
+    check(all(float(e.get("y")) <= height for e in root.iter(SVG + "text")),
+          f"{what}: text below the picture's height {height}")
     lines = list(root.iter(SVG + "polyline"))
     rays = [e for e in lines if e.get("stroke-dasharray")]
     swatches = [r.get("fill") for r in root.iter(SVG + "rect") if r.get("height") == "4"]
-    legend = [t.text for t in root.iter(SVG + "text") if t.text and t.text.startswith("branch ")]
-    check(len(legend) == n_branches and len(swatches) == n_branches,
+    texts = [t.text or "" for t in root.iter(SVG + "text")] + [root.findtext(SVG + "title") or ""]
+    legend = [t for t in texts if t.startswith("branch ")]
+    named = min(n_branches, LEGEND_MAX)
+    check(len(legend) == named and len(swatches) == named,
           f"{what}: {len(legend)} legend lines, {len(swatches)} swatches, {n_branches} branches")
-    check(len(set(swatches)) == min(n_branches, 10), f"{what}: branch colours {swatches}")
+    more = [t for t in texts if t.startswith("and ") and "more branches" in t]
+    if n_branches > LEGEND_MAX:
+        check(len(more) == 1 and more[0].startswith(f"and {n_branches - LEGEND_MAX} more"),
+              f"{what}: {n_branches} branches, the legend says {more}")
+    else:
+        check(not more, f"{what}: 'and more' with {n_branches} branches")
+    check(len(set(swatches)) == min(named, 10), f"{what}: branch colours {swatches}")
     for colour in set(swatches):
         drawn = sum(1 for e in lines if e.get("stroke") == colour)
         check(drawn >= 2, f"{what}: colour {colour} drawn {drawn} times (3D view and (u, v))")
     if n_branches:
         check(len(rays) >= 1, f"{what}: no projection rays drawn")
     others = [e for e in lines if not e.get("stroke-dasharray") and e.get("stroke") not in swatches]
-    check(len(others) >= 2 * ISO_LINES * n_surfaces + n_curves,
+    check(len(others) >= 2 * ISO_LINES * min(n_surfaces, 64) + n_curves,
           f"{what}: {len(others)} iso-parameter lines and curves")
+    panels = [t for t in texts if re.fullmatch(r"surface \d+", t)]
+    check(len(panels) == min(n_surfaces, MAX_PANELS) or
+          (n_surfaces > MAX_PANELS and 0 < len(panels) <= MAX_PANELS),
+          f"{what}: {len(panels)} parameter panels for {n_surfaces} surfaces")
+    numbers = [t for t in texts if re.fullmatch(r"-?[\d.]+(e[+-]?\d+)?", t)]
+    check(len(numbers) >= 6 * len(panels), f"{what}: {len(numbers)} axis numbers for "
+                                           f"{len(panels)} panels")
+    check(not any(INTERNAL_WORDS.search(t) for t in texts),
+          f"{what}: internal names in {[t for t in texts if INTERNAL_WORDS.search(t)]}")
 
 
 def part_usage(exe, shared, work):
@@ -99,8 +133,8 @@ def part_usage(exe, shared, work):
     run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "-1"], 2, "negative timeout")
     run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "soon"], 2,
         "non-numeric timeout")
-    proc = run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "1e-9"], 1,
-               "a 1 ns timeout: the projection is cut")
+    proc = run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "1e-9"], 3,
+               "a 1 ns timeout: the projection is cut (exit 3)")
     check("curve 0 onto surface 0" in proc.stderr and "time limit" in proc.stderr,
           f"timeout hit: no message naming the pair and the limit: {proc.stderr.strip()}")
     run([exe, "project", case, "--dir", "-1,0,0", "--timeout", "1000"], 0, "a generous timeout")
@@ -168,6 +202,11 @@ def part_info(exe, shared, work):
         check(doc.get("faces") == faces and doc.get("face_kinds") == kinds,
               f"info --json {name}: faces {doc.get('faces')}, kinds {doc.get('face_kinds')}; "
               f"expected {faces}, {kinds}")
+    part_info_sizes(exe, shared)
+
+
+def part_info_sizes(exe, shared):
+    check_flags.info_sizes(Tester(exe), shared)
 
 
 def part_demo(exe, shared, work):
@@ -188,6 +227,18 @@ def part_demo(exe, shared, work):
         info = run([exe, "info", os.path.join(work, name + ".igs")], 0, f"info {name}.igs").stdout
         # the input curve and the branch (read back through its 142)
         check("1 surface(s), 2 curve(s)" in info, f"{name}.igs read back:\n{info}")
+    # without -o: build-demo/demo under the current directory (where
+    # ./run-demo.sh writes, run from the source directory), parents created
+    here = os.path.join(work, "cwd")
+    os.makedirs(here, exist_ok=True)
+    proc = subprocess.run([exe, "demo"], cwd=here, capture_output=True, text=True, timeout=240)
+    check(proc.returncode == 0, f"demo without -o: exit {proc.returncode}: {proc.stderr}")
+    written = sorted(os.listdir(os.path.join(here, "build-demo", "demo"))) \
+        if os.path.isdir(os.path.join(here, "build-demo", "demo")) else []
+    check(written == sorted(f"{n}.{e}" for n in ("example1", "freeform")
+                            for e in ("igs", "json", "svg")),
+          f"demo without -o wrote {written} to build-demo/demo")
+    check("wrote build-demo/demo/example1.igs" in proc.stdout, f"demo says where:\n{proc.stdout}")
 
 
 def manifest(shared):
@@ -514,6 +565,8 @@ def part_svg(exe, shared, work):
             args += ["--dir", f"{case['dir_x']},{case['dir_y']},{case['dir_z']}"]
         if run(args, 0, case["name"]).returncode == 0:
             svgs.append(out_svg)
+    many_branches_svg(exe, shared, work)
+    svgs += [os.path.join(work, n) for n in ("zigzag.svg", "two.svg")]
     for path in svgs:
         lint = subprocess.run(["xmllint", "--noout", path], capture_output=True, text=True)
         check(lint.returncode == 0, f"{path} fails xmllint: {lint.stderr.strip()[:300]}")
@@ -547,17 +600,70 @@ def part_failures(exe, shared, work):
     return None
 
 
+class Tester:
+    """What check_flags needs of this module."""
+    def __init__(self, exe):
+        self.exe = exe
+        self.run = run
+        self.check = check
+        self.check_branch_geometry = check_branch_geometry
+
+
+def part_flags(exe, shared, work):
+    """The flags that pick pairs, give curves, and set what is printed
+    (check_flags.py)."""
+    os.makedirs(work, exist_ok=True)
+    t = Tester(exe)
+    check_flags.pick_pairs(t, shared, work)
+    check_flags.given_curves(t, shared, work)
+    check_flags.printing(t, shared, work)
+    many_branches_svg(exe, shared, work)
+    return None
+
+
+def zigzag(work):
+    """A polyline zigzagging across the edge x = 100 of the bumpy case's
+    square, 20 above it: each of its ZIGZAG segments has one branch, the
+    part over the square."""
+    path = os.path.join(work, "zigzag.txt")
+    with open(path, "w") as f:
+        for i in range(ZIGZAG + 1):
+            f.write(f"{95 if i % 2 == 0 else 105} {5 + 2 * i} 20\n")
+    return path
+
+
+ZIGZAG = 40
+
+
+def many_branches_svg(exe, shared, work):
+    """More branches than the legend names, and two surfaces' panels."""
+    case = os.path.join(shared, "cases", "bumpy_bicubic_8x8_down.igs")
+    out_svg, out_json = os.path.join(work, "zigzag.svg"), os.path.join(work, "zigzag.json")
+    if run([exe, "project", case, "--dir", "0,0,-1", "--points", zigzag(work), "--svg", out_svg,
+            "--json", out_json], 0, "zigzag").returncode == 0:
+        with open(out_json) as f:
+            n = len(json.load(f)["branches"])
+        check(n == ZIGZAG, f"zigzag: {n} branches, expected {ZIGZAG}")
+        check_svg(out_svg, n, 1, ZIGZAG, "zigzag")
+    two = [os.path.join(shared, "cases", n + ".igs")
+           for n in ("bumpy_bicubic_8x8_down", "deg5_quintic_9x8_down")]
+    out_svg = os.path.join(work, "two.svg")
+    if run([exe, "project"] + two + ["--dir", "0,0,-1", "--svg", out_svg], 0,
+           "two files").returncode == 0:
+        check_svg(out_svg, 4, 2, 2, "two files")
+
+
 def main():
     if len(sys.argv) != 5:
         print(__doc__)
         return 2
     part, exe, shared, work = sys.argv[1:]
     # shared: the test data, tests/data (its absence is a failure)
-    if part in ("info", "cases", "usage", "svg") and not os.path.isdir(os.path.join(shared, "cases")):
+    if part in ("info", "cases", "usage", "svg", "flags") and not os.path.isdir(os.path.join(shared, "cases")):
         print(f"FAIL: test data {shared}/cases not found")
         return 1
     parts = {"usage": part_usage, "info": part_info, "demo": part_demo, "cases": part_cases,
-             "svg": part_svg, "failures": part_failures}
+             "svg": part_svg, "failures": part_failures, "flags": part_flags}
     if parts[part](exe, shared, work) == 77:
         return 77
     for f in failures:

@@ -11,6 +11,10 @@
  *     residual of 0, so the summary said "max residual 0, max deviation 0"
  *     and the command exited 0; now it is NaN, counted as not measured,
  *     and the summary says so (the caller exits 1 on it).
+ *   - The numbers a job reports are the user's (--surface 7 reports
+ *     "surface": 7, not 0), pair_started sees every call in order, and the
+ *     summary can be counted without being printed (--quiet).
+ *   - The argument parsers refuse what is not exactly the numbers asked for.
  */
 #include <math.h>
 #include <stdint.h>
@@ -133,6 +137,60 @@ static void test_measure(const projcurve_surface **s, const projcurve_curve **c)
     CHECK(job.pairs == NULL && job.n_pairs == 0);
 }
 
+static int calls_seen[4];
+static size_t calls_n;
+
+static void count_pair(void *user, size_t k, size_t n)
+{
+    (void)user;
+    if (k < 4)
+        ++calls_seen[k];
+    calls_n = n;
+}
+
+static void test_numbers(const projcurve_surface **s, const projcurve_curve **c)
+{
+    cli_job job;
+    make_job(&job, s, c);
+    const size_t surface_number = 7, curve_number = 3;
+    job.surface_numbers = &surface_number;
+    job.curve_numbers = &curve_number;
+    job.pair_started = count_pair;
+    CHECK(cli_run(ctx, &job) == 1);
+    CHECK(calls_seen[0] == 1 && calls_seen[1] == 0 && calls_n == 1);
+    CHECK(job.timeouts == 0);
+    CHECK(cli_print_summary(ctx, &job, NULL) == 0);
+    /* cli_write_json takes a path: a file beside the test, removed after */
+    const char *path = "test_cli_run_numbers.json";
+    char text[4096];
+    CHECK(cli_write_json(ctx, &job, path) == 1);
+    FILE *in = fopen(path, "r");
+    const size_t got = in ? fread(text, 1, sizeof text - 1, in) : 0;
+    text[got] = '\0';
+    if (in)
+        fclose(in);
+    remove(path);
+    if (strstr(text, "\"surface\": 7, \"curve\": 3") == NULL ||
+        strstr(text, "\"timeouts\": 0") == NULL)
+        pc_test_fail_at(__FILE__, __LINE__, "JSON without the user's numbers: %s", text);
+    cli_job_free(&job);
+}
+
+static void test_parsers(void)
+{
+    size_t i = 99;
+    double v[6];
+    CHECK(cli_parse_index("0", &i) && i == 0);
+    CHECK(cli_parse_index("12", &i) && i == 12);
+    CHECK(!cli_parse_index("", &i) && !cli_parse_index("-1", &i) && !cli_parse_index("1.5", &i));
+    CHECK(!cli_parse_index("+3", &i) && !cli_parse_index("3 ", &i));
+    CHECK(!cli_parse_index("99999999999999999999999", &i)); /* no wrap-around */
+    CHECK(cli_parse_reals("1,2,3,4,5,6", 6, v) && v[0] == 1 && v[5] == 6);
+    CHECK(!cli_parse_reals("1,2,3,4,5", 6, v) && !cli_parse_reals("1,2,3,4,5,6,7", 6, v));
+    CHECK(!cli_parse_reals("1,2,3,4,5,nan", 6, v) && !cli_parse_reals("1,2,3,4,5,1e999", 6, v));
+    CHECK(!cli_parse_reals("1,,3", 3, v) && !cli_parse_reals("", 0, v));
+}
+
 int main(void)
 {
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
@@ -146,7 +204,9 @@ int main(void)
     if (plane != NULL && line != NULL) {
         test_run_without_memory(s, c);
         test_measure(s, c);
+        test_numbers(s, c);
     }
+    test_parsers();
     projcurve_curve_destroy(line);
     projcurve_surface_destroy(plane);
     projcurve_context_destroy(ctx);
