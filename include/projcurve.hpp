@@ -385,6 +385,14 @@ T *index_checked(T *handle, const char *what, std::size_t index, std::size_t cou
     return handle;
 }
 
+/* The C user pointer of a callable (const or not; its trampoline casts it
+ * back to the same F). */
+template <class F>
+void *user_pointer(F &callable) noexcept
+{
+    return const_cast<void *>(static_cast<const void *>(&callable));
+}
+
 /* Runs a throwing call and returns its expected. */
 template <class F>
 auto attempt(F &&f) -> expected<decltype(f())>
@@ -508,7 +516,7 @@ public:
         static_assert(std::is_same_v<std::invoke_result_t<F &, double>, bool>,
                       "a progress callable returns bool: true to go on, false to stop");
         ctx.check(projcurve_options_set_progress(ctx.get(), handle_, &progress_trampoline<F>,
-                                                 static_cast<void *>(&progress)));
+                                                 detail::user_pointer(progress)));
         return *this;
     }
     /** \brief Sets a C progress callback (fn NULL: none). */
@@ -718,7 +726,7 @@ public:
                       "a curve callable is bool(double t, double out[9])");
         projcurve_curve *raw = nullptr;
         ctx.check(projcurve_curve_create_callback(ctx.get(), &curve_trampoline<F>,
-                                                  static_cast<void *>(&fn), t0, t1, &raw));
+                                                  detail::user_pointer(fn), t0, t1, &raw));
         return curve(raw);
     }
 
@@ -1269,7 +1277,7 @@ result project_orthogonal_implicit(context &ctx, F &f, double model_size, curve_
                   "bool(const double x[3], double &value, double grad[3], double hess[9])");
     projcurve_result *raw = nullptr;
     const status st = projcurve_project_orthogonal_implicit(
-        ctx.get(), &detail::implicit_trampoline<F>, static_cast<void *>(&f), model_size, c.get(),
+        ctx.get(), &detail::implicit_trampoline<F>, detail::user_pointer(f), model_size, c.get(),
         opts ? opts->get() : nullptr, &raw);
     return detail::projection(ctx, st, raw);
 }

@@ -176,10 +176,10 @@ void test_options(pc::context &ctx)
                  PROJCURVE_ERR_UNKNOWN_OPTION, nullptr);
 
     CHECK(opts.progress(ctx).first == nullptr);
-    auto go_on = [](double) { return true; };
+    const auto go_on = [](double) { return true; };
     opts.set_progress(ctx, go_on);
     CHECK(opts.progress(ctx).first != nullptr &&
-          opts.progress(ctx).second == static_cast<void *>(&go_on));
+          opts.progress(ctx).second == static_cast<const void *>(&go_on));
     opts.clear_progress(ctx);
     CHECK(opts.progress(ctx).first == nullptr && opts.progress(ctx).second == nullptr);
 
@@ -236,7 +236,7 @@ void test_curve(pc::context &ctx)
     CHECK(taken && taken.nurbs_info(ctx).n_ctrl == 2);
 
     // A circle of radius 2 as a callback curve.
-    auto circle = [](double t, double *o) {
+    const auto circle = [](double t, double *o) {
         const double c = std::cos(t), s = std::sin(t);
         const double p[9] = {2 * c, 2 * s, 0, -2 * s, 2 * c, 0, -2 * c, -2 * s, 0};
         std::copy(p, p + 9, o);
@@ -579,7 +579,7 @@ void test_iges_round_trip(pc::context &ctx, const std::string &dir)
     pc::iges_writer w(ctx);
     w.add_surface(ctx, s).add_curve(ctx, line).add_result(ctx, s, r).set_length_unit(ctx, 0.0254);
     CHECK_THROWS(w.set_length_unit(ctx, 0.5), PROJCURVE_ERR_OUT_OF_RANGE, nullptr);
-    auto circle = [](double t, double *o) {
+    const auto circle = [](double t, double *o) {
         std::fill(o, o + 9, 0.0);
         o[0] = std::cos(t);
         o[1] = std::sin(t);
