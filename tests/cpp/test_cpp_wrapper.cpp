@@ -678,6 +678,56 @@ void test_model_shapes(pc::context &ctx)
     CHECK_THROWS(sh.edge(ctx, sh.edge_count()), PROJCURVE_ERR_INDEX, nullptr);
 }
 
+// Owners adopt handles made by the C calls and release them (LeakSanitizer
+// and valgrind see any that is not).
+void test_adopt(pc::context &ctx)
+{
+    projcurve_options *raw_opts = nullptr;
+    CHECK(projcurve_options_create(ctx.get(), &raw_opts) == PROJCURVE_OK);
+    pc::options opts(raw_opts);
+    CHECK(opts.get() == raw_opts && opts.get_int(ctx, PROJCURVE_OPT_NEWTON_MAX_ITER) == 20);
+
+    projcurve_iges_writer *raw_writer = nullptr;
+    CHECK(projcurve_iges_writer_create(ctx.get(), &raw_writer) == PROJCURVE_OK);
+    pc::iges_writer w(raw_writer);
+    CHECK(w.get() == raw_writer);
+    w.reset();
+    CHECK(!w);
+
+    const char empty_iges_like[] = "not a model";
+    projcurve_model *raw_model = nullptr;
+    CHECK(projcurve_model_read_memory(ctx.get(), empty_iges_like, sizeof empty_iges_like - 1,
+                                      &raw_model) != PROJCURVE_OK &&
+          raw_model == nullptr);
+    pc::model m(raw_model);
+    CHECK(!m && m.surface_count() == 0 && !m.length_unit());
+
+    const pc::surface s = pc::surface::nurbs(ctx, 1, 1, 2, 2, saddle_net, {}, unit_knots, unit_knots);
+    const pc::curve line = pc::curve::nurbs(ctx, 1, line_ctrl, {}, unit_knots);
+    const double down[3] = {0, 0, -1};
+    projcurve_result *raw_result = nullptr;
+    CHECK(projcurve_project_directional(ctx.get(), s.get(), line.get(), down, nullptr,
+                                        &raw_result) == PROJCURVE_OK);
+    pc::result r(raw_result);
+    CHECK(r.complete() && r.branch_count() == 1);
+    projcurve_result *given_back = r.release();
+    CHECK(!r && given_back == raw_result && r.branch_count() == 0);
+    r.reset(given_back);
+    CHECK(r.branch_count() == 1);
+
+    projcurve_face *raw_face = nullptr;
+    CHECK(projcurve_face_create(ctx.get(), s.get(), 0, nullptr, nullptr, nullptr, nullptr, nullptr,
+                                nullptr, 0, &raw_face) == PROJCURVE_OK);
+    pc::face f(raw_face);
+    CHECK(f.get() == raw_face && f.loop_count() == 1);
+
+    const pc::expected<void> ok;
+    CHECK(ok.has_value() && ok.code() == PROJCURVE_OK);
+    ok.value();
+    pc::expected<pc::curve> made = pc::curve::try_nurbs(ctx, 1, line_ctrl, {}, unit_knots);
+    CHECK(made.has_value() && (*made).nurbs_info(ctx).n_ctrl == 2);
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -694,6 +744,7 @@ int main(int argc, char **argv)
         test_face(ctx);
         test_iges_round_trip(ctx, dir);
         test_model_shapes(ctx);
+        test_adopt(ctx);
     } catch (const pc::error &e) {
         std::fprintf(stderr, "FAIL: unexpected projcurve::error %s: %s\n", e.status_name(), e.what());
         return 1;
