@@ -11,7 +11,9 @@ include(CMakePackageConfigHelpers)
 
 set(PROJCURVE_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/projcurve)
 
+# projcurve.hpp: the header-only C++17 wrappers, beside the C header.
 install(FILES ${PROJECT_SOURCE_DIR}/include/projcurve.h
+              ${PROJECT_SOURCE_DIR}/include/projcurve.hpp
               ${PROJECT_BINARY_DIR}/include/projcurve_version.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 

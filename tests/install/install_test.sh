@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Installs the build tree into a temporary prefix, then builds and runs the
 # consumers in this directory against the installed files only:
-#   1. through pkg-config (C and C++, shared library, strict warnings),
+#   1. through pkg-config (C, and C++17 with the wrappers of projcurve.hpp;
+#      shared library, strict warnings),
 #   2. through find_package(projcurve CONFIG) (C and C++ shared, C static).
 # Usage: install_test.sh CMAKE BUILD_DIR C_COMPILER CXX_COMPILER [EXTRA_FLAGS [CLI_NAME]]
 # EXTRA_FLAGS (e.g. the sanitizer flags) are used to compile and link the
@@ -22,7 +23,8 @@ pc_file=$(find "$prefix" -name projcurve.pc -print -quit)
 config_file=$(find "$prefix" -name projcurveConfig.cmake -print -quit)
 [[ -n $pc_file ]] || { echo "FAIL: projcurve.pc not installed"; exit 1; }
 [[ -n $config_file ]] || { echo "FAIL: projcurveConfig.cmake not installed"; exit 1; }
-[[ -f $prefix/include/projcurve.h && -f $prefix/include/projcurve_version.h ]] ||
+[[ -f $prefix/include/projcurve.h && -f $prefix/include/projcurve_version.h &&
+   -f $prefix/include/projcurve.hpp ]] ||
     { echo "FAIL: headers not installed"; exit 1; }
 libdir=$(dirname "$(dirname "$pc_file")")
 for lib in libprojcurve.so libprojcurve.so.1 libprojcurve.a; do
@@ -43,7 +45,7 @@ if command -v pkg-config >/dev/null; then
     "$cc" -std=c11 $strict $extra_flags $cflags "$here/consumer.c" -o "$work/pc_c" \
         $libs "-Wl,-rpath,$pc_libdir"
     # shellcheck disable=SC2086
-    "$cxx" -std=c++11 $strict $extra_flags $cflags "$here/consumer.cpp" -o "$work/pc_cpp" \
+    "$cxx" -std=c++17 $strict $extra_flags $cflags "$here/consumer.cpp" -o "$work/pc_cpp" \
         $libs "-Wl,-rpath,$pc_libdir"
     "$work/pc_c"
     "$work/pc_cpp"
