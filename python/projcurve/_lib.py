@@ -18,11 +18,6 @@ elif sys.platform == "win32":
 else:
     SONAME = "libprojcurve.so.%d" % MAJOR
 
-# How many directories above the package an installed prefix may be:
-# <prefix>/lib/python3.X/site-packages/projcurve is 4 levels down.
-_PREFIX_DEPTH = 6
-
-
 def _candidates():
     """Paths to try, in order; PROJCURVE_LIBRARY, when set, is the only one."""
     env = os.environ.get("PROJCURVE_LIBRARY")
@@ -30,16 +25,17 @@ def _candidates():
         return [env]
     here = os.path.dirname(os.path.abspath(__file__))
     found = [os.path.join(here, SONAME)]  # bundled next to the package
+    try:  # installed by cmake --install: the library of the same prefix
+        from ._install_location import LIBDIR
+        found.append(os.path.normpath(os.path.join(here, LIBDIR, SONAME)))
+    except ImportError:
+        pass
+    # the prefix of the running python (a venv, /usr/local ...)
     libdirs = ["lib", "lib64"]
     multiarch = sysconfig.get_config_var("MULTIARCH")
     if multiarch:
         libdirs.append(os.path.join("lib", multiarch))
-    prefixes, d = [], here
-    for _ in range(_PREFIX_DEPTH):
-        d = os.path.dirname(d)
-        prefixes.append(d)
-    prefixes.append(sys.prefix)
-    for prefix in prefixes:
+    for prefix in dict.fromkeys((sys.prefix, sys.base_prefix)):
         found += [os.path.join(prefix, sub, SONAME) for sub in libdirs]
     found.append(SONAME)  # the dynamic loader's own search (LD_LIBRARY_PATH, ld.so.cache)
     return found
