@@ -134,7 +134,8 @@ class Options(Handle):
 
     def _set_progress(self, function):
         if function is None:
-            call("projcurve_options_set_progress", self._ptr, None, None)
+            null = CALLBACK_TYPES["projcurve_progress_fn"]()  # a NULL function pointer
+            call("projcurve_options_set_progress", self._ptr, null, None)
             object.__setattr__(self, "_progress", None)
             object.__setattr__(self, "_progress_cb", None)
             return
