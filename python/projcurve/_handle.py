@@ -16,16 +16,31 @@ from ._errors import fail
 
 
 class _Resource:
-    __slots__ = ("ptr", "destroy", "parents", "__weakref__")
+    __slots__ = ("ptr", "destroy", "parents", "dependents", "__weakref__")
 
     def __init__(self, ptr, destroy, parents):
         self.ptr, self.destroy, self.parents = ptr, destroy, parents
+        # weak: what depends on this one, closed first by close(); held on
+        # the resources (not the wrappers), so that a dependent is reached
+        # through a parent whose wrapper is gone (a model's shape's faces)
+        self.dependents = weakref.WeakSet()
+        for p in parents:
+            p.dependents.add(self)
 
     def release(self):
         ptr, destroy = self.ptr, self.destroy
         self.ptr, self.destroy, self.parents = None, None, ()
         if ptr is not None and destroy is not None:
             destroy(ptr)
+
+    def close(self):
+        """Releases the dependents, then this. The depth is that of the
+        ownership chains (model, shape, face, surface: at most four)."""
+        if self.ptr is None:
+            return
+        for d in list(self.dependents):
+            d.close()
+        self.release()
 
     def __del__(self):
         try:
@@ -42,9 +57,6 @@ class Handle:
         """ptr: the C pointer (int); destroy: the C function that releases
         it, None when borrowed; parents: Handles that must outlive it."""
         self._res = _Resource(ptr, destroy, tuple(p._res for p in parents))
-        self._dependents = weakref.WeakSet()
-        for p in parents:
-            p._dependents.add(self)
 
     @property
     def _ptr(self):
@@ -60,11 +72,7 @@ class Handle:
     def close(self):
         """Releases the C handle now (and every handle that depends on it).
         Closing twice does nothing."""
-        if self._res.ptr is None:
-            return
-        for d in list(self._dependents):
-            d.close()
-        self._res.release()
+        self._res.close()
 
     def __enter__(self):
         return self
