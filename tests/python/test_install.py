@@ -1,0 +1,96 @@
+# SPDX-License-Identifier: BSD-3-Clause
+"""The package as users install it: `cmake --install --component python`
+into a prefix (the package then loads that prefix's library, without
+PROJCURVE_LIBRARY), and `pip install --no-build-isolation` offline (with the
+library given by PROJCURVE_LIBRARY, or copied next to the package before
+building so that it is installed with it)."""
+import glob
+import os
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+SOURCE = os.environ.get("PROJCURVE_SOURCE_DIR")
+BUILD = os.environ.get("PROJCURVE_BUILD_DIR")
+CMAKE = os.environ.get("PROJCURVE_CMAKE")
+PYDIR = os.environ.get("PROJCURVE_PYTHON_INSTALL_DIR")
+
+PROBE = ("import projcurve as pc, sys; "
+         "s = pc.Surface.from_nurbs((1, 1), (2, 2), [[0,0,0],[1,0,0],[0,1,0],[1,1,1]], "
+         "([0,0,1,1],[0,0,1,1])); "
+         "c = pc.Curve.from_nurbs(1, [[0.1,0.2,2],[0.9,0.7,2]], [0,0,1,1]); "
+         "assert len(pc.project_directional(s, c, (0,0,-1)).branches) == 1; "
+         "print(pc.library_path()); print(pc.__file__)")
+
+
+def clean_env(**extra):
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("PROJCURVE_LIBRARY", "PYTHONPATH", "LD_LIBRARY_PATH")}
+    env.update(extra)
+    return env
+
+
+def run_probe(cwd, **env):
+    out = subprocess.run([sys.executable, "-c", PROBE], cwd=cwd, env=clean_env(**env),
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    return out.stdout.split()
+
+
+@pytest.fixture
+def need_build():
+    if not (SOURCE and BUILD and CMAKE and PYDIR):
+        pytest.skip("run through CTest (python_package) for the build and install paths")
+
+
+def test_cmake_install_component(need_build, tmp_path):
+    prefix = tmp_path / "prefix"
+    for component in ([], ["--component", "python"]):
+        subprocess.run([CMAKE, "--install", BUILD, "--prefix", str(prefix)] + component,
+                       check=True, capture_output=True, timeout=300)
+    site = prefix / PYDIR
+    assert (site / "projcurve" / "__init__.py").exists()
+    assert (site / "projcurve" / "_install_location.py").exists()
+    lib_path, module = run_probe(tmp_path, PYTHONPATH=str(site))
+    assert os.path.realpath(lib_path).startswith(os.path.realpath(prefix))
+    assert module.startswith(str(site))
+
+
+def copy_sources(tmp_path):
+    src = tmp_path / "src"
+    shutil.copytree(os.path.join(SOURCE, "python"), src,
+                    ignore=shutil.ignore_patterns("__pycache__", "build", "*.egg-info"))
+    return src
+
+
+def pip_install(src, target):
+    pip = subprocess.run([sys.executable, "-m", "pip", "--version"], capture_output=True)
+    if pip.returncode != 0:
+        pytest.skip("pip not installed for %s" % sys.executable)
+    out = subprocess.run([sys.executable, "-m", "pip", "install", "--no-build-isolation",
+                          "--no-deps", "--no-index", "--disable-pip-version-check",
+                          "--target", str(target), str(src)],
+                         capture_output=True, text=True, timeout=300, env=clean_env())
+    if out.returncode != 0 and "setuptools" in out.stderr and "No module" in out.stderr:
+        pytest.skip("setuptools not installed for %s" % sys.executable)
+    assert out.returncode == 0, out.stdout + out.stderr
+
+
+def test_pip_install(need_build, pc, tmp_path):
+    target = tmp_path / "site"
+    pip_install(copy_sources(tmp_path), target)
+    assert glob.glob(str(target / ("projcurve-%s.dist-info" % pc.__version__)))
+    lib_path, module = run_probe(tmp_path, PYTHONPATH=str(target),
+                                 PROJCURVE_LIBRARY=pc.library_path())
+    assert lib_path == pc.library_path() and module.startswith(str(target))
+
+
+def test_pip_install_bundled_library(need_build, pc, tmp_path):
+    src = copy_sources(tmp_path)
+    shutil.copy(pc.library_path(), src / "projcurve" / pc._lib.SONAME)
+    target = tmp_path / "site"
+    pip_install(src, target)
+    lib_path, _ = run_probe(tmp_path, PYTHONPATH=str(target))
+    assert lib_path == str(target / "projcurve" / pc._lib.SONAME)
