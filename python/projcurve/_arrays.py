@@ -2,7 +2,6 @@
 """Arrays in and out: nested sequences or numpy arrays to C doubles, and C
 doubles back to tuples or (when asked) numpy arrays. numpy is optional."""
 import ctypes
-import math
 import numbers
 
 from ._errors import fail
@@ -100,6 +99,3 @@ def values(buf, n, numpy=False):
         return _np.ctypeslib.as_array(buf)[:n].copy()
     return list(buf[:n])
 
-
-def finite(x):
-    return math.isfinite(x)

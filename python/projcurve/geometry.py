@@ -6,7 +6,7 @@ import ctypes
 from . import _arrays
 from ._errors import fail
 from ._handle import Handle
-from ._lib import CALLBACK_TYPES, Context, call, call_fast, fn
+from ._lib import CALLBACK_TYPES, call, call_fast, fn
 
 SurfaceInfo = collections.namedtuple("SurfaceInfo", "degree shape spans rational")
 CurveInfo = collections.namedtuple("CurveInfo", "degree n_control_points n_knots rational")
@@ -291,4 +291,4 @@ class Surface(Handle):
                 for k in range(min(n, count.value))]
 
 
-__all__ = ["Curve", "Surface", "SurfaceInfo", "CurveInfo", "ClosestPoint", "Hit", "Context"]
+__all__ = ["Curve", "Surface", "SurfaceInfo", "CurveInfo", "ClosestPoint", "Hit"]

@@ -7,9 +7,9 @@ import ctypes
 import enum
 
 from . import _generated as gen
-from ._errors import Error, fail
+from ._errors import fail
 from ._handle import Handle
-from ._lib import CALLBACK_TYPES, Context, call, fn
+from ._lib import CALLBACK_TYPES, call, fn
 
 Option = enum.IntEnum("Option", {k[len("PROJCURVE_OPT_"):]: v
                                  for k, v in gen.ENUMS["projcurve_option"].items()})
@@ -86,12 +86,13 @@ class Options(Handle):
         else:
             if isinstance(value, float) and value.is_integer():
                 value = int(value)
-            if isinstance(value, bool) or not isinstance(value, int):
-                if not isinstance(value, bool):
-                    raise fail("INVALID_ARGUMENT", "option %s takes an integer, not %r"
-                               % (name, value), "projcurve")
-                value = int(value)
-            call("projcurve_options_set_int", self._ptr, info.key.value, value)
+            if not isinstance(value, int):  # bool is an int: True is 1
+                raise fail("INVALID_ARGUMENT", "option %s takes an integer, not %r"
+                           % (name, value), "projcurve")
+            if not -2 ** 63 <= value < 2 ** 63:  # a C long long
+                raise fail("OUT_OF_RANGE", "option %s: %d is outside [%d, %d]"
+                           % (name, value, info.min, info.max), "projcurve")
+            call("projcurve_options_set_int", self._ptr, info.key.value, int(value))
 
     def get(self, name):
         info = self.info(name)
@@ -152,4 +153,4 @@ class Options(Handle):
         object.__setattr__(self, "_progress_cb", cb)  # alive as long as the options
 
 
-__all__ = ["Options", "Option", "OptionType", "OptionInfo", "option_table", "Error", "Context"]
+__all__ = ["Options", "Option", "OptionType", "OptionInfo", "option_table"]

@@ -9,8 +9,8 @@ from . import _arrays
 from . import _generated as gen
 from ._errors import Status, error_for, fail
 from ._handle import Handle
-from ._lib import CALLBACK_TYPES, Context, call, call_fast, fn
-from .geometry import Curve, Surface
+from ._lib import CALLBACK_TYPES, Context, call, fn
+from .geometry import Curve
 from .options import Options
 
 
@@ -191,15 +191,15 @@ _PARTIAL = (Status.ERR_LIMIT_REACHED, Status.ERR_CANCELLED)
 def _project(name, surface, curve, options, allow_partial, option_values, *args):
     if options is None or option_values:
         opts = Options(**option_values)
-        if options is not None:
+        if options is not None:  # the caller's options, with the keywords' over them
             for k, v in options.items():
-                if k not in option_values:
+                if k not in option_values and v != Options.info(k).default:
                     opts.set(k, v)
             if options.progress is not None:
                 opts.progress = options.progress
     else:
         opts = options
-    object.__setattr__(opts, "progress_error", None)
+    opts.progress_error = None
     out = ctypes.c_void_p()
     with Context() as ctx:
         status = fn[name](ctx.ptr, *args, opts._ptr, ctypes.byref(out))
@@ -264,5 +264,4 @@ def project_orthogonal_implicit(function, model_size, curve, options=None, *,
 
 
 __all__ = ["Branch", "Result", "Piece", "CompactInfo", "BranchStart", "BranchEnd", "Stat",
-           "project_directional", "project_orthogonal", "project_orthogonal_implicit",
-           "Surface", "call_fast"]
+           "project_directional", "project_orthogonal", "project_orthogonal_implicit"]

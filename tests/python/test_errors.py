@@ -7,8 +7,6 @@ import math
 
 import pytest
 
-from conftest import data
-
 KNOTS = ([0, 0, 1, 1], [0, 0, 1, 1])
 NET = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 1]]
 

@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
-"""examples/project.py runs and says what it projected."""
+"""examples/project.py runs and says what it projected; the Python block
+of README.md runs as written."""
 import os
+import re
 import subprocess
 import sys
 
@@ -27,3 +29,11 @@ def test_model_and_output(pc, tmp_path):
     assert "2 branch(es)" in out and "wrote" in out
     back = pc.Model.read(path)
     assert len(back.surfaces) == 1 and len(back.curves) >= 2
+
+
+def test_readme_python_block(capsys):
+    with open(os.path.join(SOURCE_DIR, "README.md"), encoding="utf-8") as f:
+        blocks = re.findall(r"```python\n(.*?)```", f.read(), flags=re.S)
+    assert blocks, "README.md has no python block"
+    exec(compile(blocks[0], "README.md", "exec"), {})
+    assert "CURVE_START CURVE_END" in capsys.readouterr().out
