@@ -115,8 +115,12 @@ OK = gen.ENUMS["projcurve_status"]["PROJCURVE_OK"]
 
 class Context:
     """One projcurve_context for the length of a call (contexts are not
-    shared between threads; one per call needs no lock)."""
-    __slots__ = ("ptr",)
+    shared between threads; one per call needs no lock). limits: {limit
+    enum value: value} set on it first (projcurve_context_set_limit)."""
+    __slots__ = ("ptr", "limits")
+
+    def __init__(self, limits=None):
+        self.limits = limits or {}
 
     def __enter__(self):
         ptr = ctypes.c_void_p()
@@ -125,6 +129,13 @@ class Context:
             raise error_for(status, fn["projcurve_status_string"](status).decode(),
                             "projcurve_context_create")
         self.ptr = ptr
+        try:
+            for limit, value in self.limits.items():
+                self.check(fn["projcurve_context_set_limit"](ptr, limit, value),
+                           "projcurve_context_set_limit")
+        except BaseException:
+            fn["projcurve_context_destroy"](ptr)
+            raise
         return self
 
     def __exit__(self, *exc):
@@ -139,10 +150,24 @@ class Context:
             raise error_for(status, self.message(), name)
 
 
-def call(name, *args):
+def call(name, *args, limits=None):
     """Calls a function that takes a context first; raises on failure."""
-    with Context() as ctx:
+    with Context(limits) as ctx:
         ctx.check(fn[name](ctx.ptr, *args), name)
+
+
+LIMIT_CONTROL_POINTS = gen.ENUMS["projcurve_limit"]["PROJCURVE_LIMIT_CONTROL_POINTS"]
+
+
+def limits(max_control_points):
+    """The context limits of a creation call (None: the library's default)."""
+    if max_control_points is None:
+        return None
+    if not isinstance(max_control_points, int) or not 0 <= max_control_points < 2 ** 64:
+        raise error_for(gen.ENUMS["projcurve_status"]["PROJCURVE_ERR_OUT_OF_RANGE"],
+                        "max_control_points: %r is not a size" % (max_control_points,),
+                        "projcurve")
+    return {LIMIT_CONTROL_POINTS: max_control_points}
 
 
 def call_fast(name, *args):

@@ -6,7 +6,7 @@ import ctypes
 from . import _arrays
 from ._errors import fail
 from ._handle import Handle
-from ._lib import CALLBACK_TYPES, call, call_fast, fn
+from ._lib import CALLBACK_TYPES, call, call_fast, fn, limits
 
 SurfaceInfo = collections.namedtuple("SurfaceInfo", "degree shape spans rational")
 CurveInfo = collections.namedtuple("CurveInfo", "degree n_control_points n_knots rational")
@@ -18,9 +18,9 @@ _int = ctypes.c_int
 _dbl = ctypes.c_double
 
 
-def _new_handle(name, *args):
+def _new_handle(name, *args, max_control_points=None):
     out = ctypes.c_void_p()
-    call(name, *args, ctypes.byref(out))
+    call(name, *args, ctypes.byref(out), limits=limits(max_control_points))
     return out.value
 
 
@@ -44,9 +44,11 @@ class Curve(Handle):
         self._keep = keep
 
     @classmethod
-    def from_nurbs(cls, degree, control_points, knots, weights=None):
+    def from_nurbs(cls, degree, control_points, knots, weights=None, max_control_points=None):
         """A B-spline (weights None) or NURBS curve: control_points is n
-        points of 3 coordinates, knots n + degree + 1 values."""
+        points of 3 coordinates, knots n + degree + 1 values.
+        max_control_points: the size limit of the call (None: the default,
+        DEFAULT_MAX_CONTROL_POINTS; see PROJCURVE_LIMIT_CONTROL_POINTS)."""
         ctrl = _arrays.doubles(control_points, "control_points", dim=3)
         n = ctrl.n // 3
         k = _arrays.doubles(knots, "knots")
@@ -56,7 +58,8 @@ class Curve(Handle):
             w = _arrays.doubles(weights, "weights")
             _check_count("weights", w.n, n)
         return cls(_new_handle("projcurve_curve_create_nurbs", int(degree), n, ctrl.ptr,
-                               w.ptr if w else None, k.ptr))
+                               w.ptr if w else None, k.ptr,
+                               max_control_points=max_control_points))
 
     @classmethod
     def from_function(cls, function, t0, t1):
@@ -160,11 +163,13 @@ class Surface(Handle):
         self.kind = kind  # the file's surface kind for a model's surface, else None
 
     @classmethod
-    def from_nurbs(cls, degree, shape, control_points, knots, weights=None):
+    def from_nurbs(cls, degree, shape, control_points, knots, weights=None,
+                   max_control_points=None):
         """degree (p, q), shape (n_u, n_v), n_u * n_v control points with
         the u index running fastest (a flat list of points, or an array of
         shape (n_v, n_u, 3)), knots (knots_u, knots_v) of n_u + p + 1 and
-        n_v + q + 1 values, weights None or n_u * n_v values."""
+        n_v + q + 1 values, weights None or n_u * n_v values;
+        max_control_points as for Curve.from_nurbs."""
         p, q = (int(x) for x in degree)
         n_u, n_v = (int(x) for x in shape)
         ctrl = _arrays.doubles(control_points, "control_points", dim=3)
@@ -180,7 +185,8 @@ class Surface(Handle):
             w = _arrays.doubles(weights, "weights")
             _check_count("weights", w.n, n_u * n_v)
         return cls(_new_handle("projcurve_surface_create_nurbs", p, q, n_u, n_v, ctrl.ptr,
-                               w.ptr if w else None, ku.ptr, kv.ptr))
+                               w.ptr if w else None, ku.ptr, kv.ptr,
+                               max_control_points=max_control_points))
 
     @property
     def domain(self):

@@ -10,7 +10,7 @@ from . import _arrays
 from . import _generated as gen
 from ._errors import fail
 from ._handle import Handle
-from ._lib import call, fn
+from ._lib import call, fn, limits
 from .geometry import Curve, Surface
 
 
@@ -204,18 +204,22 @@ class Model(Handle):
         super().__init__(ptr, fn["projcurve_model_destroy"])
 
     @classmethod
-    def read(cls, path):
+    def read(cls, path, max_control_points=None):
+        """max_control_points: the size limit of each surface and curve
+        read (None: DEFAULT_MAX_CONTROL_POINTS)."""
         out = ctypes.c_void_p()
-        call("projcurve_model_read_file", os.fsencode(path), ctypes.byref(out))
+        call("projcurve_model_read_file", os.fsencode(path), ctypes.byref(out),
+             limits=limits(max_control_points))
         return cls(out.value)
 
     @classmethod
-    def from_bytes(cls, data):
+    def from_bytes(cls, data, max_control_points=None):
         if isinstance(data, str):
             data = data.encode()
         data = bytes(data)
         out = ctypes.c_void_p()
-        call("projcurve_model_read_memory", data, len(data), ctypes.byref(out))
+        call("projcurve_model_read_memory", data, len(data), ctypes.byref(out),
+             limits=limits(max_control_points))
         return cls(out.value)
 
     def _list(self, count, get, make):

@@ -7,6 +7,8 @@ import math
 
 import pytest
 
+from conftest import data
+
 KNOTS = ([0, 0, 1, 1], [0, 0, 1, 1])
 NET = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 1]]
 
@@ -48,6 +50,21 @@ def test_surface_input(pc):
            [[0, 0, math.nan], [1, 0, 0], [0, 1, 0], [1, 1, 1]], KNOTS)
     raises(pc, pc.BadWeightError, "weight", S, (1, 1), (2, 2), NET, KNOTS, weights=[1, 0, 1, 1])
     raises(pc, pc.BadDegreeError, "degree", S, (0, 1), (2, 2), NET, ([0, 0, 1], [0, 0, 1, 1]))
+
+
+def test_size_limits(pc):
+    net = [[i, j, 0] for j in range(3) for i in range(3)]
+    k = [0, 0, 1, 2, 2]
+    raises(pc, pc.OutOfRangeError, "", pc.Surface.from_nurbs, (1, 1), (3, 3), net, (k, k),
+           max_control_points=8)
+    assert pc.Surface.from_nurbs((1, 1), (3, 3), net, (k, k), max_control_points=9).shape == (3, 3)
+    raises(pc, pc.OutOfRangeError, "", pc.Curve.from_nurbs, 1, net, list(range(11)),
+           max_control_points=8)
+    raises(pc, pc.OutOfRangeError, "", pc.Model.read,
+           data("cases", "bumpy_bicubic_8x8_down.igs"), max_control_points=63)
+    raises(pc, pc.OutOfRangeError, "max_control_points", pc.Model.from_bytes, b"",
+           max_control_points=-1)
+    raises(pc, pc.OutOfRangeError, "", pc.Model.from_bytes, b"x", max_control_points=1)
 
 
 def test_curve_input(pc, segment):
