@@ -77,6 +77,18 @@ def point(obj, what, dim=3):
     return d
 
 
+def c_int(value, what, status="OUT_OF_RANGE"):
+    """value as a C int; ctypes would wrap a larger one silently."""
+    try:
+        v = int(value)
+    except (TypeError, ValueError):
+        raise fail("INVALID_ARGUMENT", "%s: %r is not an integer" % (what, value),
+                   "projcurve") from None
+    if v != value or not -2 ** 31 <= v < 2 ** 31:
+        raise fail(status, "%s: %r is not an int of C" % (what, value), "projcurve")
+    return v
+
+
 def out_array(n):
     return (ctypes.c_double * max(n, 1))()
 

@@ -49,15 +49,16 @@ class Curve(Handle):
         points of 3 coordinates, knots n + degree + 1 values.
         max_control_points: the size limit of the call (None: the default,
         DEFAULT_MAX_CONTROL_POINTS; see PROJCURVE_LIMIT_CONTROL_POINTS)."""
+        degree = _arrays.c_int(degree, "degree", "BAD_DEGREE")
         ctrl = _arrays.doubles(control_points, "control_points", dim=3)
         n = ctrl.n // 3
         k = _arrays.doubles(knots, "knots")
-        _check_count("knots", k.n, n + int(degree) + 1)
+        _check_count("knots", k.n, n + degree + 1)
         w = None
         if weights is not None:
             w = _arrays.doubles(weights, "weights")
             _check_count("weights", w.n, n)
-        return cls(_new_handle("projcurve_curve_create_nurbs", int(degree), n, ctrl.ptr,
+        return cls(_new_handle("projcurve_curve_create_nurbs", degree, n, ctrl.ptr,
                                w.ptr if w else None, k.ptr,
                                max_control_points=max_control_points))
 
@@ -89,8 +90,9 @@ class Curve(Handle):
 
     def eval(self, t, n_deriv=0):
         """[C(t), C'(t), ...] up to n_deriv (0..3), each an (x, y, z) tuple."""
-        n = int(n_deriv)
-        out = _arrays.out_array(3 * (max(n, 0) + 1))
+        n = _arrays.c_int(n_deriv, "n_deriv")
+        # sized for at most order 3: a larger order is refused, nothing written
+        out = _arrays.out_array(3 * (min(max(n, 0), 3) + 1))
         call("projcurve_curve_eval", self._ptr, float(t), n, out)
         return _arrays.rows(out, n + 1, 3)
 
@@ -170,8 +172,11 @@ class Surface(Handle):
         shape (n_v, n_u, 3)), knots (knots_u, knots_v) of n_u + p + 1 and
         n_v + q + 1 values, weights None or n_u * n_v values;
         max_control_points as for Curve.from_nurbs."""
-        p, q = (int(x) for x in degree)
+        p, q = (_arrays.c_int(x, "degree", "BAD_DEGREE") for x in degree)
         n_u, n_v = (int(x) for x in shape)
+        if n_u < 1 or n_v < 1:
+            raise fail("BAD_COUNT", "shape %r: both sizes must be positive" % ((n_u, n_v),),
+                       "projcurve")
         ctrl = _arrays.doubles(control_points, "control_points", dim=3)
         _check_count("control_points (coordinates)", ctrl.n, 3 * n_u * n_v)
         if len(knots) != 2:
@@ -240,8 +245,9 @@ class Surface(Handle):
 
     def eval(self, u, v, n_deriv=0):
         """[S, (Su, Sv), (Suu, Suv, Svv)] flattened up to n_deriv (0..2)."""
-        n = int(n_deriv)
-        count = (max(n, 0) + 1) * (max(n, 0) + 2) // 2
+        n = _arrays.c_int(n_deriv, "n_deriv")
+        m = min(max(n, 0), 2)  # a larger order is refused, nothing written
+        count = (m + 1) * (m + 2) // 2
         out = _arrays.out_array(3 * count)
         call("projcurve_surface_eval", self._ptr, float(u), float(v), n, out)
         return _arrays.rows(out, count, 3)

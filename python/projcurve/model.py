@@ -60,7 +60,7 @@ class Face(Handle):
         for j, p in enumerate(pieces):
             what = "loop piece %d" % j
             try:
-                degree = int(p["degree"])
+                degree = _arrays.c_int(p["degree"], what + " degree", "BAD_DEGREE")
                 c = _arrays.doubles(p["control_points"], what + " control_points", dim=2)
                 k = _arrays.doubles(p["knots"], what + " knots")
             except (KeyError, TypeError):

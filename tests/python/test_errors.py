@@ -50,6 +50,8 @@ def test_surface_input(pc):
            [[0, 0, math.nan], [1, 0, 0], [0, 1, 0], [1, 1, 1]], KNOTS)
     raises(pc, pc.BadWeightError, "weight", S, (1, 1), (2, 2), NET, KNOTS, weights=[1, 0, 1, 1])
     raises(pc, pc.BadDegreeError, "degree", S, (0, 1), (2, 2), NET, ([0, 0, 1], [0, 0, 1, 1]))
+    raises(pc, pc.BadCountError, "positive", S, (1, 1), (-1, -2), NET[:2], ([0], [0, 0]))
+    raises(pc, pc.OutOfRangeError, "", S((1, 1), (2, 2), NET, KNOTS).eval, 0.5, 0.5, 10 ** 9)
 
 
 def test_size_limits(pc):
@@ -73,6 +75,8 @@ def test_curve_input(pc, segment):
     raises(pc, pc.BadKnotsError, "knot", C, 1, [[0, 0, 0], [1, 0, 0]], [0, 0, 0, 0])
     raises(pc, pc.OutOfDomainError, "", segment.eval, 2.0)
     raises(pc, pc.OutOfRangeError, "", segment.eval, 0.5, 7)
+    raises(pc, pc.OutOfRangeError, "not an int of C", segment.eval, 0.5, 2 ** 32)
+    raises(pc, pc.BadDegreeError, "degree", C, 2 ** 32 + 1, [[0, 0, 0], [1, 0, 0]], [0] * 3)
     raises(pc, pc.NotFiniteError, "", segment.eval, math.nan)
     raises(pc, pc.BadCountError, "3 coordinates", segment.closest_point, (1, 2))
 
