@@ -92,3 +92,17 @@ def test_pip_install(need_build, pc, tmp_path):
     assert module.startswith(str(target))
     lib_path, _ = run_probe(tmp_path, PYTHONPATH=str(target), PROJCURVE_LIBRARY=pc.library_path())
     assert lib_path == pc.library_path()
+
+
+def test_loader_paths(need_build, pc, tmp_path):
+    """PROJCURVE_LIBRARY decides alone (a wrong path is an error naming it);
+    without it, from the source tree, the dynamic loader's search is used."""
+    src = os.path.join(SOURCE, "python")
+    missing = str(tmp_path / "nowhere" / pc._lib.SONAME)
+    out = subprocess.run([sys.executable, "-c", "import projcurve"], cwd=tmp_path,
+                         env=clean_env(PYTHONPATH=src, PROJCURVE_LIBRARY=missing),
+                         capture_output=True, text=True, timeout=60)
+    assert out.returncode != 0 and missing in out.stderr and "PROJCURVE_LIBRARY" in out.stderr
+    lib_path, _ = run_probe(tmp_path, PYTHONPATH=src,
+                            LD_LIBRARY_PATH=os.path.dirname(pc.library_path()))
+    assert os.path.basename(lib_path) == pc._lib.SONAME
