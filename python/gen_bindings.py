@@ -77,8 +77,11 @@ def parse_defines(text):
 # C parameter / return types -> the package's type codes (mapped to ctypes
 # in projcurve/_lib.py).
 SCALARS = {
-    "void": "void", "int": "int", "unsigned": "uint", "size_t": "size_t", "double": "double",
-    "long": "long", "long long": "longlong", "char": "char",
+    "void": "void", "int": "int", "unsigned": "uint", "unsigned int": "uint",
+    "size_t": "size_t", "double": "double", "float": "float", "long": "long",
+    "unsigned long": "ulong", "long long": "longlong", "unsigned long long": "ulonglong",
+    "char": "char", "unsigned char": "uchar", "int32_t": "int32", "uint32_t": "uint32",
+    "int64_t": "int64", "uint64_t": "uint64", "ptrdiff_t": "ptrdiff",
 }
 
 

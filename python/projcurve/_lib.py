@@ -43,7 +43,10 @@ def _candidates():
 
 _CTYPES = {
     "void": None, "int": ctypes.c_int, "uint": ctypes.c_uint, "size_t": ctypes.c_size_t,
-    "double": ctypes.c_double, "long": ctypes.c_long, "longlong": ctypes.c_longlong,
+    "double": ctypes.c_double, "float": ctypes.c_float, "long": ctypes.c_long,
+    "ulong": ctypes.c_ulong, "longlong": ctypes.c_longlong, "ulonglong": ctypes.c_ulonglong,
+    "uchar": ctypes.c_ubyte, "int32": ctypes.c_int32, "uint32": ctypes.c_uint32,
+    "int64": ctypes.c_int64, "uint64": ctypes.c_uint64, "ptrdiff": ctypes.c_ssize_t,
     "handle": ctypes.c_void_p, "string": ctypes.c_char_p,
 }
 
