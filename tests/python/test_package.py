@@ -295,3 +295,28 @@ def test_iges_writer(pc, bilinear, segment, tmp_path):
     assert close(back.surfaces[0].control_points()[3], (1, 1, 1), 1e-12)
     assert any(c.info.n_control_points == 2 and close(c.point(1.0), B, 1e-12)
                for c in back.curves)
+
+
+def test_options_and_keywords_merge(pc, bilinear, segment):
+    seen = []
+    o = pc.Options(tol_angle_deg=0.5, compose=0)
+    o.progress = seen.append
+    res = pc.project_directional(bilinear, segment, (0, 0, -1), o, tol_distance=1e-6)
+    assert res.stat("tol_distance") == 1e-6  # the keyword
+    assert res.branches[0].n_pieces == 0  # compose=0 of the options
+    assert seen and seen[-1] == 1.0  # their progress function
+    assert o.tol_distance == 0.0  # the caller's options are not changed
+
+
+def test_threads_share_handles(pc):
+    """Handles are read-only: threads project with the same surface and
+    curve at once (each call has its own context) and agree."""
+    import concurrent.futures
+    m = pc.Model.read(data("cases", "bumpy_bicubic_8x8_down.igs"))
+    s, c = m.surfaces[0], m.curves[0]
+
+    def run(_):
+        return pc.project_directional(s, c, (0, 0, -1), tol_distance=1e-3).branches[0].tuv()
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        results = list(pool.map(run, range(8)))
+    assert all(r == results[0] for r in results)
