@@ -62,6 +62,8 @@ def doubles(obj, what, dim=None):
         n = len(values)
         keep = (ctypes.c_double * max(n, 1))(*values)
         ptr = ctypes.cast(keep, DoublePtr)
+    if dim is not None and n == 0:
+        shape = (0, dim)  # no points at all
     if dim is not None and (len(shape) == 0 or shape[-1] != dim):
         raise fail("BAD_COUNT", "%s: points of %d coordinates expected, got shape %s"
                    % (what, dim, tuple(shape)), "projcurve")

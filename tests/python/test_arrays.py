@@ -74,3 +74,9 @@ def test_numpy_output_without_numpy(pc, segment, monkeypatch):
     with pytest.raises(ImportError):
         segment.control_points(numpy=True)
     assert segment.control_points() == [(0.1, 0.2, 2.0), (0.9, 0.7, 2.0)]
+
+
+def test_empty(pc, bilinear, segment):
+    assert bilinear.points([]) == [] and segment.points([]) == []
+    with pytest.raises(pc.BadCountError):
+        pc.Curve.from_nurbs(1, [], [0, 0, 1, 1])
