@@ -134,9 +134,8 @@ def parse_params(params, enums, callbacks, where):
 
 def parse_callbacks(text, enums):
     callbacks = {}
-    for ret, name, params in re.findall(r"typedef\s+([\w\s\*]+?)\s*\(\s*\*\s*(\w+)\s*\)\s*\((.*?)\)\s*;",
-                                        text, flags=re.S):
-        callbacks[name] = None  # known for the parameters below
+    pattern = r"typedef\s+([\w\s\*]+?)\s*\(\s*\*\s*(\w+)\s*\)\s*\((.*?)\)\s*;"
+    for ret, name, params in re.findall(pattern, text, flags=re.S):
         callbacks[name] = (type_code(ret, enums, {}, name),
                            [code for _, code in parse_params(params, enums, {}, name)])
     return callbacks

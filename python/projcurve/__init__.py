@@ -21,7 +21,8 @@ from . import _generated
 from ._errors import ERROR_CLASSES, Error, Status
 from ._lib import SONAME, fn as _fn, path as _path
 from .geometry import ClosestPoint, Curve, CurveInfo, Hit, Surface, SurfaceInfo
-from .model import Edge, EdgeUse, Face, FaceInfo, FacePiece, IgesWriter, Model, Shape, ShapeKind, Where
+from .model import (Edge, EdgeUse, Face, FaceInfo, FacePiece, IgesWriter, Model, Shape,
+                    ShapeKind, Where)
 from .options import Option, OptionInfo, OptionType, Options, option_table
 from .result import (Branch, BranchEnd, BranchStart, CompactInfo, Piece, Result, Stat,
                      project_directional, project_orthogonal, project_orthogonal_implicit)

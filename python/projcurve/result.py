@@ -37,7 +37,8 @@ class Branch:
     def __init__(self, result, index):
         self.result = result
         self.index = index
-        t, st, en, n_pts, n_pcs = _arrays.out_array(2), ctypes.c_int(), ctypes.c_int(), _size(), _size()
+        t, st, en = _arrays.out_array(2), ctypes.c_int(), ctypes.c_int()
+        n_pts, n_pcs = _size(), _size()
         call("projcurve_result_branch_info", result._ptr, index, t, ctypes.byref(st),
              ctypes.byref(en), ctypes.byref(n_pts), ctypes.byref(n_pcs))
         self.t_range = (t[0], t[1])

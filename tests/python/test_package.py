@@ -176,7 +176,8 @@ def test_options(pc):
     o.set("compose", 0)
     assert o.tol_angle_deg == 0.5 and o.max_points == 2 ** 40 and o.compose == 0
     info = pc.Options.info("max_points")
-    assert info.type == pc.OptionType.INTEGER and (info.min, info.max, info.default) == (16, 2 ** 40, 100000)
+    assert info.type == pc.OptionType.INTEGER
+    assert (info.min, info.max, info.default) == (16, 2 ** 40, 100000)
     assert pc.Options.info("tol_angle_deg").type == pc.OptionType.DOUBLE
     assert dict(o.items())["tol_angle_deg"] == 0.5
     # Every option of the header's enum is known to the library, with its default.
