@@ -28,6 +28,7 @@ static void project_usage(FILE *out)
           "  --timeout S     stop each (curve, surface) projection after S seconds of\n"
           "                  wall time, keeping what it made (0: no limit, default)\n"
           "  -o OUT.igs      write surfaces, curves and branches as IGES 5.3\n"
+          "                  (as STEP AP214 when OUT ends in .step or .stp)\n"
           "  --svg OUT.svg   write a picture\n"
           "  --json OUT.json write the branches as JSON (see docs/cli.md)\n"
           "\n"
@@ -138,7 +139,8 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
     const size_t unmeasured = cli_print_summary(ctx, job, stdout);
     int ok = 1;
     if (a->iges)
-        ok &= cli_write_iges(ctx, job, a->iges);
+        ok &= cli_is_step_path(a->iges) ? cli_write_step(ctx, job, a->iges)
+                                        : cli_write_iges(ctx, job, a->iges);
     if (a->json)
         ok &= cli_write_json(ctx, job, a->json);
     if (a->svg)

@@ -110,9 +110,10 @@ static int spline_rational(const pc_step_spline *c)
     return 0;
 }
 
-/* The knot vector as (multiplicities),(distinct knots): exact equality
- * groups them, so the reader's expansion gives the same vector. */
-static void knots(pc_step_out *out, const double *u, size_t n)
+/* A knot vector's multiplicities (mults) or distinct values, as a list:
+ * exact equality groups them, so a reader's expansion of the two lists
+ * gives the same vector. */
+static void knot_list(pc_step_out *out, const double *u, size_t n, int mults)
 {
     pc_text_buf_append(&out->data, "(", 1);
     for (size_t i = 0; i < n;) {
@@ -121,20 +122,20 @@ static void knots(pc_step_out *out, const double *u, size_t n)
             ++j;
         if (i > 0)
             comma(out);
-        pc_text_buf_printf(&out->data, "%zu", j - i);
-        i = j;
-    }
-    pc_text_buf_append(&out->data, "),(", 3);
-    for (size_t i = 0; i < n;) {
-        size_t j = i + 1;
-        while (j < n && u[j] == u[i])
-            ++j;
-        if (i > 0)
-            comma(out);
-        real(out, u[i]);
+        if (mults)
+            pc_text_buf_printf(&out->data, "%zu", j - i);
+        else
+            real(out, u[i]);
         i = j;
     }
     pc_text_buf_append(&out->data, ")", 1);
+}
+
+static void knots(pc_step_out *out, const double *u, size_t n)
+{
+    knot_list(out, u, n, 1);
+    pc_text_buf_append(&out->data, ",", 1);
+    knot_list(out, u, n, 0);
 }
 
 /* The points of a curve, numbered from first. */
@@ -300,9 +301,13 @@ static void surface_entity(pc_step_out *out, const pc_nurbs_surface *s, long fir
     if (rational)
         out->line_start = out->data.len;
     /* (u multiplicities),(v multiplicities),(u knots),(v knots) */
-    knots(out, s->knots_u, nu);
-    pc_text_buf_append(&out->data, ",", 1);
-    knots(out, s->knots_v, nv);
+    knot_list(out, s->knots_u, nu, 1);
+    comma(out);
+    knot_list(out, s->knots_v, nv, 1);
+    comma(out);
+    knot_list(out, s->knots_u, nu, 0);
+    comma(out);
+    knot_list(out, s->knots_v, nv, 0);
     pc_text_buf_puts(&out->data, ",.UNSPECIFIED.)");
     if (rational) {
         pc_text_buf_puts(&out->data, "\nGEOMETRIC_REPRESENTATION_ITEM()\nRATIONAL_B_SPLINE_SURFACE(");
