@@ -77,8 +77,9 @@ projcurve_status pc_step_out_add_to_set(projcurve_context *ctx, pc_step_out *out
     return PROJCURVE_OK;
 }
 
-/* A Part 21 string of plain text (no apostrophes or backslashes in what
- * this writer names). */
+/* The header section; its strings hold no apostrophe or backslash, which
+ * Part 21 would ask to escape. The time stamp is fixed, so that the same
+ * geometry gives the same file. */
 static void header(pc_text_buf *b)
 {
     pc_text_buf_puts(b, "ISO-10303-21;\nHEADER;\n"
