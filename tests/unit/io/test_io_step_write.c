@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "check.h"
+#include "shapes.h"
 #include "common/arena.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
@@ -380,6 +381,39 @@ static void result_round_trip(void)
     projcurve_model_destroy(in);
 }
 
+/* A circle above a plane projects in the circle's own rational space
+ * (docs/fit.md): rational compact forms, the complex entities in 2D and
+ * 3D, back bit for bit as well. */
+static void rational_result_round_trip(void)
+{
+    pc_shape_surface plane = pc_shape_plane(3, 3, 4, 4); /* (2u - 1, 3v - 1, 0) */
+    const double centre[3] = {0.1, 0.2, 0.7};
+    pc_shape_curve circle = pc_shape_circle(centre, 0.6);
+    projcurve_surface *s = pc_shape_surface_create(&plane);
+    projcurve_curve *c = pc_shape_curve_create(&circle);
+    const double dir[3] = {0, 0, -1};
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_directional(ctx, s, c, dir, NULL, &r));
+    CHECK(projcurve_result_branch_count(r) == 1);
+    CHECK(r && r->n_branches == 1 && r->branches[0].compact_pcurve.weights != NULL &&
+          r->branches[0].compact_curve.weights != NULL);
+    projcurve_step_writer *w = NULL;
+    CHECK_OK(projcurve_step_writer_create(ctx, &w));
+    CHECK_OK(projcurve_step_writer_add_result(ctx, w, s, r));
+    CHECK_OK(projcurve_step_writer_write(ctx, w, path_a));
+    projcurve_step_writer_destroy(w);
+    check_result_file(path_a, s, r);
+    char *text = pc_test_read_file(path_a, NULL);
+    const char *first = text ? strstr(text, "RATIONAL_B_SPLINE_CURVE(") : NULL;
+    CHECK(first != NULL && strstr(first + 1, "RATIONAL_B_SPLINE_CURVE(") != NULL);
+    free(text);
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+    pc_shape_surface_free(&plane);
+    pc_shape_curve_free(&circle);
+}
+
 /* The unit and uncertainty come back as set: SI prefixes exactly (the
  * reader's factor), other sizes exactly (a conversion-based unit measured
  * in metres: value times 1); the uncertainty, given in model units and
@@ -523,6 +557,7 @@ int main(void)
     snprintf(path_b, sizeof path_b, "%s/projcurve_sw_%ld_b.stp", tmp ? tmp : "/tmp", (long)getpid());
     geometry_round_trip();
     result_round_trip();
+    rational_result_round_trip();
     units_round_trip();
     reals();
     misuse();
