@@ -1133,6 +1133,79 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_write(projcurve_context *ct
                                                            const projcurve_iges_writer *w,
                                                            const char *path);
 
+/* A STEP writer: collect surfaces, curves and projection results, then
+ * write them as one STEP file (ISO 10303-21, schema AP214
+ * AUTOMOTIVE_DESIGN): a product whose shape is a geometric set of the
+ * surfaces (B_SPLINE_SURFACE_WITH_KNOTS), the curves
+ * (B_SPLINE_CURVE_WITH_KNOTS) and, per branch of a result, a
+ * SURFACE_CURVE; the rational complex entities where a weight is not 1.
+ * Every real is written with 17 significant digits: the file holds the
+ * doubles of the geometry exactly. */
+typedef struct projcurve_step_writer projcurve_step_writer;
+
+/* Creates an empty writer in *out (millimetres, uncertainty 1e-7);
+ * release it with projcurve_step_writer_destroy. ctx receives the message
+ * of a failure and may be NULL. Statuses: OK, NULL_ARGUMENT (out is NULL),
+ * NO_MEMORY. Thread-safe; a writer itself is to be used by one thread at a
+ * time. */
+PROJCURVE_API projcurve_status projcurve_step_writer_create(projcurve_context *ctx,
+                                                            projcurve_step_writer **out);
+/* Releases a writer (NULL is ignored). */
+PROJCURVE_API void projcurve_step_writer_destroy(projcurve_step_writer *writer);
+
+/* Adds a surface (B_SPLINE_SURFACE_WITH_KNOTS); the surface is copied
+ * into the writer's text, and written once however often it is added
+ * (surfaces are compared by their data, exactly). Statuses: OK,
+ * NULL_ARGUMENT, NO_MEMORY; on failure the writer is left as it was. */
+PROJCURVE_API projcurve_status projcurve_step_writer_add_surface(projcurve_context *ctx,
+                                                                 projcurve_step_writer *w,
+                                                                 const projcurve_surface *s);
+/* Adds a NURBS curve (B_SPLINE_CURVE_WITH_KNOTS). Statuses: OK,
+ * NULL_ARGUMENT, WRONG_KIND (callback curve), NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_step_writer_add_curve(projcurve_context *ctx,
+                                                               projcurve_step_writer *w,
+                                                               const projcurve_curve *c);
+/* Adds every branch of a projection result onto s as a SURFACE_CURVE: its
+ * compact 3D curve (projcurve_result_branch_compact_curve; where the fit
+ * found none, the pieces joined, projcurve_result_branch_curve) with its
+ * compact pcurve (projcurve_result_branch_compact_pcurve) as the PCURVE
+ * on s (a 2D B-spline in a DEFINITIONAL_REPRESENTATION), the pcurve the
+ * master representation; s is written too if it was not added before.
+ * The curves run over the branch's t range, t increasing. Unless an
+ * uncertainty was set, the file's uncertainty becomes at least the
+ * largest distance between the two forms the fits measured (each is
+ * within its measured error of the exact projection). On failure the
+ * writer is left as it was (none of the result added). Statuses: OK,
+ * NULL_ARGUMENT, INVALID_ARGUMENT (an implicit result, or a branch without
+ * compact forms: not composed), NO_MEMORY, and those of
+ * projcurve_result_branch_curve. */
+PROJCURVE_API projcurve_status projcurve_step_writer_add_result(projcurve_context *ctx,
+                                                                projcurve_step_writer *w,
+                                                                const projcurve_surface *s,
+                                                                const projcurve_result *r);
+/* The length unit of the file, in metres per unit (default millimetres,
+ * 0.001): give the unit of the model the geometry came from
+ * (projcurve_model_length_unit). Metre with an SI prefix (mm, cm, dm, m,
+ * km, um, nm, matched to 1e-9 relative) is written as an SI_UNIT, any
+ * other size (inch, foot, ...) as a CONVERSION_BASED_UNIT of exactly this
+ * many metres. Nothing is scaled. Statuses: OK, NULL_ARGUMENT, NOT_FINITE,
+ * OUT_OF_RANGE (not positive); on failure the writer keeps its unit. */
+PROJCURVE_API projcurve_status projcurve_step_writer_set_length_unit(projcurve_context *ctx,
+                                                                     projcurve_step_writer *w,
+                                                                     double metres_per_unit);
+/* The distance uncertainty of the file (the context's
+ * UNCERTAINTY_MEASURE_WITH_UNIT), in model units; written as given, no
+ * longer raised by projcurve_step_writer_add_result. Statuses: OK,
+ * NULL_ARGUMENT, NOT_FINITE, OUT_OF_RANGE (not positive). */
+PROJCURVE_API projcurve_status projcurve_step_writer_set_uncertainty(projcurve_context *ctx,
+                                                                     projcurve_step_writer *w,
+                                                                     double distance);
+/* Writes the file; the writer stays usable (more may be added and
+ * written again). Statuses: OK, NULL_ARGUMENT, IO, NO_MEMORY. */
+PROJCURVE_API projcurve_status projcurve_step_writer_write(projcurve_context *ctx,
+                                                           const projcurve_step_writer *w,
+                                                           const char *path);
+
 #ifdef __cplusplus
 }
 #endif

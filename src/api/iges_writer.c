@@ -227,12 +227,12 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
     if (st != PROJCURVE_OK || (pcurve_de == 0 && curve_de == 0))
         return st;
     pc_text_buf b = {0};
-    pc_text_buf_int(&b, PC_IGES_COS_PROJECTION);
-    pc_text_buf_int(&b, (long long)surface_de);
-    pc_text_buf_int(&b, (long long)pcurve_de);
-    pc_text_buf_int(&b, (long long)curve_de);
-    pc_text_buf_int(&b, curve_de ? PC_IGES_COS_PREFER_BOTH : PC_IGES_COS_PREFER_2D);
-    pc_text_buf_end(&b);
+    pc_iges_param_int(&b, PC_IGES_COS_PROJECTION);
+    pc_iges_param_int(&b, (long long)surface_de);
+    pc_iges_param_int(&b, (long long)pcurve_de);
+    pc_iges_param_int(&b, (long long)curve_de);
+    pc_iges_param_int(&b, curve_de ? PC_IGES_COS_PREFER_BOTH : PC_IGES_COS_PREFER_2D);
+    pc_iges_param_end(&b);
     size_t de;
     st = pc_iges_out_add(ctx, &w->out, PC_IGES_CURVE_ON_SURFACE, 0, PC_IGES_STATUS_INDEPENDENT, &b,
                          &de);

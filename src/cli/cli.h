@@ -126,6 +126,9 @@ const char *cli_end_words(projcurve_branch_end e);
 
 /* ---- outputs ---- */
 int cli_write_iges(projcurve_context *ctx, const cli_job *job, const char *path);
+/* STEP (report_step.c) for -o paths ending in .step or .stp (any case). */
+int cli_is_step_path(const char *path);
+int cli_write_step(projcurve_context *ctx, const cli_job *job, const char *path);
 int cli_write_json(projcurve_context *ctx, const cli_job *job, const char *path);
 int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title,
                   const char *path);

@@ -140,7 +140,8 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
                 job->timeouts, a->timeout);
     int ok = 1;
     if (a->iges)
-        ok &= cli_write_iges(ctx, job, a->iges);
+        ok &= cli_is_step_path(a->iges) ? cli_write_step(ctx, job, a->iges)
+                                        : cli_write_iges(ctx, job, a->iges);
     if (a->json)
         ok &= cli_write_json(ctx, job, a->json);
     if (a->svg)

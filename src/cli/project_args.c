@@ -169,7 +169,9 @@ static const project_option options[] = {
     {"--progress", NULL, set_progress,
      "show the progress from the start, also when stderr is not\n"
      "a terminal (default: on a terminal, after the first second)"},
-    {"-o", "OUT.igs", set_output, "write surfaces, curves and branches as IGES 5.3"},
+    {"-o", "OUT.igs", set_output,
+     "write surfaces, curves and branches as IGES 5.3\n"
+     "(as STEP AP214 when OUT ends in .step or .stp)"},
     {"--svg", "OUT.svg", set_output, "write a picture (see docs/cli.md)"},
     {"--json", "OUT.json", set_output, "write the branches as JSON (see docs/cli.md)"},
 };

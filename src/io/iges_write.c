@@ -62,32 +62,9 @@ void pc_iges_out_free(pc_iges_out *out)
     out->count = out->cap = 0;
 }
 
-typedef struct sink {
-    char *text;
-    size_t len, cap;
-    int failed;
-} sink;
-
-static void put(sink *s, const char *line)
-{
-    const size_t n = strlen(line);
-    if (s->failed)
-        return;
-    void *items = s->text;
-    /* no context here: a failure is the sink's flag, which layout reports */
-    if (pc_array_reserve(NULL, &items, &s->cap, s->len, s->len + n + 1, 1, 1u << 16, NULL,
-                         "IGES text") != PROJCURVE_OK) {
-        s->failed = 1;
-        return;
-    }
-    s->text = items;
-    memcpy(s->text + s->len, line, n + 1);
-    s->len += n;
-}
-
 /* Emits free-format text as records of `width` data columns, breaking
  * after a delimiter so no field is split; returns the records used. */
-static size_t records(sink *s, const char *text, size_t width, char section, size_t seq,
+static size_t records(pc_text_buf *s, const char *text, size_t width, char section, size_t seq,
                       size_t de)
 {
     const size_t len = strlen(text);
@@ -108,7 +85,7 @@ static size_t records(sink *s, const char *text, size_t width, char section, siz
         else
             snprintf(line, sizeof line, "%-72.*s%c%7zu\n", (int)take, text + pos, section,
                      seq + used);
-        put(s, line);
+        pc_text_buf_puts(s, line);
         pos += take;
         ++used;
     }
@@ -122,7 +99,7 @@ static void hollerith(char *out, size_t cap, const char *s)
 }
 
 /* unit_flag: pc_iges_unit_flag's, 0 for millimetres */
-static size_t global_section(sink *s, int unit_flag)
+static size_t global_section(pc_text_buf *s, int unit_flag)
 {
     const char *unit_name = pc_iges_unit_name(unit_flag);
     if (unit_name == NULL) {
@@ -147,11 +124,11 @@ static size_t global_section(sink *s, int unit_flag)
     return records(s, g, PC_IGES_G_WIDTH, 'G', 1, 0);
 }
 
-static projcurve_status layout(projcurve_context *ctx, const pc_iges_out *out, sink *s)
+static projcurve_status layout(projcurve_context *ctx, const pc_iges_out *out, pc_text_buf *s)
 {
     char line[96];
     snprintf(line, sizeof line, "%-72sS%7d\n", "libprojcurve: projected curves on NURBS surfaces", 1);
-    put(s, line);
+    pc_text_buf_puts(s, line);
     const size_t n_g = global_section(s, out->unit_flag);
     /* Parameter record counts first: the directory points into P. */
     size_t *p_start = calloc(out->count + 1, sizeof *p_start);
@@ -161,16 +138,16 @@ static projcurve_status layout(projcurve_context *ctx, const pc_iges_out *out, s
         free(p_count);
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory writing IGES");
     }
-    sink params = {0};
+    pc_text_buf params = {0};
     size_t seq = 1;
     for (size_t i = 0; i < out->count; ++i) {
         const pc_iges_out_entity *e = &out->entities[i];
         char head[16];
         snprintf(head, sizeof head, "%d,", e->type);
         /* The type field and the parameters go through one text. */
-        sink whole = {0};
-        put(&whole, head);
-        put(&whole, e->params);
+        pc_text_buf whole = {0};
+        pc_text_buf_puts(&whole, head);
+        pc_text_buf_puts(&whole, e->params);
         if (whole.failed) {
             params.failed = 1;
             free(whole.text);
@@ -185,16 +162,16 @@ static projcurve_status layout(projcurve_context *ctx, const pc_iges_out *out, s
         const pc_iges_out_entity *e = &out->entities[i];
         snprintf(line, sizeof line, "%8d%8zu%8d%8d%8d%8d%8d%8d%8sD%7zu\n", e->type, p_start[i], 0,
                  0, 0, 0, 0, 0, e->status, 2 * i + 1);
-        put(s, line);
+        pc_text_buf_puts(s, line);
         snprintf(line, sizeof line, "%8d%8d%8d%8zu%8d%8s%8s%8s%8dD%7zu\n", e->type, 0, 0,
                  p_count[i], e->form, "", "", "", 0, 2 * i + 2);
-        put(s, line);
+        pc_text_buf_puts(s, line);
     }
     if (params.text)
-        put(s, params.text);
+        pc_text_buf_puts(s, params.text);
     snprintf(line, sizeof line, "S%7dG%7zuD%7zuP%7zu%40sT%7d\n", 1, n_g, 2 * out->count, seq - 1,
              "", 1);
-    put(s, line);
+    pc_text_buf_puts(s, line);
     const int failed = params.failed || s->failed;
     free(params.text);
     free(p_start);
@@ -207,7 +184,7 @@ static projcurve_status layout(projcurve_context *ctx, const pc_iges_out *out, s
 projcurve_status pc_iges_out_text(projcurve_context *ctx, const pc_iges_out *out, char **text,
                                   size_t *len)
 {
-    sink s = {0};
+    pc_text_buf s = {0};
     const projcurve_status st = layout(ctx, out, &s);
     if (st != PROJCURVE_OK) {
         free(s.text);

@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 
+#include "io/text_buf.h"
 #include "nurbs/nurbs.h"
 #include "projcurve.h"
 
@@ -31,17 +32,11 @@ typedef struct pc_iges_out {
     int unit_flag; /* global parameters 14 and 15 (pc_iges_unit_flag); 0 = millimetres */
 } pc_iges_out;
 
-/* A growing text buffer for parameter fields. */
-typedef struct pc_text_buf {
-    char *text;
-    size_t len, cap;
-    int failed; /* an allocation failed */
-} pc_text_buf;
-
-void pc_text_buf_real(pc_text_buf *b, double v);
-void pc_text_buf_int(pc_text_buf *b, long long v);
+/* Parameter fields: each followed by the parameter delimiter ','. */
+void pc_iges_param_real(pc_text_buf *b, double v);
+void pc_iges_param_int(pc_text_buf *b, long long v);
 /* Replaces the last ',' by ';' (the record delimiter). */
-void pc_text_buf_end(pc_text_buf *b);
+void pc_iges_param_end(pc_text_buf *b);
 
 /* Appends an entity; takes ownership of params->text on success. *de gets
  * its DE pointer. */

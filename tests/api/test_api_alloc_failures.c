@@ -360,6 +360,39 @@ static outcome call_iges_write(void)
     return o;
 }
 
+/* The same for the STEP writer. */
+static outcome call_step_write(void)
+{
+    projcurve_step_writer *w = SENTINEL;
+    outcome o = {PROJCURVE_OK, 0, 1};
+    armed = 1;
+    o.st = projcurve_step_writer_create(ctx, &w);
+    armed = 0;
+    if (o.st != PROJCURVE_OK) {
+        o.out_untouched = w == SENTINEL;
+        return o;
+    }
+    for (int step = 0; step < 4 && o.st == PROJCURVE_OK; ++step) {
+        const int saved = projcurve_step_writer_write(ctx, w, write_path) == PROJCURVE_OK;
+        const hash before = saved ? file_hash(write_path) : 0;
+        armed = 1;
+        o.st = step == 0   ? projcurve_step_writer_add_surface(ctx, w, surface)
+               : step == 1 ? projcurve_step_writer_add_curve(ctx, w, curve)
+               : step == 2 ? projcurve_step_writer_add_result(ctx, w, surface, result)
+                           : projcurve_step_writer_write(ctx, w, write_path);
+        armed = 0;
+        if (o.st != PROJCURVE_OK && step < 3) {
+            CHECK(projcurve_step_writer_write(ctx, w, write_path) == PROJCURVE_OK);
+            if (file_hash(write_path) != before)
+                pc_test_fail_at(__FILE__, __LINE__, "a failed step %d changed the writer", step);
+        }
+    }
+    if (o.st == PROJCURVE_OK)
+        o.out = file_hash(write_path);
+    projcurve_step_writer_destroy(w);
+    return o;
+}
+
 /* ---- the driver ---- */
 
 typedef struct entry {
@@ -456,6 +489,7 @@ int main(void)
         {"project_orthogonal", call_orthogonal},
         {"result_branch_curve", call_branch_curves},
         {"iges_writer", call_iges_write},
+        {"step_writer", call_step_write},
     };
     for (size_t i = 0; i < sizeof entries / sizeof entries[0]; ++i)
         check_entry(&entries[i]);

@@ -1,0 +1,211 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * Public STEP writer: surfaces, curves and projection results, each branch
+ * in its compact forms (fit/) as a SURFACE_CURVE: the compact 3D curve
+ * (where its fit found none, the pieces joined) with the compact pcurve as
+ * its PCURVE on the surface. The geometry is formatted by io/step_write*.c;
+ * this file takes it from the handles and the result.
+ */
+#include <math.h>
+#include <stdlib.h>
+
+#include "common/error.h"
+#include "geom/curve.h"
+#include "geom/surface.h"
+#include "io/step_write.h"
+#include "trace/result.h"
+
+struct projcurve_step_writer {
+    pc_step_out out;
+    int uncertainty_set; /* by projcurve_step_writer_set_uncertainty */
+};
+
+projcurve_status projcurve_step_writer_create(projcurve_context *ctx,
+                                              projcurve_step_writer **out)
+{
+    PC_REQUIRE(ctx, out, "out");
+    projcurve_step_writer *w = calloc(1, sizeof *w);
+    if (w == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory creating a STEP writer");
+    pc_step_out_init(&w->out);
+    *out = w;
+    return PROJCURVE_OK;
+}
+
+void projcurve_step_writer_destroy(projcurve_step_writer *writer)
+{
+    if (writer == NULL)
+        return;
+    pc_step_out_free(&writer->out);
+    free(writer);
+}
+
+projcurve_status projcurve_step_writer_add_surface(projcurve_context *ctx,
+                                                   projcurve_step_writer *w,
+                                                   const projcurve_surface *s)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, s, "surface");
+    const pc_step_mark mark = pc_step_out_mark(&w->out);
+    long id;
+    const projcurve_status st = pc_step_out_surface(ctx, &w->out, &s->nurbs, &id);
+    if (st != PROJCURVE_OK)
+        pc_step_out_rollback(&w->out, &mark);
+    return st;
+}
+
+static pc_step_spline view_of_nurbs(const pc_nurbs_curve *c)
+{
+    return (pc_step_spline){.degree = c->degree, .dim = 3, .n_poles = c->n_ctrl,
+                            .knots = c->knots, .poles = c->cw, .homogeneous = 1};
+}
+
+static pc_step_spline view_of_bspline(const pc_bspline *b)
+{
+    return (pc_step_spline){.degree = b->degree, .dim = b->dim, .n_poles = b->n_poles,
+                            .knots = b->knots, .poles = b->poles, .weights = b->weights};
+}
+
+projcurve_status projcurve_step_writer_add_curve(projcurve_context *ctx,
+                                                 projcurve_step_writer *w,
+                                                 const projcurve_curve *c)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, c, "curve");
+    if (c->kind != PC_CURVE_NURBS)
+        return pc_fail(ctx, PROJCURVE_ERR_WRONG_KIND,
+                       "a callback curve has no NURBS form to write");
+    const pc_step_mark mark = pc_step_out_mark(&w->out);
+    const pc_step_spline view = view_of_nurbs(&c->nurbs);
+    long id;
+    projcurve_status st = pc_step_out_curve(ctx, &w->out, &view, &id);
+    if (st == PROJCURVE_OK)
+        st = pc_step_out_add_to_set(ctx, &w->out, id);
+    if (st != PROJCURVE_OK)
+        pc_step_out_rollback(&w->out, &mark);
+    return st;
+}
+
+/* The 3D curve of a branch: the compact one, or where its fit found none
+ * the pieces joined. */
+static projcurve_status add_curve3d(projcurve_context *ctx, projcurve_step_writer *w,
+                                    const projcurve_result *r, size_t branch, long *id)
+{
+    const pc_bspline *compact = &r->branches[branch].compact_curve;
+    if (compact->n_poles > 0) {
+        const pc_step_spline view = view_of_bspline(compact);
+        return pc_step_out_curve(ctx, &w->out, &view, id);
+    }
+    projcurve_curve *joined = NULL;
+    projcurve_status st = projcurve_result_branch_curve(ctx, r, branch, &joined);
+    if (st != PROJCURVE_OK)
+        return st;
+    const pc_step_spline view = view_of_nurbs(&joined->nurbs);
+    st = pc_step_out_curve(ctx, &w->out, &view, id);
+    projcurve_curve_destroy(joined);
+    return st;
+}
+
+/* A bound on the distance between the SURFACE_CURVE's two forms: each is
+ * within its measured fit error of the exact projection (eps_D where the
+ * form is the verified pieces, not a fit). */
+static double forms_gap(const projcurve_result *r, const pc_branch *b)
+{
+    const double eps = r->stats.tol_distance;
+    const double q = b->compact_pcurve_error >= 0.0 ? b->compact_pcurve_error : eps;
+    const double c = b->compact_curve.n_poles > 0 && b->compact_curve_error >= 0.0
+                         ? b->compact_curve_error
+                         : eps;
+    return q + c;
+}
+
+static projcurve_status add_branch(projcurve_context *ctx, projcurve_step_writer *w,
+                                   long surface, const projcurve_result *r, size_t branch)
+{
+    const pc_branch *b = &r->branches[branch];
+    if (b->compact == PC_COMPACT_NONE || b->compact_pcurve.n_poles == 0)
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "branch %zu has no compact forms to write as STEP (it has no composed "
+                       "pieces: PROJCURVE_OPT_COMPOSE 0, or a limit was reached before it)",
+                       branch);
+    long curve3d, curve2d, pcurve, surface_curve;
+    const pc_step_spline q = view_of_bspline(&b->compact_pcurve);
+    projcurve_status st = add_curve3d(ctx, w, r, branch, &curve3d);
+    if (st == PROJCURVE_OK)
+        st = pc_step_out_curve(ctx, &w->out, &q, &curve2d);
+    if (st == PROJCURVE_OK)
+        st = pc_step_out_pcurve(ctx, &w->out, surface, curve2d, &pcurve);
+    if (st == PROJCURVE_OK)
+        st = pc_step_out_surface_curve(ctx, &w->out, curve3d, pcurve, &surface_curve);
+    if (st == PROJCURVE_OK)
+        st = pc_step_out_add_to_set(ctx, &w->out, surface_curve);
+    return st;
+}
+
+projcurve_status projcurve_step_writer_add_result(projcurve_context *ctx,
+                                                  projcurve_step_writer *w,
+                                                  const projcurve_surface *s,
+                                                  const projcurve_result *r)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, s, "surface");
+    PC_REQUIRE(ctx, r, "result");
+    if (r->point_dim != 3)
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "the result is not on a parametric surface (implicit projection): it "
+                       "has no pcurves to write as STEP");
+    /* All or nothing: a failure part of the way leaves the writer as it
+     * was, not with half a result in it. */
+    const pc_step_mark mark = pc_step_out_mark(&w->out);
+    long surface;
+    projcurve_status st = pc_step_out_surface(ctx, &w->out, &s->nurbs, &surface);
+    double gap = 0.0;
+    for (size_t b = 0; st == PROJCURVE_OK && b < r->n_branches; ++b) {
+        st = add_branch(ctx, w, surface, r, b);
+        gap = fmax(gap, forms_gap(r, &r->branches[b]));
+    }
+    if (st != PROJCURVE_OK) {
+        pc_step_out_rollback(&w->out, &mark);
+        return st;
+    }
+    if (!w->uncertainty_set && isfinite(gap))
+        w->out.uncertainty = fmax(w->out.uncertainty, gap);
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_step_writer_set_length_unit(projcurve_context *ctx,
+                                                       projcurve_step_writer *w,
+                                                       double metres_per_unit)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    if (!isfinite(metres_per_unit))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "length unit is not finite");
+    if (!(metres_per_unit > 0.0))
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "length unit %.17g m is not positive", metres_per_unit);
+    w->out.metres_per_unit = metres_per_unit;
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_step_writer_set_uncertainty(projcurve_context *ctx,
+                                                       projcurve_step_writer *w,
+                                                       double distance)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    if (!isfinite(distance))
+        return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "uncertainty is not finite");
+    if (!(distance > 0.0))
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE, "uncertainty %.17g is not positive",
+                       distance);
+    w->out.uncertainty = distance;
+    w->uncertainty_set = 1;
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_step_writer_write(projcurve_context *ctx,
+                                             const projcurve_step_writer *w, const char *path)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, path, "path");
+    return pc_step_out_write(ctx, &w->out, path);
+}
