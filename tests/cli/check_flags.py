@@ -104,6 +104,18 @@ def given_curves(t, shared, work):
         whole_branches(t, data, "--line")
         for b, w in zip(data["branches"], iges_geometry.branches(igs)):
             t.check_branch_geometry("--line", direction, b, w, curves[0])
+        # -o NAME.step: the same job as STEP, read back by `info`: the
+        # surface, the given curve and one compact 3D curve per branch
+        step = os.path.join(work, "line.step")
+        if t.run(base + ["--line", "10,10,20,90,80,20", "--tol", "1e-3", "-o", step], 0,
+                 "-o .step").returncode == 0:
+            proc = t.run([t.exe, "info", "--json", step], 0, "info of the STEP output")
+            if proc.returncode == 0:
+                back = json.loads(proc.stdout)
+                t.check(back["surfaces"] == 1 and
+                        back["curves"] == 1 + len(data["branches"]),
+                        f"-o .step: read back {back['surfaces']} surface(s), "
+                        f"{back['curves']} curve(s)")
     for value in ("10,10,20,90,80", "10,10,20,90,80,x", "1,2,3,1,2,3", "1,2,3,4,5,6,7"):
         proc = t.run(base + ["--line", value], 2, f"--line {value}")
         t.check("--line" in proc.stderr, f"--line {value}: {proc.stderr!r}")
