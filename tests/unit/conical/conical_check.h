@@ -39,12 +39,40 @@ static inline double cc_segment_dist(const double x[3], const double a[3], const
     return cc_dist(x, y);
 }
 
-/* Distance from x to the composed pieces of r (each the polyline of its
- * CONICAL_PIECE_SAMPLES + 1 samples: its sub-chords' sagitta is far below
- * the tolerances the tests compare with). INFINITY without pieces. */
-static inline double cc_dist_to_pieces(const projcurve_result *r, const double x[3])
+/* The composed pieces of r sampled once: each the polyline of its
+ * CONICAL_PIECE_SAMPLES + 1 samples (its sub-chords' sagitta is far below
+ * the tolerances the tests compare with), with the box of its samples. */
+typedef struct cc_pieces {
+    double *x;      /* 3 (CONICAL_PIECE_SAMPLES + 1) per piece */
+    double *box;    /* 6 per piece */
+    size_t n;
+} cc_pieces;
+
+static inline void cc_pieces_free(cc_pieces *p)
 {
-    double best = INFINITY;
+    free(p->x);
+    free(p->box);
+    p->x = p->box = NULL;
+    p->n = 0;
+}
+
+/* Returns 0 when memory ran out. */
+static inline int cc_pieces_sample(const projcurve_result *r, cc_pieces *out)
+{
+    const size_t per = CONICAL_PIECE_SAMPLES + 1;
+    size_t total = 0;
+    for (size_t b = 0; b < projcurve_result_branch_count(r); ++b) {
+        size_t n_pieces = 0;
+        projcurve_result_branch_info(NULL, r, b, NULL, NULL, NULL, NULL, &n_pieces);
+        total += n_pieces;
+    }
+    out->n = 0;
+    out->x = malloc((total + 1) * per * 3 * sizeof *out->x);
+    out->box = malloc((total + 1) * 6 * sizeof *out->box);
+    if (out->x == NULL || out->box == NULL) {
+        cc_pieces_free(out);
+        return 0;
+    }
     for (size_t b = 0; b < projcurve_result_branch_count(r); ++b) {
         size_t n_pieces = 0;
         projcurve_result_branch_info(NULL, r, b, NULL, NULL, NULL, NULL, &n_pieces);
@@ -52,17 +80,42 @@ static inline double cc_dist_to_pieces(const projcurve_result *r, const double x
             int degree = 0;
             double ctrl[3 * PROJCURVE_MAX_PIECE_POINTS], w[PROJCURVE_MAX_PIECE_POINTS];
             projcurve_result_piece(NULL, r, b, k, &degree, ctrl, w, NULL, NULL);
-            double prev[3];
-            pc_test_piece_point(degree, ctrl, w, 0.0, prev);
-            for (int j = 1; j <= CONICAL_PIECE_SAMPLES; ++j) {
-                double cur[3];
-                pc_test_piece_point(degree, ctrl, w, (double)j / CONICAL_PIECE_SAMPLES, cur);
-                best = fmin(best, cc_segment_dist(x, prev, cur));
-                prev[0] = cur[0];
-                prev[1] = cur[1];
-                prev[2] = cur[2];
+            double *x = out->x + 3 * per * out->n, *box = out->box + 6 * out->n;
+            for (int i = 0; i < 3; ++i) {
+                box[i] = INFINITY;
+                box[i + 3] = -INFINITY;
             }
+            for (size_t j = 0; j < per; ++j) {
+                pc_test_piece_point(degree, ctrl, w, (double)j / CONICAL_PIECE_SAMPLES,
+                                    x + 3 * j);
+                for (int i = 0; i < 3; ++i) {
+                    box[i] = fmin(box[i], x[3 * j + i]);
+                    box[i + 3] = fmax(box[i + 3], x[3 * j + i]);
+                }
+            }
+            out->n++;
         }
+    }
+    return 1;
+}
+
+/* Distance from x to the sampled pieces (INFINITY without pieces). */
+static inline double cc_pieces_dist(const cc_pieces *p, const double x[3])
+{
+    const size_t per = CONICAL_PIECE_SAMPLES + 1;
+    double best = INFINITY;
+    for (size_t k = 0; k < p->n; ++k) {
+        const double *box = p->box + 6 * k;
+        double gap2 = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            const double g = fmax(fmax(box[i] - x[i], x[i] - box[i + 3]), 0.0);
+            gap2 += g * g;
+        }
+        if (gap2 >= best * best)
+            continue;
+        const double *y = p->x + 3 * per * k;
+        for (size_t j = 1; j < per; ++j)
+            best = fmin(best, cc_segment_dist(x, y + 3 * (j - 1), y + 3 * j));
     }
     return best;
 }

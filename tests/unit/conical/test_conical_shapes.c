@@ -187,6 +187,9 @@ static int sphere_hits(const double p[3], const double d[3], double lambda[2])
 static double sphere_missed(const projcurve_result *r, const projcurve_curve *c,
                             const double eye[3], int samples, size_t *hits)
 {
+    cc_pieces pieces;
+    if (!cc_pieces_sample(r, &pieces))
+        return INFINITY;
     double worst = 0.0;
     *hits = 0;
     for (int k = 0; k <= samples; ++k) {
@@ -205,10 +208,11 @@ static double sphere_missed(const projcurve_result *r, const projcurve_curve *c,
         for (int j = 0; j < n; ++j) {
             const double x[3] = {p[0] + lambda[j] * d[0], p[1] + lambda[j] * d[1],
                                  p[2] + lambda[j] * d[2]};
-            worst = fmax(worst, cc_dist_to_pieces(r, x));
+            worst = fmax(worst, cc_pieces_dist(&pieces, x));
             ++*hits;
         }
     }
+    cc_pieces_free(&pieces);
     return worst;
 }
 
