@@ -46,11 +46,16 @@ static int evaluate_curve(const pc_projector *self, double t)
         c->callback_failed = 1;
         return 0;
     }
-    c->a = vec3_sub(c->curve[0], d->eye);
-    const double len = vec3_norm(c->a);
-    if (!(len > 0.0) || !isfinite(len))
+    /* |A| scaled by its largest component first: an eye far out (1e200)
+     * keeps a finite length and direction */
+    const pc_vec3 a = vec3_sub(c->curve[0], d->eye);
+    const double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (!(m > 0.0) || !isfinite(m))
         return 0;
-    c->dir = vec3_scale(c->a, 1.0 / len);
+    const pc_vec3 scaled = vec3_scale(a, 1.0 / m);
+    const double scaled_len = vec3_norm(scaled);
+    c->dir = vec3_scale(scaled, 1.0 / scaled_len);
+    c->len = m * scaled_len;
     vec3_orthonormal_pair(c->dir, &c->e1, &c->e2);
     c->t = t;
     c->curve_valid = 1;
@@ -209,13 +214,14 @@ static int conical_derivatives(const pc_projector *self, double t, double u, dou
     out->det = area2 > 0.0 ? j.det / sqrt(area2) : 0.0;
     if (!regular)
         return 0;
-    const double a2 = vec3_dot(c->a, c->a);
-    const double mu = vec3_dot(vec3_sub(s[0], conical_data(self)->eye), c->a) / a2;
+    /* mu = (S - E).A / |A|^2 and mu' as in the file comment, written
+     * with D = A / |A| so that no |A|^2 overflows */
+    const double mu = vec3_dot(vec3_sub(s[0], conical_data(self)->eye), c->dir) / c->len;
     double r1[2], q1[2];
     frame_components(c, vec3_scale(p[1], mu), r1);
     jacobian_solve(&j, r1, q1);
     const pc_vec3 w1 = vec3_axpy(vec3_scale(s[1], q1[0]), q1[1], s[2]); /* Su u' + Sv v' */
-    const double dmu = vec3_dot(c->a, vec3_axpy(w1, -mu, p[1])) / a2;
+    const double dmu = vec3_dot(c->dir, vec3_axpy(w1, -mu, p[1])) / c->len;
     const pc_vec3 w2 = vec3_sub(vec3_add(vec3_scale(p[1], 2.0 * dmu), vec3_scale(p[2], mu)),
                                 second_form(s, q1[0], q1[1]));
     double r2[2], q2[2];
@@ -244,8 +250,10 @@ static double conical_residual(const pc_projector *self, double t, double u, dou
 static pc_vec3 conical_ray_dir(const pc_projector *self, const pc_proj_point *p)
 {
     const pc_vec3 a = vec3_sub(p->p, conical_data(self)->eye);
-    const double len = vec3_norm(a);
-    return len > 0.0 ? vec3_scale(a, 1.0 / len) : vec3(0.0, 0.0, 0.0);
+    const double m = fmax(fabs(a.x), fmax(fabs(a.y), fabs(a.z)));
+    if (!(m > 0.0) || !isfinite(m))
+        return vec3(0.0, 0.0, 0.0); /* no ray: lambda 0 */
+    return vec3_normalize(vec3_scale(a, 1.0 / m));
 }
 
 void pc_conical_init(pc_projector *proj, pc_conical_data *data, pc_conical_cache *cache,

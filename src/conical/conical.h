@@ -26,7 +26,8 @@ typedef struct pc_conical_cache {
     double t, u, v;
     pc_vec3 surf[6];           /* S, Su, Sv, Suu, Suv, Svv at (u, v) */
     pc_vec3 curve[3];          /* P, P', P'' at t */
-    pc_vec3 a, dir, e1, e2;    /* A = P - E, A / |A| and the frame (e1, e2, dir) */
+    pc_vec3 dir, e1, e2;       /* A / |A| (A = P - E) and the frame (e1, e2, dir) */
+    double len;                /* |A| */
     double guess_error;        /* sine of the angle of the last guess */
     int callback_failed;       /* a curve callback failed at some point */
 } pc_conical_cache;

@@ -319,6 +319,52 @@ static void test_curve_crossing(projcurve_surface *plane, int upward)
     projcurve_curve_destroy(c);
 }
 
+/* An eye far out along -Dir is the directional projection in the limit:
+ * the rays differ from Dir by at most ~|P| / distance (1e-7 at 1e7), so
+ * every conical vertex lies within eps_D (+ that) of the directional
+ * pieces; at 1e200 the ray frame is still finite (no |A|^2 formed). */
+static void test_far_eye(projcurve_surface *sphere)
+{
+    const double dir[3] = {0.0, 0.0, -1.0};
+    const double p0[3] = {-0.4, 0.3, 2.0}, p1[3] = {0.5, 0.2, 2.5};
+    projcurve_curve *c = make_segment(p0, p1);
+    projcurve_options *o = cc_options(EPS_D);
+    projcurve_result *rd = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, sphere, c, dir, o, &rd));
+    cc_pieces pieces;
+    CHECK(cc_pieces_sample(rd, &pieces));
+    const double distances[2] = {1e7, 1e200};
+    for (int k = 0; k < 2; ++k) {
+        const double eye[3] = {0.0, 0.0, distances[k]};
+        projcurve_result *r = NULL;
+        CHECK_OK(projcurve_project_conical(NULL, sphere, c, eye, o, &r));
+        CHECK(projcurve_result_branch_count(r) == projcurve_result_branch_count(rd));
+        double worst = 0.0;
+        for (size_t b = 0; b < projcurve_result_branch_count(r); ++b) {
+            size_t n = 0;
+            projcurve_result_branch_info(NULL, r, b, NULL, NULL, NULL, &n, NULL);
+            double *pts = malloc(3 * n * sizeof *pts);
+            projcurve_result_branch_points(NULL, r, b, n, pts, &n);
+            for (size_t j = 0; j < n; ++j) {
+                double x[3];
+                projcurve_surface_eval(NULL, sphere, pts[3 * j + 1], pts[3 * j + 2], 0, x);
+                worst = fmax(worst, cc_pieces_dist(&pieces, x));
+            }
+            free(pts);
+        }
+        printf("eye at %g: %zu branches (directional %zu), vertices off the directional "
+               "pieces %.3g\n",
+               distances[k], projcurve_result_branch_count(r),
+               projcurve_result_branch_count(rd), worst);
+        CHECK(worst <= 1.01 * EPS_D + 1e-6);
+        projcurve_result_destroy(r);
+    }
+    cc_pieces_free(&pieces);
+    projcurve_result_destroy(rd);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+}
+
 static void test_bad_eyes(projcurve_surface *plane)
 {
     const double p0[3] = {-0.5, -0.3, 1.0}, p1[3] = {0.4, 0.5, 1.3};
@@ -370,6 +416,7 @@ int main(void)
         test_circle_onto_plane(plane);
         test_sphere_front_and_back(sphere);
         test_eye_on_sphere(sphere);
+        test_far_eye(sphere);
         test_curve_crossing(plane, 0);
         test_curve_crossing(plane, 1);
         test_bad_eyes(plane);
