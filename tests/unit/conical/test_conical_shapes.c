@@ -365,6 +365,47 @@ static void test_far_eye(projcurve_surface *sphere)
     projcurve_curve_destroy(c);
 }
 
+/* The options the directional projection takes work here too: the
+ * cubic pcurves, the RK4 baseline, a constant parameter step, trace only,
+ * and a work limit (a partial result, LIMIT_REACHED). Front and back
+ * branches each time, every vertex on its ray in front of the curve. */
+static void test_options(projcurve_surface *sphere)
+{
+    const double eye[3] = {0.2, 0.1, 5.0};
+    const double p0[3] = {-0.1, 0.25, 3.0}, p1[3] = {0.25, 0.4, 3.1};
+    projcurve_curve *c = make_segment(p0, p1);
+    for (int variant = 0; variant < 5; ++variant) {
+        projcurve_options *o = cc_options(EPS_D);
+        projcurve_status expected = PROJCURVE_OK;
+        if (variant == 0)
+            projcurve_options_set_int(NULL, o, PROJCURVE_OPT_PCURVE_DEGREE, 3);
+        else if (variant == 1)
+            projcurve_options_set_int(NULL, o, PROJCURVE_OPT_METHOD, PROJCURVE_METHOD_RK4);
+        else if (variant == 2)
+            projcurve_options_set_double(NULL, o, PROJCURVE_OPT_PARAM_STEP, 0.01);
+        else if (variant == 3)
+            projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, 0);
+        else {
+            projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, 20);
+            expected = PROJCURVE_ERR_LIMIT_REACHED;
+        }
+        projcurve_result *r = NULL;
+        CHECK_STATUS(projcurve_project_conical(NULL, sphere, c, eye, o, &r), expected);
+        CHECK(r != NULL);
+        if (expected == PROJCURVE_OK)
+            CHECK(projcurve_result_branch_count(r) == 2);
+        double min_lambda = 0.0;
+        const double res = cc_vertex_ray_residual(r, sphere, c, eye, &min_lambda);
+        printf("options variant %d: %zu branches, ray residual %.3g\n", variant,
+               projcurve_result_branch_count(r), res);
+        CHECK(res <= VERTEX_TOL);
+        CHECK(projcurve_result_branch_count(r) == 0 || min_lambda > 0.0);
+        projcurve_result_destroy(r);
+        projcurve_options_destroy(o);
+    }
+    projcurve_curve_destroy(c);
+}
+
 static void test_bad_eyes(projcurve_surface *plane)
 {
     const double p0[3] = {-0.5, -0.3, 1.0}, p1[3] = {0.4, 0.5, 1.3};
@@ -417,6 +458,7 @@ int main(void)
         test_sphere_front_and_back(sphere);
         test_eye_on_sphere(sphere);
         test_far_eye(sphere);
+        test_options(sphere);
         test_curve_crossing(plane, 0);
         test_curve_crossing(plane, 1);
         test_bad_eyes(plane);
