@@ -406,6 +406,42 @@ static void test_options(projcurve_surface *sphere)
     projcurve_curve_destroy(c);
 }
 
+/* A line as a callback curve that fails (mode 1) or gives NaN (mode 2)
+ * beyond t = 0.6: the projection reports CALLBACK. Mode 0 never fails. */
+typedef struct failing_line {
+    pc_shape_line line;
+    int mode;
+} failing_line;
+
+static int failing_line_fn(void *user, double t, double out[9])
+{
+    failing_line *f = user;
+    const int rc = pc_shape_line_fn(&f->line, t, out);
+    if (t > 0.6 && f->mode == 1)
+        return 1;
+    if (t > 0.6 && f->mode == 2)
+        out[0] = NAN;
+    return rc;
+}
+
+static void test_failing_callback(projcurve_surface *plane)
+{
+    const double eye[3] = {0.1, 0.2, 3.0};
+    for (int mode = 0; mode < 3; ++mode) {
+        failing_line f = {{{-0.5, -0.3, 1.0}, {0.9, 0.8, 0.3}}, mode};
+        projcurve_curve *c = NULL;
+        CHECK_OK(projcurve_curve_create_callback(NULL, failing_line_fn, &f, 0.0, 1.0, &c));
+        projcurve_result *r = NULL;
+        const projcurve_status st = projcurve_project_conical(NULL, plane, c, eye, NULL, &r);
+        printf("callback curve, mode %d: %s\n", mode, projcurve_status_string(st));
+        CHECK(st == (mode == 0 ? PROJCURVE_OK : PROJCURVE_ERR_CALLBACK));
+        if (mode == 0)
+            CHECK(projcurve_result_branch_count(r) == 1);
+        projcurve_result_destroy(r);
+        projcurve_curve_destroy(c);
+    }
+}
+
 static void test_bad_eyes(projcurve_surface *plane)
 {
     const double p0[3] = {-0.5, -0.3, 1.0}, p1[3] = {0.4, 0.5, 1.3};
@@ -462,6 +498,7 @@ int main(void)
         test_curve_crossing(plane, 0);
         test_curve_crossing(plane, 1);
         test_bad_eyes(plane);
+        test_failing_callback(plane);
     }
     projcurve_surface_destroy(plane);
     projcurve_surface_destroy(sphere);
