@@ -632,7 +632,11 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
  * control net's box holds the eye in full (slower, not less complete). A
  * curve through the eye (its closest point to the eye within the model's
  * precision) is refused with PROJCURVE_ERR_SINGULAR (the ray of that point
- * has no direction), as is a curve that is a point.
+ * has no direction), as is a curve that is a point. Where the curve passes
+ * just above that precision from the eye, the rays of the points near it
+ * turn through 180 degrees within a t interval of about that distance: a
+ * branch that cannot be followed through it ends there with
+ * PROJCURVE_END_FAILED (see projcurve_result_failure_count).
  * Statuses: OK, LIMIT_REACHED, CANCELLED, NULL_ARGUMENT, NOT_FINITE (eye
  * not finite), OUT_OF_RANGE (tolerances, as directional), SINGULAR (the
  * curve is a point, or passes through the eye), CALLBACK, NO_MEMORY.

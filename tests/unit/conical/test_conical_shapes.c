@@ -442,6 +442,38 @@ static void test_failing_callback(projcurve_surface *plane)
     }
 }
 
+/* An eye just off the curve (a circle inside the sphere, the eye 1e-3 and
+ * 1e-9 above one of its points): the rays of the points near it turn
+ * through 180 degrees over a t interval of ~ the offset. At 1e-3 the
+ * branch is followed through; at 1e-9 it may end FAILED there (counted);
+ * either way every vertex returned lies on its ray, in front. */
+static void test_eye_near_curve(projcurve_surface *sphere)
+{
+    const double origin[3] = {0.0, 0.0, 0.0};
+    pc_shape_curve sh = pc_shape_circle(origin, 0.5);
+    projcurve_curve *c = pc_shape_curve_create(&sh);
+    pc_shape_curve_free(&sh);
+    double p[3];
+    projcurve_curve_eval(NULL, c, 0.3, 0, p);
+    const double offsets[2] = {1e-3, 1e-9};
+    for (int k = 0; k < 2; ++k) {
+        const double eye[3] = {p[0], p[1], p[2] + offsets[k]};
+        projcurve_result *r = NULL;
+        CHECK_OK(projcurve_project_conical(NULL, sphere, c, eye, NULL, &r));
+        double min_lambda = 0.0;
+        const double res = cc_vertex_ray_residual(r, sphere, c, eye, &min_lambda);
+        printf("eye %g off the curve: %zu branches, %zu failures, ray residual %.3g\n",
+               offsets[k], projcurve_result_branch_count(r), projcurve_result_failure_count(r),
+               res);
+        CHECK(projcurve_result_branch_count(r) >= 1);
+        CHECK(res <= VERTEX_TOL && min_lambda > 0.0);
+        if (k == 0)
+            CHECK(projcurve_result_failure_count(r) == 0);
+        projcurve_result_destroy(r);
+    }
+    projcurve_curve_destroy(c);
+}
+
 static void test_bad_eyes(projcurve_surface *plane)
 {
     const double p0[3] = {-0.5, -0.3, 1.0}, p1[3] = {0.4, 0.5, 1.3};
@@ -495,6 +527,7 @@ int main(void)
         test_eye_on_sphere(sphere);
         test_far_eye(sphere);
         test_options(sphere);
+        test_eye_near_curve(sphere);
         test_curve_crossing(plane, 0);
         test_curve_crossing(plane, 1);
         test_bad_eyes(plane);
