@@ -628,8 +628,9 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
  * for one born there) as along a direction.
  * The eye may lie on S or anywhere off the curve: the points of S at or
  * near the eye are behind the curve (lambda < 0) and never projections;
- * the jump detection then searches every ray that meets a patch whose
- * control net's box holds the eye in full (slower, not less complete). A
+ * a check of the jump detection whose ray meets the box of a patch whose
+ * control net's box holds the eye then always runs the full ray search
+ * (slower, not less complete). A
  * curve through the eye (its closest point to the eye within the model's
  * precision) is refused with PROJCURVE_ERR_SINGULAR (the ray of that point
  * has no direction), as is a curve that is a point. Where the curve passes
