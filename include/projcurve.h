@@ -612,6 +612,45 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
                                                              const projcurve_options *opts,
                                                              projcurve_result **out);
 
+/* Conical (central) projection of curve onto surface from the eye point
+ * eye: P(t) maps to the points of S on the ray from the eye through P(t),
+ * beyond P(t), S = P + lambda (P - eye) / |P - eye| with lambda >= 0 (the
+ * analogue of (q - p).Dir >= 0 of the directional projection: a branch ends
+ * where the curve meets S, PROJCURVE_END_CURVE_CROSSING, and one starts
+ * where it leaves it, PROJCURVE_START_CURVE_CROSSING; lambda = 0 counts).
+ * The same tracing, jump detection, tolerance control (eps_D, eps_T),
+ * verification, composition and compact forms as
+ * projcurve_project_directional, whose description of the result (partial
+ * results included) holds here with the ray of each point in place of Dir;
+ * where the curve runs along its own ray (a line through the eye) its
+ * projection is a point, treated as there. Where a ray is tangent to S a
+ * branch ends at the fold (PROJCURVE_END_SILHOUETTE, PROJCURVE_START_SILHOUETTE
+ * for one born there) as along a direction.
+ * The eye may lie on S or anywhere off the curve: the points of S at or
+ * near the eye are behind the curve (lambda < 0) and never projections;
+ * a check of the jump detection whose ray meets the box of a patch whose
+ * control net's box holds the eye then always runs the full ray search
+ * (slower, not less complete). A
+ * curve through the eye (its closest point to the eye within the model's
+ * precision) is refused with PROJCURVE_ERR_SINGULAR (the ray of that point
+ * has no direction), as is a curve that is a point. Where the curve passes
+ * just above that precision from the eye, the rays of the points near it
+ * turn through 180 degrees within a t interval of about that distance: a
+ * branch that cannot be followed through it ends there with
+ * PROJCURVE_END_FAILED (see projcurve_result_failure_count).
+ * Statuses: OK, LIMIT_REACHED, CANCELLED, NULL_ARGUMENT, NOT_FINITE (eye
+ * not finite), OUT_OF_RANGE (tolerances, as directional), SINGULAR (the
+ * curve is a point, or passes through the eye), CALLBACK, NO_MEMORY.
+ * *out is set for OK, LIMIT_REACHED and CANCELLED and owned by the caller
+ * (projcurve_result_destroy). Thread-safe for distinct contexts; the
+ * inputs are only read. */
+PROJCURVE_API projcurve_status projcurve_project_conical(projcurve_context *ctx,
+                                                         const projcurve_surface *surface,
+                                                         const projcurve_curve *curve,
+                                                         const double eye[3],
+                                                         const projcurve_options *opts,
+                                                         projcurve_result **out);
+
 /* Orthogonal projection of curve onto surface ([PW96], parametric form):
  * every continuous branch of foot points (minima, saddles and maxima of the
  * distance alike). A branch that reaches a centre of curvature of S ends
@@ -666,7 +705,7 @@ typedef enum projcurve_branch_start {
     PROJCURVE_START_BOUNDARY = 2,    /* enters through the boundary of S */
     PROJCURVE_START_SILHOUETTE = 3,  /* born at a fold where Dir is tangent to S
                                         (orthogonal: at a centre of curvature) */
-    PROJCURVE_START_CURVE_CROSSING = 4, /* directional: the curve meets S here;
+    PROJCURVE_START_CURVE_CROSSING = 4, /* directional, conical: the curve meets S here;
                                          before it the surface lies behind the
                                          curve ((q - p).Dir < 0) */
     PROJCURVE_START_FAILED = 5       /* resumes after a stretch the library could
@@ -683,7 +722,7 @@ typedef enum projcurve_branch_end {
     PROJCURVE_END_LIMIT = 4,         /* a size limit stopped it */
     PROJCURVE_END_FAILED = 5,        /* the corrector could not continue, or what
                                         follows could not be verified */
-    PROJCURVE_END_CURVE_CROSSING = 6 /* directional: the curve meets S here;
+    PROJCURVE_END_CURVE_CROSSING = 6 /* directional, conical: the curve meets S here;
                                         beyond it the surface lies behind the
                                         curve ((q - p).Dir < 0) */
 } projcurve_branch_end;

@@ -501,6 +501,7 @@ void pc_directional_init(pc_projector *proj, pc_directional_data *data,
     proj->residual = dir_residual;
     proj->data = data;
     proj->guess_error = &cache->guess_error;
+    proj->ray_dir = NULL; /* the fixed Dir of the trace configuration */
 }
 
 void pc_directional_use_bound_table(pc_directional_cache *cache, pc_span_bound_entry *storage,

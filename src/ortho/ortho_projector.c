@@ -468,4 +468,5 @@ void pc_ortho_projector_init(pc_projector *proj, pc_ortho_cache *cache,
     proj->residual = ortho_residual;
     proj->data = cache;
     proj->guess_error = NULL;
+    proj->ray_dir = NULL; /* no ray */
 }

@@ -21,7 +21,8 @@
 
 double pc_trace_lambda(const pc_tracer *tr, const pc_proj_point *p)
 {
-    return vec3_dot(vec3_sub(p->s, p->p), tr->dir);
+    const pc_vec3 dir = tr->proj->ray_dir != NULL ? tr->proj->ray_dir(tr->proj, p) : tr->dir;
+    return vec3_dot(vec3_sub(p->s, p->p), dir);
 }
 
 int pc_trace_behind(const pc_tracer *tr, const pc_proj_point *p)

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * What the kind of projection (directional, orthogonal) contributes to the
+ * What the kind of projection (directional, conical, orthogonal) contributes to the
  * generic machinery: the equations. trace/, refine/ and compose/ only talk to
  * this interface, so the orthogonal projection reuses them unchanged.
  *
@@ -96,6 +96,12 @@ struct pc_projector {
      * sine of the angle between Dir and S(guess) - P). The engine averages
      * it into the statistics; when NULL it uses residual() / model_size. */
     double *guess_error;
+    /* Optional (may be NULL: the fixed pc_trace_config.dir of the run): the
+     * unit direction of the ray at the point p (its t, s and p filled), for
+     * ray projections whose ray depends on t (central: from the eye
+     * through P(t)). The tracer measures lambda = (S - P).ray_dir(p) with
+     * it to find where the curve crosses S. */
+    pc_vec3 (*ray_dir)(const pc_projector *self, const pc_proj_point *p);
 };
 
 #endif /* PC_TRACE_PROJECTOR_H */

@@ -77,10 +77,11 @@ typedef struct pc_trace_config {
     double length_estimate;
     /* Scale for the engine's own tolerances (surface size). */
     double model_size;
-    /* ray != 0 (directional): the projection's points are those of F = 0
-     * in front of the curve, (S - P).dir >= 0 with dir the unit ray
-     * direction; a branch ends where the curve meets S and one is born
-     * there (PROJCURVE_END/START_CURVE_CROSSING). */
+    /* ray != 0 (directional, conical): the projection's points are those
+     * of F = 0 in front of the curve, (S - P).dir >= 0 with dir the unit
+     * ray direction (the projector's ray_dir at each point when it has
+     * one, else this dir); a branch ends where the curve meets S and one
+     * is born there (PROJCURVE_END/START_CURVE_CROSSING). */
     int ray;
     pc_vec3 dir;
 } pc_trace_config;
