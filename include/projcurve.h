@@ -266,8 +266,34 @@ typedef enum projcurve_option {
      * the largest degree Open CASCADE reads (Geom_BSplineCurve). Where
      * the projection is an affine image of a NURBS curve (onto a plane)
      * the compact curve keeps the curve's own degree when that is lower. */
-    PROJCURVE_OPT_CURVE_DEGREE = 16
+    PROJCURVE_OPT_CURVE_DEGREE = 16,
+    /* integer: which points of the projection are kept, [0, 1].
+     * PROJCURVE_HITS_ALL (0, the default): every hit of the ray (every
+     * foot point of the orthogonal projection, as FOOT_POINTS selects).
+     * PROJCURVE_HITS_NEAREST (1): at each t only the point nearest to
+     * P(t) (along the ray: the visible projection; orthogonally: the
+     * nearest foot point). A branch is cut exactly where another becomes
+     * nearer (the crossing of the two distances located to 1e-10 of the
+     * model size) or where a nearer one is born; the part kept ends with
+     * PROJCURVE_END_OCCLUDED and what becomes nearest again starts with
+     * PROJCURVE_START_VISIBLE. See docs/hits.md. */
+    PROJCURVE_OPT_HITS = 17,
+    /* double: keep only the points within this distance of P(t) (along
+     * the ray: lambda <= D; orthogonally |S - P(t)| <= D), model units,
+     * [0, 1e300]; 0 (the default) or +inf (the setter stores 0) = no
+     * limit. A branch is cut exactly where its distance reaches D (to
+     * 1e-10 of the model size): PROJCURVE_END_MAX_DISTANCE /
+     * PROJCURVE_START_MAX_DISTANCE. Combines with HITS. */
+    PROJCURVE_OPT_MAX_DISTANCE = 18,
+    /* integer: worker threads of the many-curve calls
+     * (projcurve_project_curves_directional, _orthogonal), [1, 1024],
+     * default 1 (the calling thread only). The results are the same bit
+     * for bit whatever the count. Single-curve calls ignore it. */
+    PROJCURVE_OPT_THREADS = 19
 } projcurve_option;
+
+#define PROJCURVE_HITS_ALL 0
+#define PROJCURVE_HITS_NEAREST 1
 
 #define PROJCURVE_FOOT_POINTS_MINIMA 0
 #define PROJCURVE_FOOT_POINTS_ALL 1
@@ -669,9 +695,13 @@ typedef enum projcurve_branch_start {
     PROJCURVE_START_CURVE_CROSSING = 4, /* directional: the curve meets S here;
                                          before it the surface lies behind the
                                          curve ((q - p).Dir < 0) */
-    PROJCURVE_START_FAILED = 5       /* resumes after a stretch the library could
+    PROJCURVE_START_FAILED = 5,      /* resumes after a stretch the library could
                                         not follow or not verify (the branch
                                         before it ends PROJCURVE_END_FAILED) */
+    PROJCURVE_START_VISIBLE = 8,     /* PROJCURVE_OPT_HITS nearest: becomes the
+                                        nearest point again here */
+    PROJCURVE_START_MAX_DISTANCE = 9 /* comes within PROJCURVE_OPT_MAX_DISTANCE
+                                        of P(t) here */
 } projcurve_branch_start;
 
 /* Why a branch ends. */
@@ -683,9 +713,13 @@ typedef enum projcurve_branch_end {
     PROJCURVE_END_LIMIT = 4,         /* a size limit stopped it */
     PROJCURVE_END_FAILED = 5,        /* the corrector could not continue, or what
                                         follows could not be verified */
-    PROJCURVE_END_CURVE_CROSSING = 6 /* directional: the curve meets S here;
+    PROJCURVE_END_CURVE_CROSSING = 6, /* directional: the curve meets S here;
                                         beyond it the surface lies behind the
                                         curve ((q - p).Dir < 0) */
+    PROJCURVE_END_OCCLUDED = 8,      /* PROJCURVE_OPT_HITS nearest: another
+                                        point becomes nearer here */
+    PROJCURVE_END_MAX_DISTANCE = 9   /* leaves PROJCURVE_OPT_MAX_DISTANCE of
+                                        P(t) here */
 } projcurve_branch_end;
 
 /* Statistics keys for projcurve_result_stat. */
@@ -848,6 +882,46 @@ PROJCURVE_API projcurve_status projcurve_result_branch_compact_pcurve(
 PROJCURVE_API projcurve_status projcurve_result_branch_compact_curve(
     projcurve_context *ctx, const projcurve_result *result, size_t branch,
     projcurve_curve **out);
+
+/* Seams and poles. On a surface closed in u (S(u0, v) = S(u1, v) for every
+ * v: a full cylinder, sphere, torus, surface of revolution) or in v, and
+ * through an edge of the domain collapsed to a point (a pole), a branch
+ * that crosses the seam or passes the pole is ONE branch (see
+ * docs/seams.md for the closure test, read on the control net to 1e-9 of
+ * the model size): its pcurve jumps there, at a recorded curve parameter
+ * t_k, by (du_k, dv_k) = (u, v) just after minus just before (by the
+ * period across a seam: du = -(u1 - u0) going from u1 to u0; at a pole
+ * in the coordinate the collapsed edge runs along, e.g. du = +-1/2 of
+ * the period through the pole of a sphere along a meridian). Where it
+ * jumps:
+ * - the traced points hold both sides: two vertices with the same t_k;
+ * - each composed piece lies on one side (no piece spans a jump), in
+ *   increasing t;
+ * - the compact pcurve is one B-spline in unwrapped (u, v): continuous
+ *   across t_k, where the (u, v) on S is the compact pcurve's value plus
+ *   the sum of (du_k, dv_k) over the jumps with t_k <= t;
+ * - the compact 3D curve and projcurve_result_branch_curve are one curve
+ *   across t_k.
+ * Before these joins such a branch came back as one ending with
+ * PROJCURVE_END_BOUNDARY and one starting with PROJCURVE_START_BOUNDARY
+ * at the same t and point; those reasons now remain only for the real
+ * boundary of S. */
+
+/* The number of jumps of a branch's pcurve (0 on a branch that crosses no
+ * seam or pole). Statuses: OK, NULL_ARGUMENT, INDEX. Thread-safe (the
+ * result is only read). */
+PROJCURVE_API projcurve_status projcurve_result_branch_seam_count(projcurve_context *ctx,
+                                                                  const projcurve_result *result,
+                                                                  size_t branch, size_t *count);
+
+/* Jump k (0 <= k < the count above, in increasing t) of a branch: the
+ * curve parameter *t and the jump (*du, *dv) of its pcurve there (see
+ * above). Outputs may be NULL. Statuses: OK, NULL_ARGUMENT, INDEX.
+ * Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_result_branch_seam(projcurve_context *ctx,
+                                                            const projcurve_result *result,
+                                                            size_t branch, size_t k, double *t,
+                                                            double *du, double *dv);
 
 /* What the fit of a branch's compact forms measured (outputs may be
  * NULL): *pcurve_fitted 1 for a fitted pcurve, 0 for the joined pieces'

@@ -14,6 +14,7 @@
 #include "directional/line_seeds.h"
 #include "fit/fit.h"
 #include "refine/refine.h"
+#include "seam/seam.h"
 #include "trace/result.h"
 #include "trace/trace.h"
 #include "verify/verify.h"
@@ -64,6 +65,7 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
     /* only verified branches are returned, also from a partial result */
     st = pc_verify_kept(ctx, &proj, p, r, st);
     st = pc_fit_stage(ctx, &proj, p, r, st);
+    st = pc_seam_stage(ctx, surface, curve, p, r, st);
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     if (finder.no_memory && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))

@@ -16,6 +16,7 @@
 #include "ortho/ortho_projector.h"
 #include "ortho/ortho_seeds.h"
 #include "refine/refine.h"
+#include "seam/seam.h"
 #include "trace/result.h"
 #include "trace/trace.h"
 #include "verify/verify.h"
@@ -75,6 +76,7 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
     /* only verified branches are returned, also from a partial result */
     status = pc_verify_kept(ctx, &proj, p, r, status);
     status = pc_fit_stage(ctx, &proj, p, r, status);
+    status = pc_seam_stage(ctx, surface, curve, p, r, status);
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */
     if (cache.callback_failed && pc_status_keeps_result(status))
