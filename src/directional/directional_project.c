@@ -13,6 +13,7 @@
 #include "directional/directional.h"
 #include "directional/line_seeds.h"
 #include "fit/fit.h"
+#include "hits/hits.h"
 #include "refine/refine.h"
 #include "seam/seam.h"
 #include "trace/result.h"
@@ -52,6 +53,12 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
             dir};
         r->stats.tol_distance = p->tol_distance;
         st = pc_trace_branches(ctx, &proj, p, &finder.base, &config, r);
+    }
+    /* the hits kept (nearest, within MAX_DISTANCE), before composing */
+    if (pc_status_keeps_result(st)) {
+        const projcurve_status hs = pc_hits_select(ctx, &proj, p, r);
+        if (hs != PROJCURVE_OK)
+            st = hs;
     }
     /* tolerance control and composition also on a result cut by
      * MAX_POINTS; not once the budget is spent (the traced polylines stay) */

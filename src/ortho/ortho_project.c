@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "fit/fit.h"
+#include "hits/hits.h"
 #include "ortho/implicit.h"
 #include "ortho/ortho_centres.h"
 #include "ortho/ortho_duplicates.h"
@@ -68,6 +69,10 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
         pc_ortho_drop_duplicates(&proj, r);
         name_singular_ends(r);
         r->stats.tol_distance = p->tol_distance;
+        /* the hits kept (nearest foot point, within MAX_DISTANCE) */
+        status = pc_hits_select(ctx, &proj, p, r);
+    }
+    if (status == PROJCURVE_OK) {
         if (p->compose && pc_budget_status(budget) == PROJCURVE_OK) {
             pc_budget_stage(budget, 0.5, PC_FIT_STAGE_FROM);
             status = pc_refine_and_compose(ctx, &proj, p, r);
