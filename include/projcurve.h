@@ -653,6 +653,41 @@ PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *c
                                                             const projcurve_options *opts,
                                                             projcurve_result **out);
 
+/* Many curves onto one surface in one call (a text, a wire): curves[i]
+ * (n of them) projected along dir (as projcurve_project_directional) or
+ * orthogonally (as projcurve_project_orthogonal), each with the same
+ * options, results[i] receiving the result of curves[i] exactly as the
+ * single-curve call would give it (NULL where that call keeps none:
+ * every status but OK, LIMIT_REACHED and CANCELLED). opts may be NULL.
+ * Each curve is its own call: TIME_LIMIT and MAX_WORK apply per curve,
+ * the progress callback reports each curve's fractions.
+ * Threads: PROJCURVE_OPT_THREADS (default 1) workers, the calling thread
+ * among them, share out the curves; the results are the same bit for bit
+ * whatever the count (each curve is projected independently, every worker
+ * with its own state). With more than one, curve callbacks and the
+ * progress callback run on the worker threads: curve callbacks
+ * concurrently (they must be thread-safe), the progress callback never
+ * concurrently (the call serialises it).
+ * Per-curve failures: statuses[i] (statuses may be NULL) gets the status
+ * of curve i (a NULL curves[i] is NULL_ARGUMENT there, the other curves
+ * are still projected). The call returns OK when every curve gave OK;
+ * otherwise the status of the lowest-index curve that did not, ctx
+ * recording that curve's message as "curve i: <message>". Statuses of the
+ * call itself (nothing projected, results untouched): NULL_ARGUMENT (ctx,
+ * surface, dir, or curves / results with n > 0), NOT_FINITE,
+ * ZERO_DIRECTION, OUT_OF_RANGE (options), NO_MEMORY. n = 0 is OK.
+ * Thread-safe for distinct contexts; the inputs are only read. */
+PROJCURVE_API projcurve_status projcurve_project_curves_directional(
+    projcurve_context *ctx, const projcurve_surface *surface,
+    const projcurve_curve *const *curves, size_t n, const double dir[3],
+    const projcurve_options *opts, projcurve_result **results, projcurve_status *statuses);
+
+/* The same for the orthogonal projection (see above). */
+PROJCURVE_API projcurve_status projcurve_project_curves_orthogonal(
+    projcurve_context *ctx, const projcurve_surface *surface,
+    const projcurve_curve *const *curves, size_t n, const projcurve_options *opts,
+    projcurve_result **results, projcurve_status *statuses);
+
 /* An implicit surface f(x) = 0: fills *value, grad[3] and hess[9] (row-major)
  * at x and returns 0; any other return value is a failure. */
 typedef int (*projcurve_implicit_fn)(void *user, const double x[3], double *value,
