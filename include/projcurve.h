@@ -283,7 +283,8 @@ typedef enum projcurve_option {
      * [0, 1e300]; 0 (the default) or +inf (the setter stores 0) = no
      * limit. A branch is cut exactly where its distance reaches D (to
      * 1e-10 of the model size): PROJCURVE_END_MAX_DISTANCE /
-     * PROJCURVE_START_MAX_DISTANCE. Combines with HITS. */
+     * PROJCURVE_START_MAX_DISTANCE. Combines with HITS. Both are ignored
+     * by projcurve_project_orthogonal_implicit (one branch). */
     PROJCURVE_OPT_MAX_DISTANCE = 18,
     /* integer: worker threads of the many-curve calls
      * (projcurve_project_curves_directional, _orthogonal), [1, 1024],
@@ -642,10 +643,10 @@ PROJCURVE_API projcurve_status projcurve_project_directional(projcurve_context *
  * every continuous branch of foot points (minima, saddles and maxima of the
  * distance alike). A branch that reaches a centre of curvature of S ends
  * there with PROJCURVE_END_CURVATURE_CENTRE; one born there starts with
- * PROJCURVE_START_SILHOUETTE. An edge of the domain collapsed to a point
- * (the pole of a NURBS sphere, the apex of a cone) is a boundary: a branch
- * through it ends there with PROJCURVE_END_BOUNDARY and continues as one
- * starting with PROJCURVE_START_BOUNDARY. Same result and statuses as the
+ * PROJCURVE_START_SILHOUETTE. A branch through an edge of the domain
+ * collapsed to a point (the pole of a NURBS sphere) or across the seam of
+ * a closed surface stays one branch whose pcurve jumps there (see
+ * projcurve_result_branch_seam_count). Same result and statuses as the
  * directional projection (ZERO_DIRECTION aside), CANCELLED included. */
 PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
                                                             const projcurve_surface *surface,
