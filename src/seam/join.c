@@ -237,3 +237,12 @@ projcurve_status pc_seam_stage(projcurve_context *ctx, const projcurve_surface *
     const projcurve_status js = pc_seam_join(ctx, surface, curve, p, r);
     return js != PROJCURVE_OK ? js : st;
 }
+
+void pc_seam_unwrap_shift(const pc_branch *b, double t, double shift[2])
+{
+    shift[0] = shift[1] = 0.0;
+    for (size_t k = 0; k < b->n_seams && b->seams[k].t <= t; ++k) {
+        shift[0] += b->seams[k].du;
+        shift[1] += b->seams[k].dv;
+    }
+}

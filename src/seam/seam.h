@@ -74,4 +74,8 @@ projcurve_status pc_seam_stage(projcurve_context *ctx, const projcurve_surface *
 projcurve_status pc_seam_join_compact(projcurve_context *ctx, pc_branch *b,
                                       const pc_branch *next, const double shift[2]);
 
+/* The sum of b's jumps at or before t into shift: a point of b at t in the
+ * domain minus shift is its unwrapped (u, v). */
+void pc_seam_unwrap_shift(const pc_branch *b, double t, double shift[2]);
+
 #endif /* PC_SEAM_SEAM_H */

@@ -204,6 +204,16 @@ static void check_compact(projcurve_context *ctx, const scenario *sc, const proj
                 worst_q, worst_c, eps_d);
     CHECK(worst_q <= eps_d);
     CHECK(worst_c <= 2.0 * eps_d);
+    /* the pieces joined in space: one curve, exactly on S (rounding) */
+    projcurve_curve *whole = NULL;
+    CHECK_OK(projcurve_result_branch_curve(ctx, r, b, &whole));
+    for (int i = 0; whole != NULL && i <= 40; ++i) {
+        double x[3], g[3];
+        CHECK_OK(projcurve_curve_eval(ctx, whole, range[0] + (range[1] - range[0]) * i / 40.0,
+                                      0, x));
+        CHECK_NEAR(implicit_at(sc->shape, x, g), 0.0, POINT_TOL);
+    }
+    projcurve_curve_destroy(whole);
     projcurve_curve_destroy(pq);
     projcurve_curve_destroy(c3);
 }
@@ -256,6 +266,12 @@ static void run(const scenario *sc)
         fprintf(stderr, "%s: %zu branches, %zu jumps\n", sc->name, nb, jumps);
     CHECK(nb == sc->branches);
     CHECK(jumps == sc->jumps);
+    /* both IGES forms take the joined branches (unwrapped pcurves) */
+    projcurve_iges_writer *w = NULL;
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, joined));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, w, s, joined));
+    projcurve_iges_writer_destroy(w);
     /* the tracer's own output: one more branch per jump */
     CHECK(projcurve_result_branch_count(split) == nb + jumps);
     double t = 0, du = 0, dv = 0;
