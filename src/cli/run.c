@@ -161,6 +161,8 @@ const char *cli_start_name(projcurve_branch_start s)
     case PROJCURVE_START_SILHOUETTE: return "silhouette";
     case PROJCURVE_START_CURVE_CROSSING: return "curve_crossing";
     case PROJCURVE_START_FAILED: return "failed";
+    case PROJCURVE_START_VISIBLE: return "visible";
+    case PROJCURVE_START_MAX_DISTANCE: return "max_distance";
     }
     return "unknown";
 }
@@ -175,6 +177,8 @@ const char *cli_end_name(projcurve_branch_end e)
     case PROJCURVE_END_LIMIT: return "limit";
     case PROJCURVE_END_FAILED: return "failed";
     case PROJCURVE_END_CURVE_CROSSING: return "curve_crossing";
+    case PROJCURVE_END_OCCLUDED: return "occluded";
+    case PROJCURVE_END_MAX_DISTANCE: return "max_distance";
     }
     return "unknown";
 }
