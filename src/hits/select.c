@@ -147,17 +147,19 @@ static projcurve_status push_crossings(projcurve_context *ctx, const pc_gap_fn *
     return st;
 }
 
-/* Whether b (index bi) is kept at t. Ties within tol go to the lower index. */
+/* Whether b (index bi) is kept at t against the original branches (the
+ * first n0; the parts appended after them copy those). Ties within tol go
+ * to the lower index. */
 static projcurve_status kept_at(const pc_projector *proj, const pc_params *p,
-                                const projcurve_result *r, size_t bi, double t, double tol,
-                                int *keep)
+                                const projcurve_result *r, size_t n0, size_t bi, double t,
+                                double tol, int *keep)
 {
     double uv[2], db;
     projcurve_status st = pc_hits_distance(proj, &r->branches[bi], t, uv, &db);
     *keep = st == PROJCURVE_OK && (p->max_distance <= 0.0 || db <= p->max_distance);
     if (p->hits != PROJCURVE_HITS_NEAREST)
         return st;
-    for (size_t j = 0; st == PROJCURVE_OK && *keep && j < r->n_branches; ++j) {
+    for (size_t j = 0; st == PROJCURVE_OK && *keep && j < n0; ++j) {
         const pc_branch *o = &r->branches[j];
         if (j == bi || o->n_points < 2 || t < t_first(o) || t > t_last(o))
             continue;
@@ -175,10 +177,10 @@ static int cut_order(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
-/* The candidate cuts of branch bi, sorted. */
+/* The candidate cuts of branch bi against the first n0 branches, sorted. */
 static projcurve_status gather_cuts(projcurve_context *ctx, const pc_projector *proj,
-                                    const pc_params *p, const projcurve_result *r, size_t bi,
-                                    double tol, pc_cut_list *cuts)
+                                    const pc_params *p, const projcurve_result *r, size_t n0,
+                                    size_t bi, double tol, pc_cut_list *cuts)
 {
     const pc_branch *b = &r->branches[bi];
     const double lo = t_first(b), hi = t_last(b);
@@ -189,7 +191,7 @@ static projcurve_status gather_cuts(projcurve_context *ctx, const pc_projector *
         const pc_gap_fn f = {proj, b, NULL, p->max_distance};
         st = push_crossings(ctx, &f, lo, hi, tol, cuts);
     }
-    for (size_t j = 0; p->hits == PROJCURVE_HITS_NEAREST && j < r->n_branches; ++j) {
+    for (size_t j = 0; p->hits == PROJCURVE_HITS_NEAREST && j < n0; ++j) {
         const pc_branch *o = &r->branches[j];
         if (st != PROJCURVE_OK || j == bi || o->n_points < 2)
             continue;
@@ -254,13 +256,13 @@ static projcurve_status add_part(projcurve_context *ctx, const pc_projector *pro
     return st;
 }
 
-/* The kept parts of branch bi appended to r. */
+/* The kept parts of branch bi (one of the first n0) appended to r. */
 static projcurve_status split_branch(projcurve_context *ctx, const pc_projector *proj,
-                                     const pc_params *p, projcurve_result *r, size_t bi,
-                                     double tol)
+                                     const pc_params *p, projcurve_result *r, size_t n0,
+                                     size_t bi, double tol)
 {
     pc_cut_list cuts = {0};
-    projcurve_status st = gather_cuts(ctx, proj, p, r, bi, tol, &cuts);
+    projcurve_status st = gather_cuts(ctx, proj, p, r, n0, bi, tol, &cuts);
     const double span = t_last(&r->branches[bi]) - t_first(&r->branches[bi]);
     size_t run_start = cuts.count; /* index of the cut opening the current kept run */
     for (size_t k = 0; st == PROJCURVE_OK && k + 1 < cuts.count; ++k) {
@@ -268,7 +270,7 @@ static projcurve_status split_branch(projcurve_context *ctx, const pc_projector 
         if (!(c - a > 1e-12 * span))
             continue; /* coincident candidates: no interval between */
         int keep = 0;
-        st = kept_at(proj, p, r, bi, 0.5 * (a + c), tol, &keep);
+        st = kept_at(proj, p, r, n0, bi, 0.5 * (a + c), tol, &keep);
         if (st != PROJCURVE_OK)
             break;
         if (keep && run_start == cuts.count)
@@ -294,7 +296,7 @@ projcurve_status pc_hits_select(projcurve_context *ctx, const pc_projector *proj
     projcurve_status st = PROJCURVE_OK;
     for (size_t i = 0; st == PROJCURVE_OK && i < n0; ++i)
         if (r->branches[i].n_points >= 2)
-            st = split_branch(ctx, proj, p, r, i, tol);
+            st = split_branch(ctx, proj, p, r, n0, i, tol);
     if (st == PROJCURVE_ERR_CALLBACK)
         st = pc_fail(ctx, st, "the curve callback failed while selecting the hits");
     /* on failure the parts made so far go, the originals stay */
