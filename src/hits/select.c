@@ -23,7 +23,11 @@
  * the rounding of the distances). */
 #define PC_HITS_ROOT_MAX_ITER 100
 
-/* The shortest part kept, as a fraction of the curve's domain. */
+/* The shortest part kept, and the shortest interval between candidate
+ * cuts or overlap of two branches considered, as a fraction of the
+ * curve's domain: shorter ones are the rounding of a tie where two
+ * branches meet (born at one point of a fold, or the two sides of a seam,
+ * whose exits are located to ~1e-12). */
 #define PC_HITS_MIN_PART 1e-9
 
 int pc_hits_active(const pc_params *p)
@@ -184,6 +188,7 @@ static projcurve_status gather_cuts(projcurve_context *ctx, const pc_projector *
 {
     const pc_branch *b = &r->branches[bi];
     const double lo = t_first(b), hi = t_last(b);
+    const double min_len = PC_HITS_MIN_PART * (proj->curve->t1 - proj->curve->t0);
     projcurve_status st = push_cut(ctx, cuts, lo, 0);
     if (st == PROJCURVE_OK)
         st = push_cut(ctx, cuts, hi, 0);
@@ -196,8 +201,8 @@ static projcurve_status gather_cuts(projcurve_context *ctx, const pc_projector *
         if (st != PROJCURVE_OK || j == bi || o->n_points < 2)
             continue;
         const double a = fmax(lo, t_first(o)), c = fmin(hi, t_last(o));
-        if (!(c > a))
-            continue;
+        if (!(c - a > min_len))
+            continue; /* touching (a seam: one ends where the other starts) */
         st = push_cut(ctx, cuts, a, 0);
         if (st == PROJCURVE_OK)
             st = push_cut(ctx, cuts, c, 0);
@@ -263,11 +268,11 @@ static projcurve_status split_branch(projcurve_context *ctx, const pc_projector 
 {
     pc_cut_list cuts = {0};
     projcurve_status st = gather_cuts(ctx, proj, p, r, n0, bi, tol, &cuts);
-    const double span = t_last(&r->branches[bi]) - t_first(&r->branches[bi]);
+    const double min_len = PC_HITS_MIN_PART * (proj->curve->t1 - proj->curve->t0);
     size_t run_start = cuts.count; /* index of the cut opening the current kept run */
     for (size_t k = 0; st == PROJCURVE_OK && k + 1 < cuts.count; ++k) {
         const double a = cuts.items[k].t, c = cuts.items[k + 1].t;
-        if (!(c - a > 1e-12 * span))
+        if (!(c - a > min_len))
             continue; /* coincident candidates: no interval between */
         int keep = 0;
         st = kept_at(proj, p, r, n0, bi, 0.5 * (a + c), tol, &keep);

@@ -285,8 +285,43 @@ static void run(const scenario *sc)
     projcurve_context_destroy(ctx);
 }
 
+/* The visible projection of the cylinder (PROJCURVE_OPT_HITS nearest):
+ * the front hit alone, still one branch across the seam. */
+static void test_nearest_across_seam(void)
+{
+    const scenario sc = {"cylinder, nearest", CYLINDER, {3, -0.8, 0.5}, {3, 0.8, 1.5}, 0,
+                         {-1, 0, 0}, 1, 1, 1, {{0.5, -1, 0}}, SEAM_JUMP_TOL};
+    projcurve_surface *s = make_surface(sc.shape);
+    projcurve_curve *c = make_line(&sc);
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_HITS, PROJCURVE_HITS_NEAREST));
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, s, c, sc.dir, o, &r));
+    size_t n = 0;
+    CHECK(projcurve_result_branch_count(r) == 1);
+    CHECK_OK(projcurve_result_branch_seam_count(NULL, r, 0, &n));
+    CHECK(n == 1);
+    size_t np = 0;
+    CHECK_OK(projcurve_result_branch_points(NULL, r, 0, 0, NULL, &np));
+    double *pts = malloc(3 * np * sizeof *pts);
+    CHECK_OK(projcurve_result_branch_points(NULL, r, 0, np, pts, &np));
+    for (size_t i = 0; i < np; ++i) {
+        double x[3];
+        CHECK_OK(projcurve_surface_eval(NULL, s, pts[3 * i + 1], pts[3 * i + 2], 0, x));
+        CHECK(x[0] > 0.0); /* the front half */
+        check_vertex(NULL, &sc, s, c, pts[3 * i], pts + 3 * i + 1);
+    }
+    free(pts);
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+}
+
 int main(void)
 {
+    test_nearest_across_seam();
     /* the cylinder along -x: the front hit crosses the seam at y = 0 (from
      * u ~ 1 to u ~ 0), the back one does not */
     const scenario cyl_dir = {"cylinder, directional", CYLINDER, {3, -0.8, 0.5}, {3, 0.8, 1.5},
