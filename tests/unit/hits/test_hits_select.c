@@ -4,6 +4,8 @@
  * - two walls, front z = 1 and back z = -1 of one U-shaped bilinear
  *   surface, seen along -z: all hits give two branches, the nearest only
  *   the front one, whole;
+ * - the same walls orthogonally from a line between them: the nearest foot
+ *   switches walls at the analytic t = 1/2 (equidistant);
  * - two crossing sheets z = -x and z = x / 2 (one self-intersecting
  *   surface) along -z: the nearest switches sheets at x = 0, t = 1/2
  *   exactly, located to 1e-10 of the model size (the distances differ by
@@ -118,6 +120,42 @@ static void test_two_walls(void)
     check_branch_z(s, near, 0, 1.0);
     projcurve_result_destroy(all);
     projcurve_result_destroy(near);
+    projcurve_curve_destroy(c);
+    projcurve_surface_destroy(s);
+}
+
+/* Orthogonally between the two walls: the nearest foot point switches
+ * from the front wall to the back one where P(t) is equidistant, z = 0,
+ * t = 1/2 (the side wall x = 1 is 1.5 away). */
+static void test_walls_orthogonal(void)
+{
+    const double xz[4][2] = {{-1, 1}, {1, 1}, {1, -1}, {-1, -1}};
+    projcurve_surface *s = bilinear_u(xz, 4);
+    const double p0[3] = {-0.5, 0.2, 0.8}, p1[3] = {-0.5, 0.2, -0.8};
+    projcurve_curve *c = line(p0, p1);
+    projcurve_options *o = options(PROJCURVE_HITS_NEAREST, 0.0);
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_orthogonal(NULL, s, c, o, &r));
+    CHECK(projcurve_result_branch_count(r) == 2);
+    if (projcurve_result_branch_count(r) == 2) {
+        double r0[2], r1[2];
+        projcurve_branch_start s0, s1;
+        projcurve_branch_end e0, e1;
+        info(r, 0, r0, &s0, &e0);
+        info(r, 1, r1, &s1, &e1);
+        const int front_first = r0[0] < r1[0];
+        const double *a = front_first ? r0 : r1, *b = front_first ? r1 : r0;
+        CHECK((front_first ? e0 : e1) == PROJCURVE_END_OCCLUDED);
+        CHECK((front_first ? s1 : s0) == PROJCURVE_START_VISIBLE);
+        CHECK_NEAR(a[0], 0.0, 0.0);
+        CHECK_NEAR(a[1], 0.5, CUT_T_TOL);
+        CHECK_NEAR(b[0], 0.5, CUT_T_TOL);
+        CHECK_NEAR(b[1], 1.0, 0.0);
+        check_branch_z(s, r, front_first ? 0 : 1, 1.0);
+        check_branch_z(s, r, front_first ? 1 : 0, -1.0);
+    }
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
     projcurve_curve_destroy(c);
     projcurve_surface_destroy(s);
 }
@@ -356,6 +394,7 @@ int main(void)
     test_options();
     test_two_walls();
     test_crossing_sheets();
+    test_walls_orthogonal();
     test_max_distance();
     test_bump(0);
     test_bump(1);
