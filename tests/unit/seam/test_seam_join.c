@@ -21,6 +21,7 @@
 #include "directional/directional_project.h"
 #include "geom/surface.h"
 #include "ortho/ortho_project.h"
+#include "seam/seam.h"
 #include "shapes.h"
 
 /* Vertices are exact points: the corrector's 1e-12 of the size, checked
@@ -319,8 +320,47 @@ static void test_nearest_across_seam(void)
     projcurve_surface_destroy(s);
 }
 
+/* The closure test on the control net (seam.h). */
+static void test_closure(void)
+{
+    const double tol = 1e-9;
+    const struct {
+        shape_kind kind;
+        int cu, cv;
+        unsigned collapsed;
+    } want[] = {{CYLINDER, 1, 0, 0},
+                {SPHERE, 1, 0, PC_SIDE_V0 | PC_SIDE_V1},
+                {TORUS, 1, 1, 0}};
+    for (size_t i = 0; i < 3; ++i) {
+        projcurve_surface *s = make_surface(want[i].kind);
+        pc_closure cl;
+        pc_surface_closure(&s->nurbs, tol * s->size, &cl);
+        CHECK(cl.closed_u == want[i].cu && cl.closed_v == want[i].cv);
+        CHECK(cl.collapsed == want[i].collapsed);
+        projcurve_surface_destroy(s);
+    }
+    /* the plane: open; its seam rows 2 apart */
+    pc_shape_surface plane = pc_shape_plane(3, 3, 2, 2);
+    projcurve_surface *p = pc_shape_surface_create(&plane);
+    pc_closure cl;
+    pc_surface_closure(&p->nurbs, tol * p->size, &cl);
+    CHECK(!cl.closed_u && !cl.closed_v && cl.collapsed == 0);
+    projcurve_surface_destroy(p);
+    pc_shape_surface_free(&plane);
+    /* a cylinder whose seam rows have the same points but one weight
+     * changed: the edge curves differ (weights not proportional) */
+    pc_shape_surface cyl = pc_shape_cylinder(1.0, 2.0);
+    cyl.weights[9] *= 2.0; /* pole (0, 1): u fastest, 9 per row */
+    projcurve_surface *c = pc_shape_surface_create(&cyl);
+    pc_surface_closure(&c->nurbs, tol * c->size, &cl);
+    CHECK(!cl.closed_u);
+    projcurve_surface_destroy(c);
+    pc_shape_surface_free(&cyl);
+}
+
 int main(void)
 {
+    test_closure();
     test_nearest_across_seam();
     /* the cylinder along -x: the front hit crosses the seam at y = 0 (from
      * u ~ 1 to u ~ 0), the back one does not */
