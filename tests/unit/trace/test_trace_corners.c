@@ -1,0 +1,328 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * Curves with corners: polylines (degree 1) and cubics with a double (C1)
+ * or triple (C0) interior knot, projected along a ray and orthogonally onto
+ * a plane, the bumpy bicubic case and the bumpy "hover" case. The
+ * projection of such a curve is continuous at each break of P, so each
+ * connected stretch must come out as one branch, with no failure, a traced
+ * vertex exactly at every break (t equal to the knot), no composed piece
+ * straddling a C0 break, and the compact curves passing through the
+ * projected vertex.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "projcurve.h"
+
+#define MAX_KNOTS 64
+/* The plane z = 0 is spanned by a bilinear patch over [0, 100]^2 with
+ * (u, v) = (x, y): the projection of P along -z or orthogonally is
+ * (P.x, P.y), so the traced vertices are exact to the corrector's tolerance
+ * (1e-9 of the model size and rounding: 1e-9 here). */
+#define PLANE_TOL 1e-9
+/* eps_D of the calls (model units, the bumpy case's manifest value). */
+#define EPS_D 1e-3
+
+typedef struct test_curve {
+    const char *name;
+    int degree;
+    size_t n_ctrl;
+    double ctrl[3 * MAX_KNOTS];
+    double knots[MAX_KNOTS];
+} test_curve;
+
+/* A zigzag polyline of n segments over [x0, x1] x [y0, y1] at height z,
+ * knots 0 0 1 .. n n (a corner at each interior integer). */
+static void polyline(test_curve *c, const char *name, size_t n, double x0, double x1,
+                     double y0, double y1, double z)
+{
+    c->name = name;
+    c->degree = 1;
+    c->n_ctrl = n + 1;
+    for (size_t k = 0; k <= n; ++k) {
+        c->ctrl[3 * k] = x0 + (x1 - x0) * (double)k / (double)n;
+        c->ctrl[3 * k + 1] = (k % 2 == 0) ? y0 : y1;
+        c->ctrl[3 * k + 2] = z + 0.5 * (double)(k % 3);
+        c->knots[k + 1] = (double)k;
+    }
+    c->knots[0] = 0.0;
+    c->knots[n + 2] = (double)n;
+}
+
+/* A cubic with one interior knot 1 of multiplicity m (2: C1, 3: C0) over
+ * [0, 2]; m = 3 puts the middle control point on the curve (the corner). */
+static void cubic_break(test_curve *c, const char *name, int m, double x0, double x1,
+                        double y0, double y1, double z)
+{
+    c->name = name;
+    c->degree = 3;
+    c->n_ctrl = (size_t)(4 + m);
+    size_t nk = 0;
+    for (int k = 0; k < 4; ++k)
+        c->knots[nk++] = 0.0;
+    for (int k = 0; k < m; ++k)
+        c->knots[nk++] = 1.0;
+    for (int k = 0; k < 4; ++k)
+        c->knots[nk++] = 2.0;
+    for (size_t k = 0; k < c->n_ctrl; ++k) {
+        const double s = (double)k / (double)(c->n_ctrl - 1);
+        c->ctrl[3 * k] = x0 + (x1 - x0) * s;
+        /* a tent in y: the corner points up, the rest wiggle */
+        c->ctrl[3 * k + 1] = y0 + (y1 - y0) * (1.0 - fabs(2.0 * s - 1.0)) + 3.0 * (double)(k % 2);
+        c->ctrl[3 * k + 2] = z;
+    }
+}
+
+static projcurve_curve *make_curve(const test_curve *c)
+{
+    projcurve_curve *out = NULL;
+    CHECK_OK(projcurve_curve_create_nurbs(NULL, c->degree, c->n_ctrl, c->ctrl, NULL, c->knots,
+                                          &out));
+    return out;
+}
+
+/* The interior knots of c where P is C0 or C1 (multiplicity >= degree - 1),
+ * and which of them are C0. */
+static size_t breaks_of(const test_curve *c, double *at, int *c0)
+{
+    size_t n = 0;
+    const size_t nk = c->n_ctrl + (size_t)c->degree + 1;
+    for (size_t k = (size_t)c->degree + 1; k < c->n_ctrl;) {
+        size_t m = 1;
+        while (k + m < c->n_ctrl && c->knots[k + m] == c->knots[k])
+            ++m;
+        (void)nk;
+        if ((int)m >= c->degree - 1 || c->degree == 1) {
+            at[n] = c->knots[k];
+            c0[n] = (int)m >= c->degree;
+            ++n;
+        }
+        k += m;
+    }
+    return n;
+}
+
+static projcurve_surface *plane(void)
+{
+    const double ctrl[12] = {0, 0, 0, 100, 0, 0, 0, 100, 0, 100, 100, 0};
+    const double knots[4] = {0, 0, 100, 100};
+    projcurve_surface *s = NULL;
+    CHECK_OK(projcurve_surface_create_nurbs(NULL, 1, 1, 2, 2, ctrl, NULL, knots, knots, &s));
+    return s;
+}
+
+static projcurve_model *read_case(const char *name)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/cases/%s.igs", PC_TEST_DATA_DIR, name);
+    projcurve_model *m = NULL;
+    CHECK_OK(projcurve_model_read_file(NULL, path, &m));
+    return m;
+}
+
+typedef enum kind { DIRECTIONAL, ORTHOGONAL } kind;
+
+static projcurve_result *project(kind k, const projcurve_surface *s, const projcurve_curve *c)
+{
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, EPS_D));
+    if (getenv("NOCOMPOSE"))
+        CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, 0));
+    projcurve_result *r = NULL;
+    const double down[3] = {0, 0, -1};
+    if (k == DIRECTIONAL)
+        CHECK_OK(projcurve_project_directional(NULL, s, c, down, o, &r));
+    else
+        CHECK_OK(projcurve_project_orthogonal(NULL, s, c, o, &r));
+    projcurve_options_destroy(o);
+    return r;
+}
+
+/* Bezier point of a piece at s in [0, 1] (de Casteljau, rational). */
+static void piece_point(int degree, const double *ctrl, const double *w, double s, double x[3])
+{
+    double h[PROJCURVE_MAX_PIECE_POINTS][4];
+    for (int i = 0; i <= degree; ++i) {
+        for (int m = 0; m < 3; ++m)
+            h[i][m] = ctrl[3 * i + m] * w[i];
+        h[i][3] = w[i];
+    }
+    for (int r = 1; r <= degree; ++r)
+        for (int i = 0; i <= degree - r; ++i)
+            for (int m = 0; m < 4; ++m)
+                h[i][m] = (1.0 - s) * h[i][m] + s * h[i + 1][m];
+    for (int m = 0; m < 3; ++m)
+        x[m] = h[0][m] / h[0][3];
+}
+
+static void curve_point(const projcurve_curve *c, double t, double x[3])
+{
+    double d[9];
+    CHECK_OK(projcurve_curve_eval(NULL, c, t, 0, d));
+    memcpy(x, d, 3 * sizeof *x);
+}
+
+/* Squared distance in (x, y) of y from P(t): the distance of y from the
+ * ray P(t) - lambda z. */
+static double ray_distance2(const projcurve_curve *c, double t, const double y[3])
+{
+    double x[3];
+    curve_point(c, t, x);
+    return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]);
+}
+
+/* Distance of y from the nearest ray of P over [lo, hi] (the brute-force
+ * oracle of a piece on the plane): the best of 64 samples, then a golden
+ * section search over its two neighbouring intervals (100 passes shrink
+ * them by 0.618^100, far below rounding). */
+static double ray_distance(const projcurve_curve *c, double lo, double hi, const double y[3])
+{
+    const int n = 64;
+    int best = 0;
+    double best_d = INFINITY;
+    for (int k = 0; k <= n; ++k) {
+        const double d = ray_distance2(c, lo + (hi - lo) * k / n, y);
+        if (d < best_d) {
+            best_d = d;
+            best = k;
+        }
+    }
+    double a = lo + (hi - lo) * (best > 0 ? best - 1 : 0) / n;
+    double b = lo + (hi - lo) * (best < n ? best + 1 : n) / n;
+    const double g = 0.5 * (sqrt(5.0) - 1.0);
+    for (int pass = 0; pass < 100; ++pass) {
+        const double m1 = b - g * (b - a), m2 = a + g * (b - a);
+        if (ray_distance2(c, m1, y) < ray_distance2(c, m2, y))
+            b = m2;
+        else
+            a = m1;
+    }
+    return sqrt(fmin(best_d, ray_distance2(c, 0.5 * (a + b), y)));
+}
+
+/* Checks one result: one branch, no failure, a vertex at every break, no
+ * piece across a C0 break, piece ends at a break exactly on the vertex's
+ * point; on the plane every vertex and piece sample (x, y) = P(t).(x, y). */
+static void check_result(const char *what, const test_curve *tc, const projcurve_curve *c,
+                         const projcurve_surface *s, const projcurve_result *r, int on_plane)
+{
+    double at[MAX_KNOTS];
+    int c0[MAX_KNOTS];
+    const size_t nb_breaks = breaks_of(tc, at, c0);
+    const size_t nb = projcurve_result_branch_count(r);
+    const size_t fails = projcurve_result_failure_count(r);
+    printf("%s %s: %zu branch(es), %zu failure(s)\n", what, tc->name, nb, fails);
+    CHECK(fails == 0);
+    CHECK(nb == 1);
+    for (size_t b = 0; b < nb; ++b) {
+        double range[2];
+        projcurve_branch_start st;
+        projcurve_branch_end en;
+        size_t n = 0, n_pieces = 0;
+        CHECK_OK(projcurve_result_branch_info(NULL, r, b, range, &st, &en, &n, &n_pieces));
+        printf("  branch %zu: t [%g, %g] start %d end %d, %zu points, %zu pieces\n", b,
+               range[0], range[1], (int)st, (int)en, n, n_pieces);
+        CHECK(st == PROJCURVE_START_CURVE_START && en == PROJCURVE_END_CURVE_END);
+        double *p = malloc(3 * n * sizeof *p);
+        CHECK_OK(projcurve_result_branch_points(NULL, r, b, n, p, &n));
+        for (size_t k = 0; k < nb_breaks; ++k) {
+            if (!c0[k]) /* the refined polyline keeps the corners only */
+                continue;
+            int found = 0;
+            for (size_t i = 0; i < n; ++i)
+                found |= p[3 * i] == at[k];
+            if (!found)
+                pc_test_fail_at(__FILE__, __LINE__, "%s %s: no vertex at the break t = %g",
+                                what, tc->name, at[k]);
+        }
+        if (on_plane) {
+            double worst = 0.0;
+            for (size_t i = 0; i < n; ++i) {
+                double x[3];
+                curve_point(c, p[3 * i], x);
+                worst = fmax(worst, fmax(fabs(x[0] - p[3 * i + 1]), fabs(x[1] - p[3 * i + 2])));
+            }
+            CHECK(worst <= PLANE_TOL);
+        }
+        free(p);
+        for (size_t q = 0; q < n_pieces; ++q) {
+            int deg = 0;
+            double ctrl[3 * PROJCURVE_MAX_PIECE_POINTS], w[PROJCURVE_MAX_PIECE_POINTS], pr[2];
+            CHECK_OK(projcurve_result_piece(NULL, r, b, q, &deg, ctrl, w, pr, NULL));
+            const double lo = fmin(pr[0], pr[1]), hi = fmax(pr[0], pr[1]);
+            for (size_t k = 0; k < nb_breaks; ++k) {
+                if (c0[k] && lo < at[k] && at[k] < hi)
+                    pc_test_fail_at(__FILE__, __LINE__,
+                                    "%s %s: piece [%g, %g] straddles the C0 break %g", what,
+                                    tc->name, lo, hi, at[k]);
+                /* a piece ending at a break ends on the projected vertex */
+                for (int e = 0; e < 2; ++e) {
+                    if (pr[e] != at[k] || !on_plane)
+                        continue;
+                    double x[3], y[3];
+                    curve_point(c, at[k], x);
+                    memcpy(y, ctrl + (e == 0 ? 0 : 3 * deg), sizeof y);
+                    CHECK(fabs(x[0] - y[0]) <= PLANE_TOL && fabs(x[1] - y[1]) <= PLANE_TOL &&
+                          fabs(y[2]) <= PLANE_TOL);
+                }
+            }
+            if (on_plane) { /* every sample of the piece on a ray of its range */
+                for (int k = 0; k <= 8; ++k) {
+                    double y[3];
+                    piece_point(deg, ctrl, w, k / 8.0, y);
+                    CHECK(ray_distance(c, lo, hi, y) <= EPS_D && fabs(y[2]) <= EPS_D);
+                }
+            }
+        }
+        (void)s;
+    }
+}
+
+static void run(const char *what, kind k, const test_curve *tc, const projcurve_surface *s,
+                int on_plane)
+{
+    projcurve_curve *c = make_curve(tc);
+    projcurve_result *r = project(k, s, c);
+    check_result(what, tc, c, s, r, on_plane);
+    projcurve_result_destroy(r);
+    projcurve_curve_destroy(c);
+}
+
+int main(void)
+{
+    test_curve tc;
+    projcurve_surface *pl = plane();
+    polyline(&tc, "polyline_1", 1, 10, 90, 20, 70, 5);
+    run("plane dir", DIRECTIONAL, &tc, pl, 1);
+    polyline(&tc, "polyline_3", 3, 10, 90, 20, 70, 5);
+    run("plane dir", DIRECTIONAL, &tc, pl, 1);
+    run("plane ortho", ORTHOGONAL, &tc, pl, 1);
+    polyline(&tc, "polyline_10", 10, 10, 90, 20, 70, 5);
+    run("plane dir", DIRECTIONAL, &tc, pl, 1);
+    run("plane ortho", ORTHOGONAL, &tc, pl, 1);
+    cubic_break(&tc, "cubic_c1", 2, 10, 90, 20, 70, 5);
+    run("plane dir", DIRECTIONAL, &tc, pl, 1);
+    cubic_break(&tc, "cubic_c0", 3, 10, 90, 20, 70, 5);
+    run("plane dir", DIRECTIONAL, &tc, pl, 1);
+    run("plane ortho", ORTHOGONAL, &tc, pl, 1);
+    projcurve_surface_destroy(pl);
+
+    projcurve_model *m = read_case("bumpy_bicubic_8x8_down");
+    const projcurve_surface *bumpy = projcurve_model_surface(m, 0);
+    double box[6];
+    CHECK_OK(projcurve_surface_bounds(NULL, bumpy, box));
+    const double x0 = box[0] + 0.1 * (box[3] - box[0]), x1 = box[3] - 0.1 * (box[3] - box[0]);
+    const double y0 = box[1] + 0.1 * (box[4] - box[1]), y1 = box[4] - 0.1 * (box[4] - box[1]);
+    polyline(&tc, "bumpy_polyline_3", 3, x0, x1, y0, y1, box[5] + 10);
+    run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
+    polyline(&tc, "bumpy_polyline_10", 10, x0, x1, y0, y1, box[5] + 10);
+    run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
+    cubic_break(&tc, "bumpy_cubic_c0", 3, x0, x1, y0, y1, box[5] + 10);
+    run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
+    projcurve_model_destroy(m);
+    return pc_test_finish("test_trace_corners");
+}
