@@ -273,14 +273,17 @@ static int derive_one_sided(const pc_tracer *tr, double t, double u, double v, i
  * exactly on either (a step within rounding of one is stretched to it, so
  * that it is never missed by a sliver). */
 static double step_target(pc_tracer *tr, double t, double t_stop, double sign, double h,
-                          double remaining)
+                          double remaining, int *on_break)
 {
+    *on_break = 0;
     if (h >= remaining - PC_TRACE_END_SLACK * h)
         return t_stop;
     const double brk = pc_curve_breaks_next(&tr->breaks, t, sign > 0.0 ? 1 : -1);
     const double to_break = sign * (brk - t);
-    if (to_break < remaining && h >= to_break - PC_TRACE_END_SLACK * h)
+    if (to_break < remaining && h >= to_break - PC_TRACE_END_SLACK * h) {
+        *on_break = 1;
         return brk;
+    }
     return t + sign * h;
 }
 
@@ -343,7 +346,8 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             return PROJCURVE_OK;
         }
         /* never step over the end of the curve or a break of P */
-        const double t_next = step_target(tr, cur->t, t_stop, sign, h, remaining);
+        int on_break;
+        const double t_next = step_target(tr, cur->t, t_stop, sign, h, remaining, &on_break);
         tr->r->stats.steps += 1.0;
         const step_outcome out = try_step(tr, cur, t_next, next);
         if (out == STEP_REJECT) {
@@ -365,8 +369,7 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             return PROJCURVE_OK;
         }
         /* on a break of P: go on with the derivatives of the side ahead */
-        if (next->t != t_stop && pc_curve_break_at(proj->curve, next->t, tr->breaks.order) &&
-            !derive_one_sided(tr, next->t, next->u, next->v, direction, next)) {
+        if (on_break && !derive_one_sided(tr, next->t, next->u, next->v, direction, next)) {
             *why = stall_reason(next);
             return PROJCURVE_OK;
         }

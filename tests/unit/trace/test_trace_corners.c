@@ -23,6 +23,10 @@
  * (P.x, P.y), so the traced vertices are exact to the corrector's tolerance
  * (1e-9 of the model size and rounding: 1e-9 here). */
 #define PLANE_TOL 1e-9
+/* The compact forms have a C0 knot at a corner of P and interpolate the
+ * pieces' common end point there (fit/features.c keeps it): rounding only
+ * (measured 1e-15), not the fit's eps_D. */
+#define COMPACT_CORNER_TOL 1e-9
 /* eps_D of the calls (model units, the bumpy case's manifest value). */
 #define EPS_D 1e-3
 
@@ -125,13 +129,13 @@ static projcurve_model *read_case(const char *name)
 
 typedef enum kind { DIRECTIONAL, ORTHOGONAL } kind;
 
-static projcurve_result *project(kind k, const projcurve_surface *s, const projcurve_curve *c)
+static projcurve_result *project(kind k, const projcurve_surface *s, const projcurve_curve *c,
+                                 int compose)
 {
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, EPS_D));
-    if (getenv("NOCOMPOSE"))
-        CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, 0));
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, compose));
     projcurve_result *r = NULL;
     const double down[3] = {0, 0, -1};
     if (k == DIRECTIONAL)
@@ -207,8 +211,14 @@ static double ray_distance(const projcurve_curve *c, double lo, double hi, const
 /* Checks one result: one branch, no failure, a vertex at every break, no
  * piece across a C0 break, piece ends at a break exactly on the vertex's
  * point; on the plane every vertex and piece sample (x, y) = P(t).(x, y). */
-static void check_result(const char *what, const test_curve *tc, const projcurve_curve *c,
-                         const projcurve_surface *s, const projcurve_result *r, int on_plane)
+static void check_compact(const char *what, const test_curve *tc, const projcurve_surface *s,
+                          const projcurve_result *r, size_t b, const double *p, size_t n);
+static void check_foot_points(const char *what, const projcurve_curve *c,
+                              const projcurve_surface *s, const double *p, size_t n);
+
+static void check_result(const char *what, kind k_proj, const test_curve *tc,
+                         const projcurve_curve *c, const projcurve_surface *s,
+                         const projcurve_result *r, int on_plane)
 {
     double at[MAX_KNOTS];
     int c0[MAX_KNOTS];
@@ -248,6 +258,9 @@ static void check_result(const char *what, const test_curve *tc, const projcurve
             }
             CHECK(worst <= PLANE_TOL);
         }
+        if (k_proj == ORTHOGONAL)
+            check_foot_points(what, c, s, p, n);
+        check_compact(what, tc, s, r, b, p, n);
         free(p);
         for (size_t q = 0; q < n_pieces; ++q) {
             int deg = 0;
@@ -270,11 +283,15 @@ static void check_result(const char *what, const test_curve *tc, const projcurve
                           fabs(y[2]) <= PLANE_TOL);
                 }
             }
-            if (on_plane) { /* every sample of the piece on a ray of its range */
+            /* every sample of the piece on a ray of its range (the rays are
+             * vertical: directional along -z, orthogonal onto z = 0) */
+            if (on_plane || k_proj == DIRECTIONAL) {
                 for (int k = 0; k <= 8; ++k) {
                     double y[3];
                     piece_point(deg, ctrl, w, k / 8.0, y);
-                    CHECK(ray_distance(c, lo, hi, y) <= EPS_D && fabs(y[2]) <= EPS_D);
+                    CHECK(ray_distance(c, lo, hi, y) <= EPS_D);
+                    if (on_plane)
+                        CHECK(fabs(y[2]) <= EPS_D);
                 }
             }
         }
@@ -282,12 +299,156 @@ static void check_result(const char *what, const test_curve *tc, const projcurve
     }
 }
 
+/* Multiplicity of x among the knots of curve (0 when not a knot). */
+static size_t multiplicity(const projcurve_curve *curve, double x, int *degree)
+{
+    size_t n_ctrl = 0, n_knots = 0;
+    CHECK_OK(projcurve_curve_nurbs_info(NULL, curve, degree, &n_ctrl, &n_knots, NULL));
+    double *knots = malloc(n_knots * sizeof *knots);
+    CHECK_OK(projcurve_curve_nurbs_data(NULL, curve, NULL, NULL, knots));
+    size_t m = 0;
+    for (size_t k = 0; k < n_knots; ++k)
+        m += knots[k] == x;
+    free(knots);
+    return m;
+}
+
+/* The compact forms of branch b have a corner exactly at each C0 break of
+ * P: a knot of multiplicity >= their degree there (C0), and pass through
+ * the traced vertex's point (COMPACT_CORNER_TOL); the compact pcurve's
+ * S o q too. */
+static void check_compact(const char *what, const test_curve *tc, const projcurve_surface *s,
+                          const projcurve_result *r, size_t b, const double *p, size_t n)
+{
+    double at[MAX_KNOTS];
+    int c0[MAX_KNOTS];
+    const size_t nb_breaks = breaks_of(tc, at, c0);
+    projcurve_curve *curve = NULL, *pcurve = NULL;
+    CHECK_OK(projcurve_result_branch_compact_curve(NULL, r, b, &curve));
+    CHECK_OK(projcurve_result_branch_compact_pcurve(NULL, r, b, &pcurve));
+    if (curve == NULL || pcurve == NULL) {
+        projcurve_curve_destroy(curve);
+        projcurve_curve_destroy(pcurve);
+        return;
+    }
+    double worst = 0.0;
+    for (size_t k = 0; k < nb_breaks; ++k) {
+        if (!c0[k])
+            continue;
+        size_t i = 0;
+        while (i < n && p[3 * i] != at[k])
+            ++i;
+        if (i == n)
+            continue; /* reported by check_result */
+        double vertex[3], x[3], q[3], sq[3];
+        CHECK_OK(projcurve_surface_eval(NULL, s, p[3 * i + 1], p[3 * i + 2], 0, vertex));
+        curve_point(curve, at[k], x);
+        curve_point(pcurve, at[k], q);
+        CHECK_OK(projcurve_surface_eval(NULL, s, q[0], q[1], 0, sq));
+        const double dx = sqrt((x[0] - vertex[0]) * (x[0] - vertex[0]) +
+                               (x[1] - vertex[1]) * (x[1] - vertex[1]) +
+                               (x[2] - vertex[2]) * (x[2] - vertex[2]));
+        const double dq = sqrt((sq[0] - vertex[0]) * (sq[0] - vertex[0]) +
+                               (sq[1] - vertex[1]) * (sq[1] - vertex[1]) +
+                               (sq[2] - vertex[2]) * (sq[2] - vertex[2]));
+        worst = fmax(worst, fmax(dx, dq));
+        CHECK(dx <= COMPACT_CORNER_TOL && dq <= COMPACT_CORNER_TOL);
+        int deg_c = 0, deg_q = 0;
+        const size_t mc = multiplicity(curve, at[k], &deg_c);
+        const size_t mq = multiplicity(pcurve, at[k], &deg_q);
+        if (!((int)mc >= deg_c && (int)mq >= deg_q))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "%s %s: compact knots at the corner %g: multiplicity %zu (degree "
+                            "%d), pcurve %zu (degree %d)",
+                            what, tc->name, at[k], mc, deg_c, mq, deg_q);
+    }
+    printf("  compact forms at the corners: within %.3g of the vertices\n", worst);
+    projcurve_curve_destroy(curve);
+    projcurve_curve_destroy(pcurve);
+}
+
+/* Orthogonal results: at every vertex S(u, v) - P(t) is normal to S (its
+ * components along Su and Sv vanish) to 1e-8 of the offset's length plus
+ * the model size (the corrector's tolerance is 1e-9 of the model). */
+static void check_foot_points(const char *what, const projcurve_curve *c,
+                              const projcurve_surface *s, const double *p, size_t n)
+{
+    double box[6];
+    CHECK_OK(projcurve_surface_bounds(NULL, s, box));
+    const double size = hypot(hypot(box[3] - box[0], box[4] - box[1]), box[5] - box[2]);
+    double worst = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+        double x[3], d[9];
+        curve_point(c, p[3 * i], x);
+        CHECK_OK(projcurve_surface_eval(NULL, s, p[3 * i + 1], p[3 * i + 2], 1, d));
+        for (int j = 1; j <= 2; ++j) {
+            const double *su = d + 3 * j;
+            const double len = sqrt(su[0] * su[0] + su[1] * su[1] + su[2] * su[2]);
+            const double along =
+                ((x[0] - d[0]) * su[0] + (x[1] - d[1]) * su[1] + (x[2] - d[2]) * su[2]) / len;
+            worst = fmax(worst, fabs(along) / size);
+        }
+    }
+    printf("  %s: foot points tangential offset <= %.3g of the model size\n", what, worst);
+    CHECK(worst <= 1e-8);
+}
+
+/* A polyline through the control points of curve (x, y, z + lift). */
+static void control_polygon(test_curve *tc, const char *name, const projcurve_curve *curve,
+                            double lift)
+{
+    size_t n_ctrl = 0;
+    CHECK_OK(projcurve_curve_nurbs_info(NULL, curve, NULL, &n_ctrl, NULL, NULL));
+    CHECK(n_ctrl >= 2 && n_ctrl + 2 <= MAX_KNOTS);
+    double *ctrl = malloc(3 * n_ctrl * sizeof *ctrl);
+    CHECK_OK(projcurve_curve_nurbs_data(NULL, curve, ctrl, NULL, NULL));
+    tc->name = name;
+    tc->degree = 1;
+    tc->n_ctrl = n_ctrl;
+    for (size_t k = 0; k < n_ctrl; ++k) {
+        tc->ctrl[3 * k] = ctrl[3 * k];
+        tc->ctrl[3 * k + 1] = ctrl[3 * k + 1];
+        tc->ctrl[3 * k + 2] = ctrl[3 * k + 2] + lift;
+        tc->knots[k + 1] = (double)k;
+    }
+    tc->knots[0] = 0.0;
+    tc->knots[n_ctrl + 1] = (double)(n_ctrl - 1);
+    free(ctrl);
+}
+
+/* Traced only: one branch with a vertex exactly at every break of P, C1
+ * ones included (the tracer lands on each knot where q'' jumps). */
+static void check_traced(const char *what, const test_curve *tc, const projcurve_result *r)
+{
+    double at[MAX_KNOTS];
+    int c0[MAX_KNOTS];
+    const size_t nb_breaks = breaks_of(tc, at, c0);
+    CHECK(projcurve_result_branch_count(r) == 1);
+    CHECK(projcurve_result_failure_count(r) == 0);
+    size_t n = 0;
+    CHECK_OK(projcurve_result_branch_info(NULL, r, 0, NULL, NULL, NULL, &n, NULL));
+    double *p = malloc(3 * (n + 1) * sizeof *p);
+    CHECK_OK(projcurve_result_branch_points(NULL, r, 0, n, p, &n));
+    for (size_t k = 0; k < nb_breaks; ++k) {
+        int found = 0;
+        for (size_t i = 0; i < n; ++i)
+            found |= p[3 * i] == at[k];
+        if (!found)
+            pc_test_fail_at(__FILE__, __LINE__, "%s %s traced: no vertex at the break t = %g",
+                            what, tc->name, at[k]);
+    }
+    free(p);
+}
+
 static void run(const char *what, kind k, const test_curve *tc, const projcurve_surface *s,
                 int on_plane)
 {
     projcurve_curve *c = make_curve(tc);
-    projcurve_result *r = project(k, s, c);
-    check_result(what, tc, c, s, r, on_plane);
+    projcurve_result *r = project(k, s, c, 0);
+    check_traced(what, tc, r);
+    projcurve_result_destroy(r);
+    r = project(k, s, c, 1);
+    check_result(what, k, tc, c, s, r, on_plane);
     projcurve_result_destroy(r);
     projcurve_curve_destroy(c);
 }
@@ -324,5 +485,15 @@ int main(void)
     cubic_break(&tc, "bumpy_cubic_c0", 3, x0, x1, y0, y1, box[5] + 10);
     run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
     projcurve_model_destroy(m);
+
+    /* orthogonal onto curved surfaces: the control polygons of the cases'
+     * own curves */
+    const char *ortho_cases[2] = {"ortho_bumpy_bicubic_hover", "ortho_nurbs_half_cylinder"};
+    for (int i = 0; i < 2; ++i) {
+        m = read_case(ortho_cases[i]);
+        control_polygon(&tc, ortho_cases[i], projcurve_model_curve(m, 0), 0.0);
+        run("ortho", ORTHOGONAL, &tc, projcurve_model_surface(m, 0), 0);
+        projcurve_model_destroy(m);
+    }
     return pc_test_finish("test_trace_corners");
 }
