@@ -36,6 +36,7 @@ typedef struct test_curve {
     size_t n_ctrl;
     double ctrl[3 * MAX_KNOTS];
     double knots[MAX_KNOTS];
+    int enters; /* starts outside the surface: the branch starts on its boundary */
 } test_curve;
 
 /* A zigzag polyline of n segments over [x0, x1] x [y0, y1] at height z,
@@ -44,6 +45,7 @@ static void polyline(test_curve *c, const char *name, size_t n, double x0, doubl
                      double y0, double y1, double z)
 {
     c->name = name;
+    c->enters = 0;
     c->degree = 1;
     c->n_ctrl = n + 1;
     for (size_t k = 0; k <= n; ++k) {
@@ -62,6 +64,7 @@ static void cubic_break(test_curve *c, const char *name, int m, double x0, doubl
                         double y0, double y1, double z)
 {
     c->name = name;
+    c->enters = 0;
     c->degree = 3;
     c->n_ctrl = (size_t)(4 + m);
     size_t nk = 0;
@@ -236,7 +239,8 @@ static void check_result(const char *what, kind k_proj, const test_curve *tc,
         CHECK_OK(projcurve_result_branch_info(NULL, r, b, range, &st, &en, &n, &n_pieces));
         printf("  branch %zu: t [%g, %g] start %d end %d, %zu points, %zu pieces\n", b,
                range[0], range[1], (int)st, (int)en, n, n_pieces);
-        CHECK(st == PROJCURVE_START_CURVE_START && en == PROJCURVE_END_CURVE_END);
+        CHECK(st == (tc->enters ? PROJCURVE_START_BOUNDARY : PROJCURVE_START_CURVE_START) &&
+              en == PROJCURVE_END_CURVE_END);
         double *p = malloc(3 * n * sizeof *p);
         CHECK_OK(projcurve_result_branch_points(NULL, r, b, n, p, &n));
         for (size_t k = 0; k < nb_breaks; ++k) {
@@ -403,6 +407,7 @@ static void control_polygon(test_curve *tc, const char *name, const projcurve_cu
     double *ctrl = malloc(3 * n_ctrl * sizeof *ctrl);
     CHECK_OK(projcurve_curve_nurbs_data(NULL, curve, ctrl, NULL, NULL));
     tc->name = name;
+    tc->enters = 0;
     tc->degree = 1;
     tc->n_ctrl = n_ctrl;
     for (size_t k = 0; k < n_ctrl; ++k) {
@@ -470,6 +475,21 @@ int main(void)
     cubic_break(&tc, "cubic_c0", 3, 10, 90, 20, 70, 5);
     run("plane dir", DIRECTIONAL, &tc, pl, 1);
     run("plane ortho", ORTHOGONAL, &tc, pl, 1);
+    /* a hairpin: the second leg returns within 4 degrees of the first, so
+     * near the corner both legs' rays hit S close together (the jump
+     * sweep must see one branch) */
+    polyline(&tc, "hairpin", 2, 10, 90, 20, 70, 5);
+    tc.ctrl[6] = 12.0;
+    tc.ctrl[7] = 20.0 + 2.0;
+    run("plane dir", DIRECTIONAL, &tc, pl, 1);
+    run("plane ortho", ORTHOGONAL, &tc, pl, 1);
+    /* entering from outside the surface 0.01 before a corner: the branch is
+     * born mid-curve and traced back across the corner to the boundary */
+    polyline(&tc, "entering", 3, 10, 90, 20, 70, 5);
+    tc.ctrl[0] = -5.0;
+    tc.ctrl[3] = 0.05;
+    tc.enters = 1;
+    run("plane dir", DIRECTIONAL, &tc, pl, 1);
     projcurve_surface_destroy(pl);
 
     projcurve_model *m = read_case("bumpy_bicubic_8x8_down");
@@ -483,6 +503,10 @@ int main(void)
     polyline(&tc, "bumpy_polyline_10", 10, x0, x1, y0, y1, box[5] + 10);
     run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
     cubic_break(&tc, "bumpy_cubic_c0", 3, x0, x1, y0, y1, box[5] + 10);
+    run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
+    polyline(&tc, "bumpy_hairpin", 2, x0, x1, y0, y1, box[5] + 10);
+    tc.ctrl[6] = x0 + 0.02 * (x1 - x0);
+    tc.ctrl[7] = y0 + 0.05 * (y1 - y0);
     run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
     projcurve_model_destroy(m);
 
