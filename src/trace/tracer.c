@@ -6,7 +6,9 @@
  * parameter step; the predictor (Taylor (3.5) or RK4) estimates q(t + h) and
  * Newton corrects it. A failed correction halves the step; a step never
  * passes the end of the curve, crosses a fold (a sign change of det J) or
- * leaves the domain (the exit is then located on the boundary).
+ * leaves the domain (the exit is then located on the boundary), and never
+ * passes a break of P (curve_breaks.h): it lands on it, and the branch
+ * goes on from there with the derivatives of the side ahead.
  */
 #include "trace/tracer.h"
 

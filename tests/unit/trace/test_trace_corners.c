@@ -2,7 +2,9 @@
 /*
  * Curves with corners: polylines (degree 1) and cubics with a double (C1)
  * or triple (C0) interior knot, projected along a ray and orthogonally onto
- * a plane, the bumpy bicubic case and the bumpy "hover" case. The
+ * a plane and a sphere (exact oracles), along the ray onto the bumpy
+ * bicubic case, orthogonally onto the bumpy "hover" case and the half
+ * cylinder; a hairpin and a branch born just before a corner. The
  * projection of such a curve is continuous at each break of P, so each
  * connected stretch must come out as one branch, with no failure, a traced
  * vertex exactly at every break (t equal to the knot), no composed piece
@@ -16,6 +18,7 @@
 
 #include "check.h"
 #include "projcurve.h"
+#include "trace_shapes.h"
 
 #define MAX_KNOTS 64
 /* The plane z = 0 is spanned by a bilinear patch over [0, 100]^2 with
@@ -133,12 +136,13 @@ static projcurve_model *read_case(const char *name)
 typedef enum kind { DIRECTIONAL, ORTHOGONAL } kind;
 
 static projcurve_result *project(kind k, const projcurve_surface *s, const projcurve_curve *c,
-                                 int compose)
+                                 int compose, int pcurve_degree)
 {
     projcurve_options *o = NULL;
     CHECK_OK(projcurve_options_create(NULL, &o));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE, EPS_D));
     CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, compose));
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_PCURVE_DEGREE, pcurve_degree));
     projcurve_result *r = NULL;
     const double down[3] = {0, 0, -1};
     if (k == DIRECTIONAL)
@@ -173,12 +177,24 @@ static void curve_point(const projcurve_curve *c, double t, double x[3])
     memcpy(x, d, 3 * sizeof *x);
 }
 
-/* Squared distance in (x, y) of y from P(t): the distance of y from the
- * ray P(t) - lambda z. */
-static double ray_distance2(const projcurve_curve *c, double t, const double y[3])
+/* The sphere of radius SPHERE_R about the origin: the foot point of P is
+ * SPHERE_R P / |P| (nearest for P outside). */
+#define SPHERE_R 10.0
+
+/* sphere 0: squared distance in (x, y) of y from P(t), the distance of y
+ * from the ray P(t) - lambda z; sphere 1: squared distance of y from the
+ * foot point of P(t) on the sphere. */
+static double ray_distance2(const projcurve_curve *c, double t, const double y[3], int sphere)
 {
     double x[3];
     curve_point(c, t, x);
+    if (sphere) {
+        const double len = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+        double d2 = 0.0;
+        for (int m = 0; m < 3; ++m)
+            d2 += (SPHERE_R * x[m] / len - y[m]) * (SPHERE_R * x[m] / len - y[m]);
+        return d2;
+    }
     return (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]);
 }
 
@@ -186,13 +202,14 @@ static double ray_distance2(const projcurve_curve *c, double t, const double y[3
  * oracle of a piece on the plane): the best of 64 samples, then a golden
  * section search over its two neighbouring intervals (100 passes shrink
  * them by 0.618^100, far below rounding). */
-static double ray_distance(const projcurve_curve *c, double lo, double hi, const double y[3])
+static double ray_distance(const projcurve_curve *c, double lo, double hi, const double y[3],
+                           int sphere)
 {
     const int n = 64;
     int best = 0;
     double best_d = INFINITY;
     for (int k = 0; k <= n; ++k) {
-        const double d = ray_distance2(c, lo + (hi - lo) * k / n, y);
+        const double d = ray_distance2(c, lo + (hi - lo) * k / n, y, sphere);
         if (d < best_d) {
             best_d = d;
             best = k;
@@ -203,12 +220,12 @@ static double ray_distance(const projcurve_curve *c, double lo, double hi, const
     const double g = 0.5 * (sqrt(5.0) - 1.0);
     for (int pass = 0; pass < 100; ++pass) {
         const double m1 = b - g * (b - a), m2 = a + g * (b - a);
-        if (ray_distance2(c, m1, y) < ray_distance2(c, m2, y))
+        if (ray_distance2(c, m1, y, sphere) < ray_distance2(c, m2, y, sphere))
             b = m2;
         else
             a = m1;
     }
-    return sqrt(fmin(best_d, ray_distance2(c, 0.5 * (a + b), y)));
+    return sqrt(fmin(best_d, ray_distance2(c, 0.5 * (a + b), y, sphere)));
 }
 
 /* Checks one result: one branch, no failure, a vertex at every break, no
@@ -223,6 +240,8 @@ static void check_result(const char *what, kind k_proj, const test_curve *tc,
                          const projcurve_curve *c, const projcurve_surface *s,
                          const projcurve_result *r, int on_plane)
 {
+    const int on_sphere = on_plane == 2;
+    on_plane = on_plane == 1;
     double at[MAX_KNOTS];
     int c0[MAX_KNOTS];
     const size_t nb_breaks = breaks_of(tc, at, c0);
@@ -264,6 +283,18 @@ static void check_result(const char *what, kind k_proj, const test_curve *tc,
         }
         if (k_proj == ORTHOGONAL)
             check_foot_points(what, c, s, p, n);
+        /* every vertex the exact foot point, to the corrector's tolerance
+         * (1e-9 of the model size, 2 R here) with a margin of 5 */
+        if (on_sphere) {
+            double worst = 0.0;
+            for (size_t i = 0; i < n; ++i) {
+                double y[3];
+                CHECK_OK(projcurve_surface_eval(NULL, s, p[3 * i + 1], p[3 * i + 2], 0, y));
+                worst = fmax(worst, sqrt(ray_distance2(c, p[3 * i], y, 1)));
+            }
+            printf("  sphere: vertices within %.3g of the exact foot points\n", worst);
+            CHECK(worst <= PLANE_TOL * SPHERE_R);
+        }
         check_compact(what, tc, s, r, b, p, n);
         free(p);
         for (size_t q = 0; q < n_pieces; ++q) {
@@ -289,11 +320,11 @@ static void check_result(const char *what, kind k_proj, const test_curve *tc,
             }
             /* every sample of the piece on a ray of its range (the rays are
              * vertical: directional along -z, orthogonal onto z = 0) */
-            if (on_plane || k_proj == DIRECTIONAL) {
+            if (on_plane || k_proj == DIRECTIONAL || on_sphere) {
                 for (int k = 0; k <= 8; ++k) {
                     double y[3];
                     piece_point(deg, ctrl, w, k / 8.0, y);
-                    CHECK(ray_distance(c, lo, hi, y) <= EPS_D);
+                    CHECK(ray_distance(c, lo, hi, y, on_sphere) <= EPS_D);
                     if (on_plane)
                         CHECK(fabs(y[2]) <= EPS_D);
                 }
@@ -445,17 +476,26 @@ static void check_traced(const char *what, const test_curve *tc, const projcurve
     free(p);
 }
 
-static void run(const char *what, kind k, const test_curve *tc, const projcurve_surface *s,
-                int on_plane)
+/* on_plane: 1 the plane z = 0, 2 the sphere of radius SPHERE_R about the
+ * origin (exact oracles), 0 neither. */
+static void run_degree(const char *what, kind k, const test_curve *tc,
+                       const projcurve_surface *s, int on_plane, int pcurve_degree)
 {
     projcurve_curve *c = make_curve(tc);
-    projcurve_result *r = project(k, s, c, 0);
+    projcurve_result *r = project(k, s, c, 0, pcurve_degree);
     check_traced(what, tc, r);
     projcurve_result_destroy(r);
-    r = project(k, s, c, 1);
+    r = project(k, s, c, 1, pcurve_degree);
     check_result(what, k, tc, c, s, r, on_plane);
     projcurve_result_destroy(r);
     projcurve_curve_destroy(c);
+}
+
+/* With the default straight pcurves. */
+static void run(const char *what, kind k, const test_curve *tc, const projcurve_surface *s,
+                int on_plane)
+{
+    run_degree(what, k, tc, s, on_plane, 1);
 }
 
 int main(void)
@@ -474,6 +514,7 @@ int main(void)
     run("plane dir", DIRECTIONAL, &tc, pl, 1);
     cubic_break(&tc, "cubic_c0", 3, 10, 90, 20, 70, 5);
     run("plane dir", DIRECTIONAL, &tc, pl, 1);
+    run_degree("plane dir cubic pcurves", DIRECTIONAL, &tc, pl, 1, 3);
     run("plane ortho", ORTHOGONAL, &tc, pl, 1);
     /* a hairpin: the second leg returns within 4 degrees of the first, so
      * near the corner both legs' rays hit S close together (the jump
@@ -502,13 +543,35 @@ int main(void)
     run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
     polyline(&tc, "bumpy_polyline_10", 10, x0, x1, y0, y1, box[5] + 10);
     run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
+    run_degree("bumpy dir cubic pcurves", DIRECTIONAL, &tc, bumpy, 0, 3);
     cubic_break(&tc, "bumpy_cubic_c0", 3, x0, x1, y0, y1, box[5] + 10);
     run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
+    run_degree("bumpy dir cubic pcurves", DIRECTIONAL, &tc, bumpy, 0, 3);
     polyline(&tc, "bumpy_hairpin", 2, x0, x1, y0, y1, box[5] + 10);
     tc.ctrl[6] = x0 + 0.02 * (x1 - x0);
     tc.ctrl[7] = y0 + 0.05 * (y1 - y0);
     run("bumpy dir", DIRECTIONAL, &tc, bumpy, 0);
     projcurve_model_destroy(m);
+
+    /* orthogonal onto a sphere: a polyline around the z axis (away from
+     * the seam at u = 0 and the poles), crossing the sphere's C0 knot lines */
+    projcurve_surface *sphere = shape_sphere(SPHERE_R);
+    tc.name = "sphere_polyline";
+    tc.enters = 0;
+    tc.degree = 1;
+    tc.n_ctrl = 5;
+    for (size_t k = 0; k < 5; ++k) {
+        const double angle = (60.0 + 55.0 * (double)k) * 3.14159265358979323846 / 180.0;
+        tc.ctrl[3 * k] = 15.0 * cos(angle);
+        tc.ctrl[3 * k + 1] = 15.0 * sin(angle);
+        tc.ctrl[3 * k + 2] = (k % 2 == 0) ? 8.0 : -3.0;
+        tc.knots[k + 1] = (double)k;
+    }
+    tc.knots[0] = 0.0;
+    tc.knots[6] = 4.0;
+    run("sphere ortho", ORTHOGONAL, &tc, sphere, 2);
+    run_degree("sphere ortho cubic pcurves", ORTHOGONAL, &tc, sphere, 2, 3);
+    projcurve_surface_destroy(sphere);
 
     /* orthogonal onto curved surfaces: the control polygons of the cases'
      * own curves */
