@@ -516,7 +516,7 @@ int main(void)
     run("plane dir", DIRECTIONAL, &tc, pl, 1);
     run_degree("plane dir cubic pcurves", DIRECTIONAL, &tc, pl, 1, 3);
     run("plane ortho", ORTHOGONAL, &tc, pl, 1);
-    /* a hairpin: the second leg returns within 4 degrees of the first, so
+    /* a hairpin: the second leg returns within a degree of the first, so
      * near the corner both legs' rays hit S close together (the jump
      * sweep must see one branch) */
     polyline(&tc, "hairpin", 2, 10, 90, 20, 70, 5);
