@@ -108,6 +108,7 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
         return st;
     for (size_t k = 0; k < l->traced.count; ++k)
         pc_refine_snap_to_knot_lines(r, &l->traced.items[k]);
+    pc_refine_fix_corners(r, &l->traced);
     const pc_rvertex *tv = l->traced.items;
     const size_t nt = l->traced.count;
     l->out.count = 0; /* what store_branch finds if the budget stops step 1 */

@@ -107,6 +107,7 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     tr->dir = cfg->dir;
     tr->lambda_tol = proj->newton_tol;
     tr->behind_tol = opts->tol_distance;
+    pc_curve_breaks_init(&tr->breaks, c, PC_BREAK_ORDER_PREDICTOR);
 }
 
 static projcurve_branch_start start_reason(projcurve_branch_end backward_end)
