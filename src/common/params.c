@@ -28,6 +28,7 @@ void pc_params_defaults(pc_params *p)
         .budget = NULL,
         .sweep_criteria_only = 0,
         .compact = 1,
+        .stages = NULL,
     };
 }
 
