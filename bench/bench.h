@@ -22,6 +22,8 @@ typedef struct pcb_args {
     const char *data_dir;  /* the shared data directory (cases/, real/) */
     int quick;               /* tiny sizes, few repetitions */
     const char *from_path;   /* profile: an occt JSON to take tolerances from */
+    const char *only_case;   /* profile: run only the case of this name (NULL: all) */
+    int pcurve_degree;       /* profile: PROJCURVE_OPT_PCURVE_DEGREE (0: the default) */
 } pcb_args;
 
 int pcb_cmd_eval(const pcb_args *args);

@@ -5,7 +5,10 @@
  * the case's eps_D and at Open CASCADE's measured accuracy: the deviations
  * `projcurve-bench occt --json FILE` measured, read back with --from FILE;
  * without it, at 1e-4 of the case's eps_D (about Open CASCADE's accuracy on
- * the directional cases, bench/README.md).
+ * the directional cases, bench/README.md). --case NAME runs one case,
+ * --pcurve-degree 1|3 sets PROJCURVE_OPT_PCURVE_DEGREE, and
+ * $PCB_PROFILE_SECONDS the CPU time per row (default 0.1 s; longer for
+ * perf record).
  */
 #include <math.h>
 #include <stdio.h>
@@ -71,7 +74,7 @@ static double occt_deviation(const char *json, const char *name)
 {
     if (json == NULL)
         return NAN;
-    char key[PCB_CASE_NAME_MAX + 16];
+    char key[512]; /* a case name (PCB_CASE_NAME_MAX) and the member syntax */
     snprintf(key, sizeof key, "\"name\": \"%s\"", name);
     const char *at = strstr(json, key);
     if (at == NULL)
@@ -116,7 +119,10 @@ int pcb_cmd_profile(const pcb_args *args)
         pcb_cases_free(&list);
         return 2;
     }
-    pcb_print_banner("profile: CPU ms per call by stage, default options", args);
+    pcb_print_banner(args->pcurve_degree == 3   ? "profile: CPU ms per call by stage, cubic pcurves"
+                     : args->pcurve_degree == 1 ? "profile: CPU ms per call by stage, straight pcurves"
+                                                : "profile: CPU ms per call by stage, default options",
+                     args);
     pcb_profile_print_header();
     pcb_json j;
     const int json = args->json_path && pcb_json_open(&j, args->json_path) == 0;
@@ -124,11 +130,19 @@ int pcb_cmd_profile(const pcb_args *args)
         pcb_json_object_begin(&j, NULL);
         pcb_json_array_begin(&j, "rows");
     }
+    /* $PCB_PROFILE_SECONDS: CPU seconds per row (longer for perf record) */
+    const char *env = getenv("PCB_PROFILE_SECONDS");
+    const double min_s = env && atof(env) > 0.0 ? atof(env) : PCB_PROFILE_MIN_S;
     int rc = 0;
     static pcb_profile rows[PCB_PROFILE_MAX_ROWS];
     size_t n_rows = 0;
     for (size_t i = 0; i < list.n; ++i) {
-        const pcb_case *c = &list.items[i];
+        pcb_case variant = list.items[i];
+        if (args->pcurve_degree > 0)
+            variant.pcurve_degree = args->pcurve_degree;
+        const pcb_case *c = &variant;
+        if (args->only_case && strcmp(c->name, args->only_case) != 0)
+            continue;
         if (c->error[0]) {
             printf("%-30s not loaded: %s\n", c->name, c->error);
             continue;
@@ -143,7 +157,7 @@ int pcb_cmd_profile(const pcb_args *args)
                 continue;
             pcb_profile p;
             char status[256] = "";
-            if (pcb_profile_case(c, tols[k], args->quick, PCB_PROFILE_MIN_S, &p, status,
+            if (pcb_profile_case(c, tols[k], args->quick, min_s, &p, status,
                                  sizeof status) != 0) {
                 printf("%-30s %-6s failed: %s\n", c->name, labels[k], status);
                 rc = 1;

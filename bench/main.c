@@ -44,7 +44,8 @@ static const pcb_command commands[] = {
 static void usage(FILE *f)
 {
     fputs("usage: projcurve-bench <command> [--json FILE] [--svg FILE] [--quick] "
-          "[--data DIR] [--from FILE]\n"
+          "[--data DIR]\n"
+          "       projcurve-bench profile [--from FILE] [--case NAME] [--pcurve-degree 1|3]\n"
           "       projcurve-bench all --out DIR [--quick] [--data DIR]\n"
           "commands:\n",
           f);
@@ -70,6 +71,10 @@ static int parse_options(int argc, char **argv, pcb_args *args, const char **out
             args->svg_path = argv[++i];
         } else if ((!strcmp(opt, "--data") || !strcmp(opt, "--shared")) && has_value) {
             args->data_dir = argv[++i];
+        } else if (!strcmp(opt, "--pcurve-degree") && has_value) {
+            args->pcurve_degree = atoi(argv[++i]);
+        } else if (!strcmp(opt, "--case") && has_value) {
+            args->only_case = argv[++i];
         } else if (!strcmp(opt, "--from") && has_value) {
             args->from_path = argv[++i];
         } else if (!strcmp(opt, "--out") && has_value) {
@@ -112,7 +117,7 @@ int main(int argc, char **argv)
     /* The same override as the tests: $PROJCURVE_TEST_DATA_DIR, then --data
      * (--shared is its former spelling). */
     const char *data = getenv("PROJCURVE_TEST_DATA_DIR");
-    pcb_args args = {NULL, NULL, data && data[0] ? data : PCB_TEST_DATA_DIR, 0, NULL};
+    pcb_args args = {NULL, NULL, data && data[0] ? data : PCB_TEST_DATA_DIR, 0, NULL, NULL, 0};
     const char *out_dir = NULL;
     if (parse_options(argc, argv, &args, &out_dir) != 0) {
         usage(stderr);
