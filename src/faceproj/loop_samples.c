@@ -26,30 +26,49 @@ static size_t span_count(const pc_curve2 *c)
     return n > 0 ? n : 1;
 }
 
+static void add_sample(pc_loop_samples *s, pc_piece_samples *ps, double tau, const double uv[2])
+{
+    pc_loop_sample *q = &s->items[s->count++];
+    q->tau = tau;
+    q->uv[0] = uv[0];
+    q->uv[1] = uv[1];
+    ps->box[0] = fmin(ps->box[0], uv[0]);
+    ps->box[1] = fmax(ps->box[1], uv[0]);
+    ps->box[2] = fmin(ps->box[2], uv[1]);
+    ps->box[3] = fmax(ps->box[3], uv[1]);
+    ++ps->count;
+}
+
+/* A piece of degree 1 is its control polygon, control point i at knot
+ * i + 1 (clamped): those are its samples, exact and without evaluation
+ * (real loops have degree-1 pieces of thousands of points). Higher
+ * degrees: PC_LOOP_SAMPLES_PER_SPAN a span. */
 static projcurve_status sample_piece(projcurve_context *ctx, pc_loop_samples *s,
                                      pc_piece_samples *ps, const pc_curve2 *c)
 {
     double t0, t1;
     pc_curve2_domain(c, &t0, &t1);
-    size_t n = span_count(c) * PC_LOOP_SAMPLES_PER_SPAN;
-    if (s->count + n + 1 > PC_LOOP_MAX_SAMPLES)
+    const int linear = c->degree == 1;
+    size_t n = linear ? c->n_ctrl - 1 : span_count(c) * PC_LOOP_SAMPLES_PER_SPAN;
+    if (!linear && s->count + n + 1 > PC_LOOP_MAX_SAMPLES)
         n = PC_LOOP_SAMPLES_PER_SPAN; /* bounded: a coarser guess, Newton still refines */
     projcurve_status st;
     PC_ARRAY_RESERVE(st, ctx, s, s->count + n + 1, 64, "loop samples");
     if (st != PROJCURVE_OK)
         return st;
     ps->first = s->count;
-    ps->count = n + 1;
+    ps->count = 0;
     ps->box[0] = ps->box[2] = INFINITY;
     ps->box[1] = ps->box[3] = -INFINITY;
     for (size_t i = 0; i <= n; ++i) {
-        pc_loop_sample *q = &s->items[s->count++];
-        q->tau = i == n ? t1 : t0 + (t1 - t0) * (double)i / (double)n;
-        pc_curve2_eval(c, q->tau, q->uv);
-        ps->box[0] = fmin(ps->box[0], q->uv[0]);
-        ps->box[1] = fmax(ps->box[1], q->uv[0]);
-        ps->box[2] = fmin(ps->box[2], q->uv[1]);
-        ps->box[3] = fmax(ps->box[3], q->uv[1]);
+        if (linear) {
+            add_sample(s, ps, c->knots[i + 1], c->ctrl + 2 * i);
+            continue;
+        }
+        const double tau = i == n ? t1 : t0 + (t1 - t0) * (double)i / (double)n;
+        double uv[2];
+        pc_curve2_eval(c, tau, uv);
+        add_sample(s, ps, tau, uv);
     }
     return PROJCURVE_OK;
 }
