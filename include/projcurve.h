@@ -1137,7 +1137,7 @@ PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
  * chained; a piece that ends on an edge with no continuation (the other
  * face is missing, e.g. not built by the reader, or lies beyond the
  * chaining tolerance) ends its connected curve, and is counted in
- * projcurve_shape_result_open_end_count unless the edge is a free border.
+ * projcurve_shape_result_open_end_count (see there).
  * Statuses: those of projcurve_project_face; a failed face alone does not
  * fail the call. Thread-safe for distinct contexts. */
 PROJCURVE_API projcurve_status projcurve_project_shape(projcurve_context *ctx,
@@ -1187,9 +1187,14 @@ PROJCURVE_API projcurve_status projcurve_shape_result_face(
     projcurve_context *ctx, const projcurve_shape_result *result, size_t index, size_t *face,
     const projcurve_result **face_result, projcurve_status *status, const char **message);
 
-/* Ends of face pieces on an edge shared with another face (or listed with
- * one use in a closed shell) that found no continuation within the chaining
- * tolerance: gaps between faces (0 for NULL). Thread-safe. */
+/* Gaps between faces (0 for NULL): ends of face pieces on an edge that
+ * found no continuation where one was due, either because the edge's other
+ * face is missing (the edge has one use in a solid or closed shell: e.g. a
+ * face the reader could not build) or because a piece of the other face
+ * starts (ends) on the same edge within 1000 chaining tolerances but not
+ * within one (faces that do not meet within the model's precision). An end
+ * on a free border, or on a silhouette edge beyond which Dir grazes the
+ * next face, is not a gap. Thread-safe. */
 PROJCURVE_API size_t projcurve_shape_result_open_end_count(const projcurve_shape_result *result);
 
 /* The chaining tolerance the result was made with, model units (0 for NULL). */

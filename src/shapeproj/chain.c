@@ -128,6 +128,37 @@ static void emit_chain(projcurve_shape_result *r, node *nodes, size_t head)
     }
 }
 
+/* An end with no continuation is a gap when its edge lies between two
+ * faces of which one is missing (a single use in a closed shape), or when
+ * an end of the other kind waits on the same edge within
+ * PC_CHAIN_GAP_FACTOR chaining tolerances (the faces do not meet within
+ * the tolerance). Elsewhere it is the end of the projection on that edge:
+ * a free border, or a silhouette edge beyond which Dir grazes the next
+ * face. */
+#define PC_CHAIN_GAP_FACTOR 1000.0
+
+static int is_gap(const node *nodes, size_t n, size_t a, int at_end,
+                  const projcurve_shape *shape, double tol)
+{
+    const pc_trim_end *e = at_end ? &nodes[a].trim->end : &nodes[a].trim->start;
+    if (shape == NULL || !e->on_loop || e->edge < 0)
+        return 0;
+    const size_t uses = edge_uses(shape, e->edge);
+    if (uses <= 1)
+        return shape->kind == PROJCURVE_SHAPE_SOLID || shape->kind == PROJCURVE_SHAPE_CLOSED_SHELL;
+    const pc_vec3 x = at_end ? nodes[a].s_end : nodes[a].s_start;
+    for (size_t b = 0; b < n; ++b) {
+        const pc_trim_end *o = at_end ? &nodes[b].trim->start : &nodes[b].trim->end;
+        const size_t link = at_end ? nodes[b].prev : nodes[b].next;
+        if (b == a || link != NONE || !o->on_loop || o->edge != e->edge)
+            continue;
+        const pc_vec3 y = at_end ? nodes[b].s_start : nodes[b].s_end;
+        if (vec3_dist(x, y) <= PC_CHAIN_GAP_FACTOR * tol)
+            return 1;
+    }
+    return 0;
+}
+
 static projcurve_status link_and_emit(projcurve_context *ctx, projcurve_shape_result *r,
                                       node *nodes, size_t n, const projcurve_shape *shape)
 {
@@ -139,11 +170,8 @@ static projcurve_status link_and_emit(projcurve_context *ctx, projcurve_shape_re
         }
     }
     for (size_t a = 0; a < n; ++a) {
-        const pc_trim_end *e = &nodes[a].trim->end, *s = &nodes[a].trim->start;
-        r->open_ends += nodes[a].next == NONE && e->on_loop && e->edge >= 0 &&
-                        edge_uses(shape, e->edge) >= 2;
-        r->open_ends += nodes[a].prev == NONE && s->on_loop && s->edge >= 0 &&
-                        edge_uses(shape, s->edge) >= 2;
+        r->open_ends += nodes[a].next == NONE && is_gap(nodes, n, a, 1, shape, r->chain_tol);
+        r->open_ends += nodes[a].prev == NONE && is_gap(nodes, n, a, 0, shape, r->chain_tol);
     }
     chain_sort *heads = malloc((n + 1) * sizeof *heads);
     r->refs = malloc((n + 1) * sizeof *r->refs);

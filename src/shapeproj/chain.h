@@ -21,8 +21,9 @@
 #include "shapeproj/shape_result.h"
 
 /* Fills r's refs and curves from its parts; shape (NULL for a lone face)
- * tells an end on an edge of two uses with no continuation (counted in
- * r->open_ends: a gap) from one on a free border. Statuses: OK, NO_MEMORY, CALLBACK (the curve could not be
+ * tells the ends with no continuation that are gaps (counted in
+ * r->open_ends, see projcurve_shape_result_open_end_count) from free
+ * borders and silhouettes. Statuses: OK, NO_MEMORY, CALLBACK (the curve could not be
  * evaluated). */
 projcurve_status pc_chain_pieces(projcurve_context *ctx, projcurve_shape_result *r,
                                  const projcurve_shape *shape, const projcurve_curve *curve,

@@ -180,6 +180,65 @@ static void check_shell(const projcurve_shape_result *sr)
     }
 }
 
+/* Projects c onto shape along dir and checks the result; returns its
+ * connected-curve count. */
+static size_t check_pair(const char *name, const projcurve_shape *shape, const projcurve_curve *c,
+                         const double dir[3], size_t *open_ends, size_t *n_pieces)
+{
+    double box[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    for (size_t fi = 0; fi < projcurve_shape_face_count(shape); ++fi) {
+        double fb[6];
+        CHECK_OK(projcurve_face_bounds(NULL, projcurve_shape_face(shape, fi), NULL, fb));
+        for (int k = 0; k < 3; ++k) {
+            box[k] = fmin(box[k], fb[k]);
+            box[k + 3] = fmax(box[k + 3], fb[k + 3]);
+        }
+    }
+    const double size = sqrt((box[3] - box[0]) * (box[3] - box[0]) +
+                             (box[4] - box[1]) * (box[4] - box[1]) +
+                             (box[5] - box[2]) * (box[5] - box[2]));
+    projcurve_shape_result *sr = NULL;
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    const projcurve_status st =
+        projcurve_project_shape(ctx, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, NULL, &sr);
+    if (st != PROJCURVE_OK)
+        pc_test_fail_at(__FILE__, __LINE__, "%s: %s: %s", name, projcurve_status_string(st),
+                        projcurve_context_message(ctx));
+    projcurve_context_destroy(ctx);
+    if (sr == NULL)
+        return 0;
+    for (size_t k = 0; k < projcurve_shape_result_face_count(sr); ++k) {
+        projcurve_status fs;
+        const char *msg = NULL;
+        const projcurve_result *fr = NULL;
+        CHECK_OK(projcurve_shape_result_face(NULL, sr, k, NULL, &fr, &fs, &msg));
+        if (fs != PROJCURVE_OK || msg[0] != '\0' || projcurve_result_failure_count(fr) != 0)
+            pc_test_fail_at(__FILE__, __LINE__, "%s: face %zu: %s %s, %zu failures", name, k,
+                            projcurve_status_string(fs), msg, projcurve_result_failure_count(fr));
+    }
+    const size_t connected = projcurve_shape_result_curve_count(sr);
+    /* traced points: the corrector's 1e-12 of the size; 1e-9 is far above
+     * it and far below any wrong point */
+    for (size_t k = 0; k < connected; ++k) {
+        size_t np = 0;
+        CHECK_OK(projcurve_shape_result_curve_info(NULL, sr, k, &np, NULL, NULL));
+        *n_pieces += np;
+        for (size_t j = 0; j < np; ++j) {
+            size_t fi = 0, b = 0;
+            const projcurve_result *r = NULL;
+            CHECK_OK(projcurve_shape_result_piece(NULL, sr, k, j, &fi, &r, &b, NULL, NULL, NULL));
+            check_piece_points(name, projcurve_shape_face(shape, fi), r, b, c, dir, 1e-9 * size);
+        }
+    }
+    check_no_hit_missed(name, shape, sr, c, dir, size);
+    if (strcmp(name, "shell_2x2_bspline_oblique") == 0)
+        check_shell(sr);
+    *open_ends += projcurve_shape_result_open_end_count(sr);
+    projcurve_shape_result_destroy(sr);
+    return connected;
+}
+
 static void run_row(const char *name, const char *model_file, const double dir_in[3])
 {
     char path[512];
@@ -198,58 +257,10 @@ static void run_row(const char *name, const char *model_file, const double dir_i
     size_t connected = 0;
     for (size_t si = 0; si < projcurve_model_shape_count(model); ++si) {
         const projcurve_shape *shape = projcurve_model_shape(model, si);
-        double box[6] = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
-        for (size_t fi = 0; fi < projcurve_shape_face_count(shape); ++fi) {
-            double fb[6];
-            CHECK_OK(projcurve_face_bounds(NULL, projcurve_shape_face(shape, fi), NULL, fb));
-            for (int k = 0; k < 3; ++k) {
-                box[k] = fmin(box[k], fb[k]);
-                box[k + 3] = fmax(box[k + 3], fb[k + 3]);
-            }
-        }
-        const double size = sqrt((box[3] - box[0]) * (box[3] - box[0]) +
-                                 (box[4] - box[1]) * (box[4] - box[1]) +
-                                 (box[5] - box[2]) * (box[5] - box[2]));
         for (size_t ci = 0; ci < projcurve_model_curve_count(curves); ++ci) {
-            const projcurve_curve *c = projcurve_model_curve(curves, ci);
-            projcurve_shape_result *sr = NULL;
-            projcurve_context *ctx = NULL;
-            CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-            const projcurve_status st = projcurve_project_shape(
-                ctx, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, NULL, &sr);
-            if (st != PROJCURVE_OK)
-                pc_test_fail_at(__FILE__, __LINE__, "%s curve %zu: %s: %s", name, ci,
-                                projcurve_status_string(st), projcurve_context_message(ctx));
-            projcurve_context_destroy(ctx);
-            if (sr == NULL)
-                continue;
-            for (size_t k = 0; k < projcurve_shape_result_face_count(sr); ++k) {
-                projcurve_status fs;
-                const char *msg = NULL;
-                CHECK_OK(projcurve_shape_result_face(NULL, sr, k, NULL, NULL, &fs, &msg));
-                if (fs != PROJCURVE_OK || msg[0] != '\0')
-                    pc_test_fail_at(__FILE__, __LINE__, "%s: face %zu: %s %s", name, k,
-                                    projcurve_status_string(fs), msg);
-            }
-            connected += projcurve_shape_result_curve_count(sr);
-            /* traced points: the corrector's 1e-12 of the size; 1e-9 is
-             * far above it and far below any wrong point */
-            for (size_t k = 0; k < projcurve_shape_result_curve_count(sr); ++k) {
-                size_t np = 0;
-                CHECK_OK(projcurve_shape_result_curve_info(NULL, sr, k, &np, NULL, NULL));
-                for (size_t j = 0; j < np; ++j) {
-                    size_t fi = 0, b = 0;
-                    const projcurve_result *r = NULL;
-                    CHECK_OK(projcurve_shape_result_piece(NULL, sr, k, j, &fi, &r, &b, NULL,
-                                                          NULL, NULL));
-                    check_piece_points(name, projcurve_shape_face(shape, fi), r, b, c, dir,
-                                       1e-9 * size);
-                }
-            }
-            check_no_hit_missed(name, shape, sr, c, dir, size);
-            if (strcmp(name, "shell_2x2_bspline_oblique") == 0)
-                check_shell(sr);
-            projcurve_shape_result_destroy(sr);
+            size_t open = 0, pieces = 0;
+            connected += check_pair(name, shape, projcurve_model_curve(curves, ci), dir, &open,
+                                    &pieces);
         }
     }
     const size_t want = expected_count(name);
@@ -259,6 +270,34 @@ static void run_row(const char *name, const char *model_file, const double dir_i
     printf("%s: %zu connected curve(s)\n", name, connected);
     projcurve_model_destroy(model);
     projcurve_model_destroy(curves);
+}
+
+/* linkrods.step (a solid of 37 faces) and a line above it along x at the
+ * middle of its y range, projected along -z: every point on a face, inside
+ * its loops and on its ray, no forward hit missed, consecutive pieces
+ * chained across the solid's edges (no gap: a closed solid). */
+static void run_real(void)
+{
+    projcurve_model *model = NULL;
+    CHECK_OK(projcurve_model_read_file(NULL, pc_test_data_path("real/linkrods.step"), &model));
+    if (model == NULL || projcurve_model_shape_count(model) == 0) {
+        projcurve_model_destroy(model);
+        return;
+    }
+    static const double ctrl[] = {-4.0, 2.7, 20.0, 10.5, 2.7, 20.0}, knots[] = {0, 0, 1, 1};
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_nurbs(NULL, 1, 2, ctrl, NULL, knots, &c));
+    const double down[3] = {0, 0, -1};
+    size_t open = 0, pieces = 0;
+    const size_t connected =
+        check_pair("linkrods", projcurve_model_shape(model, 0), c, down, &open, &pieces);
+    printf("linkrods: %zu connected curve(s), %zu face pieces, %zu open ends\n", connected,
+           pieces, open);
+    CHECK(connected >= 1);
+    CHECK(pieces > connected); /* some chaining happened */
+    CHECK(open == 0);
+    projcurve_curve_destroy(c);
+    projcurve_model_destroy(model);
 }
 
 int main(void)
@@ -282,5 +321,6 @@ int main(void)
     }
     fclose(f);
     CHECK(rows == 5);
+    run_real();
     return pc_test_finish("test_shapeproj_cases");
 }
