@@ -161,6 +161,7 @@ const char *cli_start_name(projcurve_branch_start s)
     case PROJCURVE_START_SILHOUETTE: return "silhouette";
     case PROJCURVE_START_CURVE_CROSSING: return "curve_crossing";
     case PROJCURVE_START_FAILED: return "failed";
+    case PROJCURVE_START_TRIM: return "trim";
     }
     return "unknown";
 }
@@ -175,6 +176,7 @@ const char *cli_end_name(projcurve_branch_end e)
     case PROJCURVE_END_LIMIT: return "limit";
     case PROJCURVE_END_FAILED: return "failed";
     case PROJCURVE_END_CURVE_CROSSING: return "curve_crossing";
+    case PROJCURVE_END_TRIM: return "trim";
     }
     return "unknown";
 }

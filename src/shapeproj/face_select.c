@@ -43,3 +43,9 @@ int pc_curve_box(const projcurve_curve *curve, double box[6])
     }
     return 1;
 }
+
+int pc_swept_box_test(const void *user, const double box[6])
+{
+    const pc_swept_box *s = user;
+    return pc_swept_box_meets(s->curve_box, s->dir, box);
+}

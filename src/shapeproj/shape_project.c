@@ -30,12 +30,18 @@ static projcurve_status select_faces(projcurve_context *ctx, const projcurve_sha
     *sel = malloc((n + 1) * sizeof **sel);
     if (*sel == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory selecting faces");
-    double cb[6];
-    const int bounded = spec->kind == PROJCURVE_PROJECT_DIRECTIONAL && pc_curve_box(curve, cb);
+    pc_swept_box sw;
+    const int bounded =
+        spec->kind == PROJCURVE_PROJECT_DIRECTIONAL && pc_curve_box(curve, sw.curve_box);
+    sw.dir = spec->vec;
     *n_sel = 0;
+    if (bounded && shape != NULL) {
+        *n_sel = pc_face_bvh_query(&shape->bvh, pc_swept_box_test, &sw, *sel);
+        return PROJCURVE_OK;
+    }
     for (size_t i = 0; i < n; ++i) {
         const double *box = shape ? shape->boxes + 6 * i : face->box;
-        if (!bounded || pc_swept_box_meets(cb, spec->vec, box))
+        if (!bounded || pc_swept_box_test(&sw, box))
             (*sel)[(*n_sel)++] = i;
     }
     return PROJCURVE_OK;
