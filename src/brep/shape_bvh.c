@@ -82,6 +82,7 @@ projcurve_status pc_face_bvh_build(projcurve_context *ctx, pc_face_bvh *bvh, con
     for (size_t i = 0; i < n; ++i)
         bvh->order[i] = i;
     bvh->n_faces = n;
+    bvh->boxes = boxes;
     if (n == 0)
         return PROJCURVE_OK;
     build_state b = {.boxes = boxes, .order = bvh->order, .nodes = bvh->nodes};
@@ -118,8 +119,11 @@ size_t pc_face_bvh_query(const pc_face_bvh *bvh, pc_box_test test, const void *u
         if (!test(user, nd->box))
             continue;
         if (nd->count > 0) {
-            for (size_t i = 0; i < nd->count; ++i)
-                out[found++] = bvh->order[nd->first + i];
+            for (size_t i = 0; i < nd->count; ++i) {
+                const size_t f = bvh->order[nd->first + i];
+                if (test(user, bvh->boxes + 6 * f))
+                    out[found++] = f;
+            }
         } else if (top + 2 <= PC_FACE_BVH_STACK) { /* always: depth <= log2(n) + 1 */
             stack[top++] = nd->right;
             stack[top++] = nd->left;

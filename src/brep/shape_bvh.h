@@ -26,10 +26,12 @@ typedef struct pc_face_bvh {
     pc_face_bvh_node *nodes;
     size_t n_nodes;
     size_t *order; /* face indices, leaf by leaf */
+    const double *boxes; /* borrowed: the boxes it was built over */
     size_t n_faces;
 } pc_face_bvh;
 
-/* Builds the tree over n boxes (6 doubles each). Statuses: OK, NO_MEMORY. */
+/* Builds the tree over n boxes (6 doubles each; borrowed, they must
+ * outlive the tree). Statuses: OK, NO_MEMORY. */
 projcurve_status pc_face_bvh_build(projcurve_context *ctx, pc_face_bvh *bvh, const double *boxes,
                                    size_t n);
 void pc_face_bvh_free(pc_face_bvh *bvh);
