@@ -14,7 +14,9 @@
  *     chaining tolerance of 1e-9 of the size): two connected curves, the
  *     two ends at the gap counted as open;
  *   - a closed shell with one face missing (a face the reader could not
- *     build): two connected curves, both ends at the missing face open.
+ *     build): two connected curves, both ends at the missing face open;
+ *   - MAX_POINTS at its smallest (16): LIMIT_REACHED with the result kept,
+ *     the faces that hit it saying so with their status and message.
  */
 #include <math.h>
 #include <stdio.h>
@@ -194,6 +196,37 @@ int main(void)
     CHECK(projcurve_shape_result_curve_count(sr) == 2);
     CHECK(projcurve_shape_result_open_end_count(sr) == 2);
     projcurve_shape_result_destroy(sr);
+    free_shell(&sh);
+
+    make_shell(s, 0.0, 4, PROJCURVE_SHAPE_OPEN_SHELL, &sh);
+    projcurve_options *few = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &few));
+    CHECK_OK(projcurve_options_set_int(NULL, few, PROJCURVE_OPT_MAX_POINTS, 16));
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    sr = NULL;
+    CHECK_STATUS(projcurve_project_shape(ctx, sh.shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, few,
+                                         &sr),
+                 PROJCURVE_ERR_LIMIT_REACHED);
+    CHECK(projcurve_context_message(ctx)[0] != '\0');
+    CHECK(sr != NULL);
+    size_t limited = 0;
+    for (size_t i = 0; i < projcurve_shape_result_face_count(sr); ++i) {
+        projcurve_status fs = PROJCURVE_OK;
+        const char *msg = NULL;
+        const projcurve_result *fr = NULL;
+        CHECK_OK(projcurve_shape_result_face(NULL, sr, i, NULL, &fr, &fs, &msg));
+        if (fs == PROJCURVE_ERR_LIMIT_REACHED) {
+            ++limited;
+            CHECK(fr != NULL);
+            CHECK(msg[0] != '\0');
+        }
+    }
+    CHECK(limited > 0);
+    CHECK(projcurve_shape_result_curve_count(sr) > 0);
+    projcurve_shape_result_destroy(sr);
+    projcurve_context_destroy(ctx);
+    projcurve_options_destroy(few);
     free_shell(&sh);
 
     projcurve_curve_destroy(c);
