@@ -12,6 +12,7 @@
 #include "brep/shape.h"
 #include "common/error.h"
 #include "faceproj/face_project.h"
+#include "faceproj/loop_crossing.h"
 #include "shapeproj/chain.h"
 #include "shapeproj/face_select.h"
 
@@ -58,6 +59,20 @@ static double chain_tolerance(const projcurve_shape *shape, const projcurve_shap
     return tol;
 }
 
+/* The message of a face projected with OK: "" or how many of its
+ * crossings were not located to PC_CROSSING_TOL. */
+static projcurve_status set_ok_message(projcurve_context *ctx, pc_face_part *part,
+                                       size_t unrefined)
+{
+    char text[160] = "";
+    if (unrefined > 0)
+        snprintf(text, sizeof text,
+                 "%zu loop crossing(s) not located to %g of the model size (kept at the best "
+                 "iterate)",
+                 unrefined, PC_CROSSING_TOL);
+    return pc_face_part_set_message(ctx, part, text);
+}
+
 /* One face of a shape, with a context of its own so that its message is
  * kept with it. Returns NO_MEMORY (the call fails) or OK. */
 static projcurve_status project_part(projcurve_context *ctx, pc_face_part *part,
@@ -81,15 +96,8 @@ static projcurve_status project_part(projcurve_context *ctx, pc_face_part *part,
                      projcurve_context_message(fctx));
     else if (part->status != PROJCURVE_OK)
         st = pc_face_part_set_message(ctx, part, projcurve_context_message(fctx));
-    else if (unrefined > 0) {
-        char text[160];
-        snprintf(text, sizeof text,
-                 "%zu loop crossing(s) not located to %g of the model size (kept at the best "
-                 "iterate)",
-                 unrefined, 1e-10);
-        st = pc_face_part_set_message(ctx, part, text);
-    } else
-        st = pc_face_part_set_message(ctx, part, "");
+    else
+        st = set_ok_message(ctx, part, unrefined);
     projcurve_context_destroy(fctx);
     return st;
 }
@@ -119,7 +127,7 @@ projcurve_status pc_shape_project(projcurve_context *ctx, const projcurve_shape 
             if (!pc_status_keeps_result(part->status))
                 st = part->status;
             else
-                st = pc_face_part_set_message(ctx, part, "");
+                st = set_ok_message(ctx, part, unrefined);
         } else {
             st = project_part(ctx, part, curve, spec, p);
         }
