@@ -1129,7 +1129,10 @@ PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
  * (projcurve_shape_edge_use) whose start lies within the chaining
  * tolerance of its end, in 3D and on the curve (|P(t1) - P(t2)|): the
  * largest of the shape's sewing tolerance, the faces' model precision
- * (projcurve_face_tolerance) and 1e-9 of the shape's size. Connected
+ * (projcurve_face_tolerance) and 1e-9 of the shape's size. On a closed
+ * curve (P(t0) and P(t1) within that tolerance) the piece that ends the
+ * curve continues into the piece of the same face that starts it, and the
+ * connected curve is closed (projcurve_shape_result_curve_info). Connected
  * curves come in increasing order of their first curve parameter, then of
  * the distance of their first point along Dir (orthogonal: from the curve).
  * A face whose projection fails is kept with its status and message

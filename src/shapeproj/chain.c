@@ -19,6 +19,8 @@ typedef struct node {
     double depth; /* of its first point: along Dir, or the distance */
     size_t next, prev; /* SIZE_MAX: none */
     int done;
+    projcurve_branch_start start;
+    projcurve_branch_end end;
 } node;
 
 #define NONE ((size_t)-1)
@@ -49,6 +51,8 @@ static projcurve_status fill_node(projcurve_context *ctx, const pc_face_part *pa
                                                           : vec3_norm(d);
     n->next = n->prev = NONE;
     n->done = 0;
+    n->start = part->result->branches[b].start;
+    n->end = part->result->branches[b].end;
     return PROJCURVE_OK;
 }
 
@@ -67,17 +71,23 @@ static size_t edge_uses(const projcurve_shape *shape, long id)
                : 0;
 }
 
-/* The continuation of node a: the nearest start on the same edge within tol. */
-static size_t find_next(const node *nodes, size_t n, size_t a, double tol)
+/* The continuation of node a: the nearest start on the same edge within
+ * tol; or, on a closed curve, the piece of the same face that starts the
+ * curve where a ends it (closed: the curve's ends meet within tol). */
+static size_t find_next(const node *nodes, size_t n, size_t a, double tol, int closed)
 {
     const pc_trim_end *e = &nodes[a].trim->end;
-    if (!e->on_loop || e->edge < 0)
+    const int wraps = closed && nodes[a].end == PROJCURVE_END_CURVE_END;
+    if (!wraps && (!e->on_loop || e->edge < 0))
         return NONE;
     size_t best = NONE;
     double best_d = INFINITY;
     for (size_t b = 0; b < n; ++b) {
         const pc_trim_end *s = &nodes[b].trim->start;
-        if (b == a || nodes[b].prev != NONE || !s->on_loop || s->edge != e->edge)
+        if (b == a || nodes[b].prev != NONE)
+            continue;
+        if (wraps ? nodes[b].start != PROJCURVE_START_CURVE_START || nodes[b].part != nodes[a].part
+                  : !s->on_loop || s->edge != e->edge)
             continue;
         const double d = vec3_dist(nodes[a].s_end, nodes[b].s_start);
         if (d <= tol && vec3_dist(nodes[a].p_end, nodes[b].p_start) <= tol && d < best_d) {
@@ -160,10 +170,11 @@ static int is_gap(const node *nodes, size_t n, size_t a, int at_end,
 }
 
 static projcurve_status link_and_emit(projcurve_context *ctx, projcurve_shape_result *r,
-                                      node *nodes, size_t n, const projcurve_shape *shape)
+                                      node *nodes, size_t n, const projcurve_shape *shape,
+                                      int closed)
 {
     for (size_t a = 0; a < n; ++a) {
-        const size_t b = find_next(nodes, n, a, r->chain_tol);
+        const size_t b = find_next(nodes, n, a, r->chain_tol, closed);
         if (b != NONE) {
             nodes[a].next = b;
             nodes[b].prev = a;
@@ -230,8 +241,18 @@ projcurve_status pc_chain_pieces(projcurve_context *ctx, projcurve_shape_result 
             st = fill_node(ctx, &r->parts[i], b, curve, spec, &nodes[m]);
             ++m;
         }
+    int closed = 0;
+    if (st == PROJCURVE_OK) {
+        pc_vec3 e0, e1;
+        st = pc_curve_eval(curve, curve->t0, 0, NULL, &e0);
+        if (st == PROJCURVE_OK)
+            st = pc_curve_eval(curve, curve->t1, 0, NULL, &e1);
+        if (st != PROJCURVE_OK)
+            st = pc_fail(ctx, st, "the curve could not be evaluated while chaining");
+        closed = st == PROJCURVE_OK && vec3_dist(e0, e1) <= r->chain_tol;
+    }
     if (st == PROJCURVE_OK)
-        st = link_and_emit(ctx, r, nodes, n, shape);
+        st = link_and_emit(ctx, r, nodes, n, shape, closed);
     free(nodes);
     return st;
 }

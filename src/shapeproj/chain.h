@@ -7,7 +7,10 @@
  * (START_TRIM; the shape's edge uses are exactly the loop pieces of one
  * id) whose start is within the chaining tolerance of A's end both in 3D
  * (S_A(end) against S_B(start)) and on the curve (P(t_A) against P(t_B));
- * of several, the nearest in 3D, then the lowest (face, branch). Chains
+ * of several, the nearest in 3D, then the lowest (face, branch). On a
+ * closed curve (its ends within the tolerance) the piece that ends the
+ * curve (END_CURVE_END) continues with the piece of the same face that
+ * starts it (START_CURVE_START) at the same point. Chains
  * start at pieces no other continues into; what is left are closed loops
  * of pieces, started at their piece of smallest t. Connected curves are
  * sorted by the smallest t of their first piece, then by the distance of

@@ -15,6 +15,9 @@
  *     two ends at the gap counted as open;
  *   - a closed shell with one face missing (a face the reader could not
  *     build): two connected curves, both ends at the missing face open;
+ *   - a closed curve (a circle around the shell's centre, starting on face
+ *     10): one closed connected curve of five pieces, the last (ending the
+ *     curve) continuing into the first (starting it) on face 10;
  *   - MAX_POINTS at its smallest (16): LIMIT_REACHED with the result kept,
  *     the faces that hit it saying so with their status and message.
  */
@@ -156,6 +159,48 @@ static void check_four(const projcurve_shape *shape, const projcurve_shape_resul
     CHECK(np == 4 && faces[0] == 0 && faces[1] == 1 && faces[2] == 2 && faces[3] == 3);
 }
 
+static projcurve_curve *circle(void)
+{
+    const double cx = 10.5, cy = 9.3, r = 5.0, z = 10.0, h = sqrt(0.5);
+    const double d[9][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0},
+                            {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
+    double ctrl[27], w[9];
+    for (int i = 0; i < 9; ++i) {
+        ctrl[3 * i] = cx + r * d[i][0];
+        ctrl[3 * i + 1] = cy + r * d[i][1];
+        ctrl[3 * i + 2] = z;
+        w[i] = i % 2 ? h : 1.0;
+    }
+    static const double knots[] = {0, 0, 0, 1, 1, 2, 2, 3, 3, 4, 4, 4};
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_nurbs(NULL, 2, 9, ctrl, w, knots, &c));
+    return c;
+}
+
+static void check_closed(const projcurve_shape *shape, const double dir[3])
+{
+    projcurve_curve *c = circle();
+    projcurve_shape_result *sr = NULL;
+    CHECK_OK(projcurve_project_shape(NULL, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, NULL,
+                                     &sr));
+    CHECK(projcurve_shape_result_curve_count(sr) == 1);
+    size_t np = 0;
+    int closed = 0;
+    CHECK_OK(projcurve_shape_result_curve_info(NULL, sr, 0, &np, NULL, &closed));
+    CHECK(np == 5);
+    CHECK(closed == 1);
+    size_t first = 9, last = 9;
+    projcurve_branch_start s;
+    projcurve_branch_end e;
+    CHECK_OK(projcurve_shape_result_piece(NULL, sr, 0, 0, &first, NULL, NULL, NULL, &s, NULL));
+    CHECK(s == PROJCURVE_START_CURVE_START);
+    CHECK_OK(projcurve_shape_result_piece(NULL, sr, 0, np - 1, &last, NULL, NULL, NULL, NULL, &e));
+    CHECK(e == PROJCURVE_END_CURVE_END);
+    CHECK(first == 1 && last == 1);
+    projcurve_shape_result_destroy(sr);
+    projcurve_curve_destroy(c);
+}
+
 int main(void)
 {
     projcurve_surface *s = sheet();
@@ -170,6 +215,7 @@ int main(void)
     CHECK(projcurve_shape_result_face_count(sr) == 4);
     check_four(sh.shape, sr);
     projcurve_shape_result_destroy(sr);
+    check_closed(sh.shape, dir);
 
     projcurve_curve *near = u_curve(3.0);
     sr = NULL;
