@@ -123,23 +123,50 @@ void pc_loop_piece_eval(const pc_loop_samples *s, size_t which, double tau, doub
     dc[1] = (pb[1] - pa[1]) / (b - a);
 }
 
-/* Golden-section-free local search: a few Newton steps on (c - x).c' = 0
- * from a sample, clamped to the piece's domain. */
+/* The local search after the polylines: a few Newton steps on
+ * (c - x).c' = 0, clamped to the piece's domain. */
 #define PC_NEAREST_ITERATIONS 8
+
+/* Distance from x to the box {u0, u1, v0, v1}. */
+static double box_distance(const double box[4], const double x[2])
+{
+    const double du = fmax(0.0, fmax(box[0] - x[0], x[0] - box[1]));
+    const double dv = fmax(0.0, fmax(box[2] - x[1], x[1] - box[3]));
+    return hypot(du, dv);
+}
 
 double pc_loop_samples_nearest(const pc_loop_samples *s, const double uv[2], size_t *which,
                                double *tau)
 {
+    /* nearest point of the sampled polylines (exact for degree-1 pieces,
+     * whose samples are their control points), then Newton on the piece */
     double best = INFINITY;
     for (size_t i = 0; i < s->n_pieces; ++i) {
         const pc_piece_samples *ps = &s->pieces[i];
-        for (size_t j = 0; j < ps->count; ++j) {
-            const pc_loop_sample *q = &s->items[ps->first + j];
-            const double d = hypot(q->uv[0] - uv[0], q->uv[1] - uv[1]);
+        if (box_distance(ps->box, uv) > best)
+            continue;
+        for (size_t j = 0; j + 1 < ps->count; ++j) {
+            const pc_loop_sample *a = &s->items[ps->first + j], *b = a + 1;
+            const double e[2] = {b->uv[0] - a->uv[0], b->uv[1] - a->uv[1]};
+            const double ee = e[0] * e[0] + e[1] * e[1];
+            double f = ee > 0.0 ? ((uv[0] - a->uv[0]) * e[0] + (uv[1] - a->uv[1]) * e[1]) / ee
+                                : 0.0;
+            f = fmin(1.0, fmax(0.0, f));
+            const double d =
+                hypot(a->uv[0] + f * e[0] - uv[0], a->uv[1] + f * e[1] - uv[1]);
             if (d < best) {
                 best = d;
                 *which = i;
-                *tau = q->tau;
+                *tau = a->tau + f * (b->tau - a->tau);
+            }
+        }
+        if (ps->count == 1) {
+            const pc_loop_sample *a = &s->items[ps->first];
+            const double d = hypot(a->uv[0] - uv[0], a->uv[1] - uv[1]);
+            if (d < best) {
+                best = d;
+                *which = i;
+                *tau = a->tau;
             }
         }
     }

@@ -84,7 +84,9 @@ static size_t find_next(const node *nodes, size_t n, size_t a, double tol, int c
     double best_d = INFINITY;
     for (size_t b = 0; b < n; ++b) {
         const pc_trim_end *s = &nodes[b].trim->start;
-        if (b == a || nodes[b].prev != NONE)
+        /* b == a: a piece closing on itself (a closed curve projected
+         * whole, across a seam edge or at the curve's ends) */
+        if (nodes[b].prev != NONE)
             continue;
         if (wraps ? nodes[b].start != PROJCURVE_START_CURVE_START || nodes[b].part != nodes[a].part
                   : !s->on_loop || s->edge != e->edge)
