@@ -1104,7 +1104,9 @@ typedef struct projcurve_shape_result projcurve_shape_result;
  * there by subdivision (still exactly on S) and its compact forms are
  * restricted to the kept t range by knot insertion; the parts outside are
  * dropped. The result has one face (index 0) and its connected curves are
- * its branches, one piece each. kind CONICAL gives UNSUPPORTED.
+ * its branches, chained as projcurve_project_shape chains (across a seam
+ * edge of the face, and the end of a closed curve into its start). kind
+ * CONICAL gives UNSUPPORTED.
  * Statuses: OK, NULL_ARGUMENT (face, curve, out; vec for DIRECTIONAL),
  * INVALID_ARGUMENT (kind), UNSUPPORTED (CONICAL), and those of the
  * projection onto the surface (LIMIT_REACHED and CANCELLED with the
