@@ -169,6 +169,8 @@ projcurve_status pc_loop_crossings(projcurve_context *ctx, const pc_loop_samples
     const double t_hi = fmax(poly[0], poly[3 * (n - 1)]);
     for (size_t i = from; i < hits->count; ++i)
         refine_hit(s, proj, t_lo, t_hi, &hits->items[i]);
+    if (hits->count == from)
+        return PROJCURVE_OK; /* no crossing (items may be NULL) */
     qsort(hits->items + from, hits->count - from, sizeof *hits->items, by_t);
     drop_duplicates(proj, hits, from);
     return PROJCURVE_OK;
