@@ -20,6 +20,10 @@
  * (relative to the domain's length) is the seam's (the joined forms put a
  * knot at each jump's t; a second knot beside it would only add a sliver). */
 #define PC_SEAM_SPLIT_SNAP 1e-12
+/* How far the domains of a branch's two forms may differ (relative to the
+ * length): the pieces' pcurves joined end where the last piece's range
+ * does, which the joining rounds (1.1e-12 seen on a unit range). */
+#define PC_SEAM_SPLIT_SAME_DOMAIN 1e-9
 
 /* A working copy of a clamped curve: degree p, n poles of 4 doubles. */
 typedef struct split_work {
@@ -223,7 +227,8 @@ projcurve_status pc_seam_split(projcurve_context *ctx, const pc_nurbs_curve *pcu
     *out = NULL;
     *n_out = 0;
     const double t0 = pcurve->t0, t1 = pcurve->t1, margin = PC_SEAM_SPLIT_SNAP * (t1 - t0);
-    if (curve != NULL && !(fabs(curve->t0 - t0) <= margin && fabs(curve->t1 - t1) <= margin))
+    const double same = PC_SEAM_SPLIT_SAME_DOMAIN * (t1 - t0);
+    if (curve != NULL && !(fabs(curve->t0 - t0) <= same && fabs(curve->t1 - t1) <= same))
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "a pcurve over [%.17g, %.17g] and a 3D curve over [%.17g, %.17g] do "
                        "not split at the same seams",

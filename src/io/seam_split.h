@@ -29,7 +29,7 @@ typedef struct pc_seam_segment {
  * the jumps' t strictly inside the pcurve's domain (a jump within 1e-12 of
  * the domain's length of a knot is taken at that knot), and shifts pcurve
  * segment k by the sum of the jumps (du, dv) before it. Both curves must
- * have the same domain. A pcurve's end that lies outside domain (u0, u1,
+ * have the same domain (to 1e-9 of its length). A pcurve's end that lies outside domain (u0, u1,
  * v0, v1) by rounding (at most 1e-12 of its width) is put on its edge.
  * *out gets n_seams + 1 segments at most (one per jump inside, plus one),
  * *n_out their count; release with pc_seam_segments_free.
