@@ -5,7 +5,9 @@
  * with 141 boundaries) and untrimmed surfaces (a 128 that bounds no 144 or
  * 143 is a face on its whole domain, as CAD readers take it). The loops
  * are the parameter-space curves (BPTR of 142, PSCPT of 141); each member
- * of a composite 102 is a piece of its own. All faces of a file make one
+ * of a composite 102 is a piece of its own; on an analytic base surface a
+ * 144's loops are its 142s' model-space curves (CPTR) mapped onto the
+ * surface's NURBS instead (iges_face_map.c). All faces of a file make one
  * shape of independent faces: IGES 144 shares no edge records.
  *
  * A face that cannot be built (a surface kind not built, a loop without
