@@ -158,18 +158,6 @@ cleanup:
     return st;
 }
 
-/* A branch over a t range narrower than a curve's domain may be
- * (nurbs/input.h: a sliver of the curve) has pieces but no curve handle of
- * its own: it is written as its traced pcurve, as a branch not composed. */
-static int branch_forms_curve(const projcurve_result *r, size_t branch)
-{
-    double t[2] = {0.0, 0.0};
-    if (projcurve_result_branch_info(NULL, r, branch, t, NULL, NULL, NULL, NULL) != PROJCURVE_OK)
-        return 0;
-    return pc_input_check_domain(NULL, "branch", fmin(t[0], t[1]), fmax(t[0], t[1])) ==
-           PROJCURVE_OK;
-}
-
 /* Entity 142 tying the pcurve and 3D curve (DE pointers, 0 for none) to
  * the surface. */
 static projcurve_status add_curve_on_surface(projcurve_context *ctx, projcurve_iges_writer *w,
@@ -188,6 +176,64 @@ static projcurve_status add_curve_on_surface(projcurve_context *ctx, projcurve_i
                                                 PC_IGES_STATUS_INDEPENDENT, &b, &de);
     free(b.text);
     return st;
+}
+
+/* The traced points of a branch joined across seams that was not composed:
+ * one degree-1 pcurve and one 142 (CPTR 0) per run between jumps (a jump
+ * is a vertex repeated at the same t, on the other side of the seam), so
+ * that no edge of the polyline runs through the domain from one side of
+ * the seam to the other. */
+static projcurve_status add_traced_runs(projcurve_context *ctx, projcurve_iges_writer *w,
+                                        size_t surface_de, const projcurve_result *r,
+                                        size_t branch)
+{
+    const pc_branch *b = &r->branches[branch];
+    const size_t n = b->n_points;
+    double *xyz = malloc(3 * (n + 1) * sizeof *xyz), *t = malloc((n + 1) * sizeof *t);
+    projcurve_status st = PROJCURVE_OK;
+    if (xyz == NULL || t == NULL)
+        st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory writing a pcurve");
+    const int reversed = n > 1 && b->points[0] > b->points[3 * (n - 1)];
+    size_t m = 0;
+    for (size_t k = 0; st == PROJCURVE_OK && k <= n; ++k) {
+        const size_t i = reversed ? n - 1 - k : k;
+        const int jump = k < n && m > 0 && !(b->points[3 * i] > t[m - 1]);
+        if (k == n || jump) { /* the run so far is done */
+            if (m >= 2) {
+                size_t pcurve_de = 0;
+                pc_text_buf buf = {0};
+                pc_iges_format_polyline(&buf, xyz, t, m, 1);
+                st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PARAMETRIC_PART, &buf,
+                                     &pcurve_de);
+                free(buf.text);
+                if (st == PROJCURVE_OK)
+                    st = add_curve_on_surface(ctx, w, surface_de, pcurve_de, 0);
+            }
+            m = 0;
+            if (k == n)
+                break;
+        }
+        t[m] = b->points[3 * i];
+        xyz[3 * m] = b->points[3 * i + 1];
+        xyz[3 * m + 1] = b->points[3 * i + 2];
+        xyz[3 * m + 2] = 0.0;
+        ++m;
+    }
+    free(xyz);
+    free(t);
+    return st;
+}
+
+/* A branch over a t range narrower than a curve's domain may be
+ * (nurbs/input.h: a sliver of the curve) has pieces but no curve handle of
+ * its own: it is written as its traced pcurve, as a branch not composed. */
+static int branch_forms_curve(const projcurve_result *r, size_t branch)
+{
+    double t[2] = {0.0, 0.0};
+    if (projcurve_result_branch_info(NULL, r, branch, t, NULL, NULL, NULL, NULL) != PROJCURVE_OK)
+        return 0;
+    return pc_input_check_domain(NULL, "branch", fmin(t[0], t[1]), fmax(t[0], t[1])) ==
+           PROJCURVE_OK;
 }
 
 /* The 3D curve of a composed branch: the compact one, or the pieces
@@ -287,12 +333,14 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
                                    const projcurve_surface *s, size_t surface_de,
                                    const projcurve_result *r, size_t branch, int compact)
 {
-    if (r->branches[branch].n_seams > 0 && branch_forms_curve(r, branch)) {
+    if (r->branches[branch].n_seams > 0) {
         projcurve_curve *probe = NULL;
-        if (branch_pcurve(NULL, r, branch, compact, &probe) == PROJCURVE_OK) {
+        if (branch_forms_curve(r, branch) &&
+            branch_pcurve(NULL, r, branch, compact, &probe) == PROJCURVE_OK) {
             projcurve_curve_destroy(probe);
             return add_seam_segments(ctx, w, s, surface_de, r, branch, compact);
         }
+        return add_traced_runs(ctx, w, surface_de, r, branch);
     }
     size_t pcurve_de = 0, curve_de = 0;
     projcurve_status st = add_pcurve(ctx, w, r, branch, compact, &pcurve_de);

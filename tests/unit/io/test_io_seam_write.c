@@ -293,6 +293,67 @@ static void write_and_check(const char *what, const projcurve_surface *s,
     projcurve_model_destroy(m);
 }
 
+/* Not composed (PROJCURVE_OPT_COMPOSE 0): the traced points, one polyline
+ * and one 142 (CPTR 0) per run between jumps; no edge of a polyline jumps
+ * across the domain (the seam's two sides are a period apart, an edge of
+ * the trace a small step). */
+static void traced_runs(const projcurve_surface *s, const projcurve_curve *c, size_t jumps)
+{
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(ctx, &o));
+    CHECK_OK(projcurve_options_set_int(ctx, o, PROJCURVE_OPT_COMPOSE, 0));
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_orthogonal(ctx, s, c, o, &r));
+    projcurve_options_destroy(o);
+    if (r == NULL)
+        return;
+    CHECK(jumps_of(r) == jumps);
+    projcurve_iges_writer *iw = NULL;
+    CHECK_OK(projcurve_iges_writer_create(ctx, &iw));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, iw, s, r));
+    CHECK_OK(projcurve_iges_writer_write(ctx, iw, path));
+    projcurve_iges_writer_destroy(iw);
+    char *text = pc_test_read_file(path, NULL);
+    pc_arena arena;
+    pc_arena_init(&arena, 1u << 16);
+    size_t work = 0, n_cos = 0;
+    const size_t len = text ? strlen(text) : 0;
+    pc_iges_file f = {.ctx = ctx, .arena = &arena, .work_done = &work, .work_limit = 64 * len};
+    double dom[4];
+    CHECK_OK(projcurve_surface_domain(ctx, s, dom));
+    double widest = 0.0, outside = 0.0;
+    if (text && pc_iges_split(&f, text, len) == PROJCURVE_OK &&
+        pc_iges_read_global(&f) == PROJCURVE_OK && pc_iges_read_directory(&f) == PROJCURVE_OK)
+        for (size_t i = 0; i < f.n_entries; ++i) {
+            if (f.entries[i].type != 142)
+                continue;
+            ++n_cos;
+            pc_iges_params p;
+            long bptr = 0, cptr = -1;
+            pc_io_curve q;
+            const char *reason = NULL;
+            CHECK_OK(pc_iges_params_of(&f, 2 * i + 1, &p));
+            CHECK_OK(pc_iges_int(&p, 3, &bptr));
+            CHECK_OK(pc_iges_int(&p, 4, &cptr));
+            CHECK(cptr == 0);
+            CHECK_OK(pc_iges_curve(&f, (size_t)bptr, &q, &reason));
+            for (size_t k = 0; k < q.n_ctrl; ++k) {
+                const double u = q.ctrl[3 * k], v = q.ctrl[3 * k + 1];
+                outside = fmax(outside, fmax(fmax(dom[0] - u, u - dom[1]),
+                                             fmax(dom[2] - v, v - dom[3])));
+                if (k > 0)
+                    widest = fmax(widest, fabs(u - q.ctrl[3 * (k - 1)]) / (dom[1] - dom[0]));
+            }
+        }
+    CHECK(n_cos == r->n_branches + jumps);
+    CHECK(outside <= 0.0);
+    /* a traced step is far below half the domain's width */
+    CHECK(widest < 0.5);
+    pc_arena_release(&arena);
+    free(text);
+    projcurve_result_destroy(r);
+}
+
 static projcurve_curve *line(const double p0[3], const double p1[3])
 {
     const double ctrl[6] = {p0[0], p0[1], p0[2], p1[0], p1[1], p1[2]};
@@ -316,6 +377,8 @@ static void run(const char *what, pc_shape_surface shape, const double p0[3],
                      : projcurve_project_orthogonal(ctx, s, c, NULL, &r));
     if (r)
         write_and_check(what, s, r, expected_jumps);
+    if (r && dir == NULL && s && c)
+        traced_runs(s, c, expected_jumps);
     projcurve_result_destroy(r);
     projcurve_curve_destroy(c);
     projcurve_surface_destroy(s);
