@@ -20,7 +20,9 @@
 #include "geom/surface.h"
 #include "io/iges.h"
 #include "io/iges_write.h"
+#include "io/seam_split.h"
 #include "nurbs/input.h"
+#include "trace/result.h"
 
 #define PC_IGES_CURVE_ON_SURFACE 142
 #define PC_IGES_COS_PROJECTION 1 /* CRTN: created as a projection */
@@ -156,6 +158,72 @@ cleanup:
     return st;
 }
 
+/* Entity 142 tying the pcurve and 3D curve (DE pointers, 0 for none) to
+ * the surface. */
+static projcurve_status add_curve_on_surface(projcurve_context *ctx, projcurve_iges_writer *w,
+                                             size_t surface_de, size_t pcurve_de,
+                                             size_t curve_de)
+{
+    pc_text_buf b = {0};
+    pc_iges_param_int(&b, PC_IGES_COS_PROJECTION);
+    pc_iges_param_int(&b, (long long)surface_de);
+    pc_iges_param_int(&b, (long long)pcurve_de);
+    pc_iges_param_int(&b, (long long)curve_de);
+    pc_iges_param_int(&b, curve_de ? PC_IGES_COS_PREFER_BOTH : PC_IGES_COS_PREFER_2D);
+    pc_iges_param_end(&b);
+    size_t de;
+    const projcurve_status st = pc_iges_out_add(ctx, &w->out, PC_IGES_CURVE_ON_SURFACE, 0,
+                                                PC_IGES_STATUS_INDEPENDENT, &b, &de);
+    free(b.text);
+    return st;
+}
+
+/* The traced points of a branch joined across seams that was not composed:
+ * one degree-1 pcurve and one 142 (CPTR 0) per run between jumps (a jump
+ * is a vertex repeated at the same t, on the other side of the seam), so
+ * that no edge of the polyline runs through the domain from one side of
+ * the seam to the other. */
+static projcurve_status add_traced_runs(projcurve_context *ctx, projcurve_iges_writer *w,
+                                        size_t surface_de, const projcurve_result *r,
+                                        size_t branch)
+{
+    const pc_branch *b = &r->branches[branch];
+    const size_t n = b->n_points;
+    double *xyz = malloc(3 * (n + 1) * sizeof *xyz), *t = malloc((n + 1) * sizeof *t);
+    projcurve_status st = PROJCURVE_OK;
+    if (xyz == NULL || t == NULL)
+        st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory writing a pcurve");
+    const int reversed = n > 1 && b->points[0] > b->points[3 * (n - 1)];
+    size_t m = 0;
+    for (size_t k = 0; st == PROJCURVE_OK && k <= n; ++k) {
+        const size_t i = reversed ? n - 1 - k : k;
+        const int jump = k < n && m > 0 && !(b->points[3 * i] > t[m - 1]);
+        if (k == n || jump) { /* the run so far is done */
+            if (m >= 2) {
+                size_t pcurve_de = 0;
+                pc_text_buf buf = {0};
+                pc_iges_format_polyline(&buf, xyz, t, m, 1);
+                st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PARAMETRIC_PART, &buf,
+                                     &pcurve_de);
+                free(buf.text);
+                if (st == PROJCURVE_OK)
+                    st = add_curve_on_surface(ctx, w, surface_de, pcurve_de, 0);
+            }
+            m = 0;
+            if (k == n)
+                break;
+        }
+        t[m] = b->points[3 * i];
+        xyz[3 * m] = b->points[3 * i + 1];
+        xyz[3 * m + 1] = b->points[3 * i + 2];
+        xyz[3 * m + 2] = 0.0;
+        ++m;
+    }
+    free(xyz);
+    free(t);
+    return st;
+}
+
 /* A branch over a t range narrower than a curve's domain may be
  * (nurbs/input.h: a sliver of the curve) has pieces but no curve handle of
  * its own: it is written as its traced pcurve, as a branch not composed. */
@@ -168,6 +236,38 @@ static int branch_forms_curve(const projcurve_result *r, size_t branch)
            PROJCURVE_OK;
 }
 
+/* The 3D curve of a composed branch: the compact one, or the pieces
+ * joined where there is none. */
+static projcurve_status branch_curve3d(projcurve_context *ctx, const projcurve_result *r,
+                                       size_t branch, int compact, projcurve_curve **c)
+{
+    projcurve_status st = PROJCURVE_ERR_LIMIT_REACHED;
+    if (compact)
+        st = projcurve_result_branch_compact_curve(NULL, r, branch, c);
+    if (st == PROJCURVE_ERR_NO_MEMORY)
+        return pc_fail(ctx, st, "out of memory for the compact curve of branch %zu", branch);
+    /* no compact 3D curve (its fit hit its bound, or no compact forms):
+     * the pieces joined */
+    if (st == PROJCURVE_ERR_LIMIT_REACHED || st == PROJCURVE_ERR_INVALID_ARGUMENT)
+        st = projcurve_result_branch_curve(ctx, r, branch, c);
+    return st;
+}
+
+/* The pcurve of a composed branch: the compact one, or the pieces' joined;
+ * INVALID_ARGUMENT when it has neither. */
+static projcurve_status branch_pcurve(projcurve_context *ctx, const projcurve_result *r,
+                                      size_t branch, int compact, projcurve_curve **q)
+{
+    projcurve_status st = PROJCURVE_ERR_INVALID_ARGUMENT;
+    if (compact) /* without ctx: a missing compact form is no failure here */
+        st = projcurve_result_branch_compact_pcurve(NULL, r, branch, q);
+    if (st == PROJCURVE_ERR_NO_MEMORY)
+        return pc_fail(ctx, st, "out of memory for the compact pcurve of branch %zu", branch);
+    if (st == PROJCURVE_ERR_INVALID_ARGUMENT) /* no compact forms: the pieces' */
+        st = pc_branch_pcurve(ctx, r, branch, q);
+    return st;
+}
+
 /* The pcurve of a composed branch (compact, or its pieces' (u, v) curves
  * joined), or of one that is not composed (its traced points). */
 static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer *w,
@@ -177,13 +277,7 @@ static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer
     if (!branch_forms_curve(r, branch))
         return add_traced_pcurve(ctx, w, r, branch, de);
     projcurve_curve *pcurve = NULL;
-    projcurve_status st = PROJCURVE_ERR_INVALID_ARGUMENT;
-    if (compact) /* without ctx: a missing compact form is no failure here */
-        st = projcurve_result_branch_compact_pcurve(NULL, r, branch, &pcurve);
-    if (st == PROJCURVE_ERR_NO_MEMORY)
-        return pc_fail(ctx, st, "out of memory for the compact pcurve of branch %zu", branch);
-    if (st == PROJCURVE_ERR_INVALID_ARGUMENT) /* no compact forms: the pieces' */
-        st = pc_branch_pcurve(ctx, r, branch, &pcurve);
+    projcurve_status st = branch_pcurve(ctx, r, branch, compact, &pcurve);
     if (st == PROJCURVE_ERR_INVALID_ARGUMENT)
         return add_traced_pcurve(ctx, w, r, branch, de);
     if (st != PROJCURVE_OK)
@@ -196,28 +290,66 @@ static projcurve_status add_pcurve(projcurve_context *ctx, projcurve_iges_writer
     return st;
 }
 
-static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer *w,
-                                   size_t surface_de, const projcurve_result *r, size_t branch,
-                                   int compact)
+/* A composed branch joined across seams (docs/seams.md): one 142 per seam
+ * segment, each pcurve in the domain (io/seam_split.h). */
+static projcurve_status add_seam_segments(projcurve_context *ctx, projcurve_iges_writer *w,
+                                          const projcurve_surface *s, size_t surface_de,
+                                          const projcurve_result *r, size_t branch,
+                                          int compact)
 {
+    const pc_branch *b = &r->branches[branch];
+    projcurve_curve *q = NULL, *c = NULL;
+    projcurve_status st = branch_pcurve(ctx, r, branch, compact, &q);
+    if (st == PROJCURVE_OK)
+        st = branch_curve3d(ctx, r, branch, compact, &c);
+    pc_seam_segment *seg = NULL;
+    size_t n_seg = 0;
+    if (st == PROJCURVE_OK)
+        st = pc_seam_split(ctx, &q->nurbs, &c->nurbs, b->seams, b->n_seams, s->nurbs.domain,
+                           &seg, &n_seg);
+    for (size_t k = 0; st == PROJCURVE_OK && k < n_seg; ++k) {
+        size_t pcurve_de = 0, curve_de = 0;
+        pc_text_buf t = {0};
+        pc_iges_format_curve(&t, &seg[k].pcurve, 1);
+        st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PARAMETRIC_PART, &t,
+                             &pcurve_de);
+        free(t.text);
+        if (st != PROJCURVE_OK)
+            break;
+        pc_text_buf u = {0};
+        pc_iges_format_curve(&u, &seg[k].curve, 0);
+        st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PART, &u, &curve_de);
+        free(u.text);
+        if (st == PROJCURVE_OK)
+            st = add_curve_on_surface(ctx, w, surface_de, pcurve_de, curve_de);
+    }
+    pc_seam_segments_free(seg, n_seg);
+    projcurve_curve_destroy(q);
+    projcurve_curve_destroy(c);
+    return st;
+}
+
+static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   const projcurve_surface *s, size_t surface_de,
+                                   const projcurve_result *r, size_t branch, int compact)
+{
+    if (r->branches[branch].n_seams > 0) {
+        projcurve_curve *probe = NULL;
+        if (branch_forms_curve(r, branch) &&
+            branch_pcurve(NULL, r, branch, compact, &probe) == PROJCURVE_OK) {
+            projcurve_curve_destroy(probe);
+            return add_seam_segments(ctx, w, s, surface_de, r, branch, compact);
+        }
+        return add_traced_runs(ctx, w, surface_de, r, branch);
+    }
     size_t pcurve_de = 0, curve_de = 0;
     projcurve_status st = add_pcurve(ctx, w, r, branch, compact, &pcurve_de);
     if (st != PROJCURVE_OK)
         return st;
     projcurve_curve *c = NULL;
     st = PROJCURVE_ERR_INVALID_ARGUMENT; /* a sliver: the traced pcurve alone */
-    if (branch_forms_curve(r, branch)) {
-        st = PROJCURVE_ERR_LIMIT_REACHED;
-        if (compact)
-            st = projcurve_result_branch_compact_curve(NULL, r, branch, &c);
-        if (st == PROJCURVE_ERR_NO_MEMORY)
-            return pc_fail(ctx, st, "out of memory for the compact curve of branch %zu",
-                           branch);
-        /* no compact 3D curve (its fit hit its bound, or no compact forms):
-         * the pieces joined */
-        if (st == PROJCURVE_ERR_LIMIT_REACHED || st == PROJCURVE_ERR_INVALID_ARGUMENT)
-            st = projcurve_result_branch_curve(ctx, r, branch, &c);
-    }
+    if (branch_forms_curve(r, branch))
+        st = branch_curve3d(ctx, r, branch, compact, &c);
     if (st == PROJCURVE_OK) {
         st = add_curve(ctx, w, c, PC_IGES_STATUS_PART, &curve_de);
         projcurve_curve_destroy(c);
@@ -226,18 +358,7 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
     }
     if (st != PROJCURVE_OK || (pcurve_de == 0 && curve_de == 0))
         return st;
-    pc_text_buf b = {0};
-    pc_iges_param_int(&b, PC_IGES_COS_PROJECTION);
-    pc_iges_param_int(&b, (long long)surface_de);
-    pc_iges_param_int(&b, (long long)pcurve_de);
-    pc_iges_param_int(&b, (long long)curve_de);
-    pc_iges_param_int(&b, curve_de ? PC_IGES_COS_PREFER_BOTH : PC_IGES_COS_PREFER_2D);
-    pc_iges_param_end(&b);
-    size_t de;
-    st = pc_iges_out_add(ctx, &w->out, PC_IGES_CURVE_ON_SURFACE, 0, PC_IGES_STATUS_INDEPENDENT, &b,
-                         &de);
-    free(b.text);
-    return st;
+    return add_curve_on_surface(ctx, w, surface_de, pcurve_de, curve_de);
 }
 
 static projcurve_status add_result(projcurve_context *ctx, projcurve_iges_writer *w,
@@ -257,7 +378,7 @@ static projcurve_status add_result(projcurve_context *ctx, projcurve_iges_writer
     projcurve_status st = add_surface(ctx, w, s, &surface_de);
     const size_t n = projcurve_result_branch_count(r);
     for (size_t b = 0; st == PROJCURVE_OK && b < n; ++b)
-        st = add_branch(ctx, w, surface_de, r, b, compact);
+        st = add_branch(ctx, w, s, surface_de, r, b, compact);
     if (st != PROJCURVE_OK)
         pc_iges_out_truncate(&w->out, before);
     return st;

@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
+#include "io/seam_split.h"
 #include "io/step_write.h"
 #include "trace/result.h"
 
@@ -119,20 +120,13 @@ static double forms_gap(const projcurve_result *r, const pc_branch *b)
     return q + c;
 }
 
-static projcurve_status add_branch(projcurve_context *ctx, projcurve_step_writer *w,
-                                   long surface, const projcurve_result *r, size_t branch)
+/* One SURFACE_CURVE of the 3D curve #curve3d and the 2D curve q on the
+ * surface #surface, an element of the set. */
+static projcurve_status add_surface_curve(projcurve_context *ctx, projcurve_step_writer *w,
+                                          long surface, long curve3d, const pc_step_spline *q)
 {
-    const pc_branch *b = &r->branches[branch];
-    if (b->compact == PC_COMPACT_NONE || b->compact_pcurve.n_poles == 0)
-        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
-                       "branch %zu has no compact forms to write as STEP (it has no composed "
-                       "pieces: PROJCURVE_OPT_COMPOSE 0, or a limit was reached before it)",
-                       branch);
-    long curve3d, curve2d, pcurve, surface_curve;
-    const pc_step_spline q = view_of_bspline(&b->compact_pcurve);
-    projcurve_status st = add_curve3d(ctx, w, r, branch, &curve3d);
-    if (st == PROJCURVE_OK)
-        st = pc_step_out_curve(ctx, &w->out, &q, &curve2d);
+    long curve2d, pcurve, surface_curve;
+    projcurve_status st = pc_step_out_curve(ctx, &w->out, q, &curve2d);
     if (st == PROJCURVE_OK)
         st = pc_step_out_pcurve(ctx, &w->out, surface, curve2d, &pcurve);
     if (st == PROJCURVE_OK)
@@ -140,6 +134,63 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_step_writer
     if (st == PROJCURVE_OK)
         st = pc_step_out_add_to_set(ctx, &w->out, surface_curve);
     return st;
+}
+
+static pc_step_spline view_of_segment(const pc_nurbs_curve *c, int dim)
+{
+    pc_step_spline v = view_of_nurbs(c);
+    v.dim = dim;
+    return v;
+}
+
+/* A branch joined across seams (docs/seams.md): one SURFACE_CURVE per
+ * seam segment, each pcurve in the domain (io/seam_split.h). */
+static projcurve_status add_seam_segments(projcurve_context *ctx, projcurve_step_writer *w,
+                                          const projcurve_surface *s, long surface,
+                                          const projcurve_result *r, size_t branch)
+{
+    const pc_branch *b = &r->branches[branch];
+    projcurve_curve *q = NULL, *c = NULL;
+    projcurve_status st = projcurve_result_branch_compact_pcurve(ctx, r, branch, &q);
+    if (st == PROJCURVE_OK)
+        st = b->compact_curve.n_poles > 0
+                 ? projcurve_result_branch_compact_curve(ctx, r, branch, &c)
+                 : projcurve_result_branch_curve(ctx, r, branch, &c);
+    pc_seam_segment *seg = NULL;
+    size_t n_seg = 0;
+    if (st == PROJCURVE_OK)
+        st = pc_seam_split(ctx, &q->nurbs, &c->nurbs, b->seams, b->n_seams, s->nurbs.domain,
+                           &seg, &n_seg);
+    for (size_t k = 0; st == PROJCURVE_OK && k < n_seg; ++k) {
+        const pc_step_spline v3 = view_of_segment(&seg[k].curve, 3);
+        const pc_step_spline v2 = view_of_segment(&seg[k].pcurve, 2);
+        long curve3d;
+        st = pc_step_out_curve(ctx, &w->out, &v3, &curve3d);
+        if (st == PROJCURVE_OK)
+            st = add_surface_curve(ctx, w, surface, curve3d, &v2);
+    }
+    pc_seam_segments_free(seg, n_seg);
+    projcurve_curve_destroy(q);
+    projcurve_curve_destroy(c);
+    return st;
+}
+
+static projcurve_status add_branch(projcurve_context *ctx, projcurve_step_writer *w,
+                                   const projcurve_surface *s, long surface,
+                                   const projcurve_result *r, size_t branch)
+{
+    const pc_branch *b = &r->branches[branch];
+    if (b->compact == PC_COMPACT_NONE || b->compact_pcurve.n_poles == 0)
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "branch %zu has no compact forms to write as STEP (it has no composed "
+                       "pieces: PROJCURVE_OPT_COMPOSE 0, or a limit was reached before it)",
+                       branch);
+    if (b->n_seams > 0)
+        return add_seam_segments(ctx, w, s, surface, r, branch);
+    long curve3d;
+    const pc_step_spline q = view_of_bspline(&b->compact_pcurve);
+    const projcurve_status st = add_curve3d(ctx, w, r, branch, &curve3d);
+    return st == PROJCURVE_OK ? add_surface_curve(ctx, w, surface, curve3d, &q) : st;
 }
 
 projcurve_status projcurve_step_writer_add_result(projcurve_context *ctx,
@@ -161,7 +212,7 @@ projcurve_status projcurve_step_writer_add_result(projcurve_context *ctx,
     projcurve_status st = pc_step_out_surface(ctx, &w->out, &s->nurbs, &surface);
     double gap = 0.0;
     for (size_t b = 0; st == PROJCURVE_OK && b < r->n_branches; ++b) {
-        st = add_branch(ctx, w, surface, r, b);
+        st = add_branch(ctx, w, s, surface, r, b);
         gap = fmax(gap, forms_gap(r, &r->branches[b]));
     }
     if (st != PROJCURVE_OK) {

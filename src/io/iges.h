@@ -136,4 +136,18 @@ const char *pc_iges_unit_name(int flag);
 projcurve_status pc_iges_read_topology(pc_iges_file *f, projcurve_model *model,
                                        unsigned char *consumed);
 
+/* The model-space curve c bounding a face on the analytic surface s (whose
+ * NURBS is not in the entity's own parameters) as a degree-1 pcurve on s
+ * by point inversion (iges_face_map.c): every chord's middle within a
+ * quarter of tol_uv of the inverted curve, every point within 10 tol_model
+ * of s; anchor (or NULL) is the (u, v) the loop reached before c, which
+ * picks the side of a seam for a curve along it. *reason is set (and OK
+ * returned) when c does not map (off s, across a closed direction's seam,
+ * not within tol_uv at the most samples). out lives in f's arena.
+ * Statuses: OK, NO_MEMORY. */
+projcurve_status pc_iges_boundary_by_inversion(const pc_iges_file *f, const projcurve_surface *s,
+                                               const pc_io_curve *c, double tol_model,
+                                               double tol_uv, const double *anchor,
+                                               pc_io_curve *out, const char **reason);
+
 #endif /* PC_IO_IGES_H */

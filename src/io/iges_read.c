@@ -99,7 +99,10 @@ static projcurve_status analytic_surface(pc_iges_file *f, projcurve_model *model
         consume(f, uses[i], consumed);
     if (reason != NULL)
         return pc_model_add_skipped(f->ctx, model, "%s (%s)", origin, reason);
-    return pc_model_add_surface_kind(f->ctx, model, &s, origin, kind);
+    st = pc_model_add_surface_kind(f->ctx, model, &s, origin, kind);
+    if (st == PROJCURVE_OK) /* a 144 on it may make a face (iges_topology.c) */
+        f->surface_of[index] = (long)model->n_surfaces - 1;
+    return st;
 }
 
 static projcurve_status read_entity(pc_iges_file *f, projcurve_model *model, size_t index,

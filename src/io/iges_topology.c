@@ -5,7 +5,9 @@
  * with 141 boundaries) and untrimmed surfaces (a 128 that bounds no 144 or
  * 143 is a face on its whole domain, as CAD readers take it). The loops
  * are the parameter-space curves (BPTR of 142, PSCPT of 141); each member
- * of a composite 102 is a piece of its own. All faces of a file make one
+ * of a composite 102 is a piece of its own; on an analytic base surface a
+ * 144's loops are its 142s' model-space curves (CPTR) mapped onto the
+ * surface's NURBS instead (iges_face_map.c). All faces of a file make one
  * shape of independent faces: IGES 144 shares no edge records.
  *
  * A face that cannot be built (a surface kind not built, a loop without
@@ -98,13 +100,16 @@ static const char *surface_kind_name(int type)
 
 /* The model surface of the surface entity at DE de: the one place where a
  * file's surface entity becomes the surface of a face. B-spline surfaces
- * (128) are the model surfaces read by iges_read.c; any other kind gives
- * its name in *kind and a reason. */
-static projcurve_status face_surface(const topo *t, long de, size_t from_de,
+ * (128) are the model surfaces read by iges_read.c; so are the analytic
+ * ones it built (their exact NURBS), taken where analytic_ok (a 144, whose
+ * boundaries are then mapped from their model-space curves: *analytic is
+ * set); any other kind gives its name in *kind and a reason. */
+static projcurve_status face_surface(const topo *t, long de, size_t from_de, int analytic_ok,
                                      const projcurve_surface **out, const char **kind,
-                                     char reason[PC_IGES_REASON])
+                                     int *analytic, char reason[PC_IGES_REASON])
 {
     *out = NULL;
+    *analytic = 0;
     *kind = "other";
     const pc_iges_entry *e = pc_iges_entry_at(t->f, de, from_de);
     if (e == NULL) {
@@ -113,7 +118,8 @@ static projcurve_status face_surface(const topo *t, long de, size_t from_de,
     }
     *kind = surface_kind_name(e->type);
     const long index = t->f->surface_of[(de - 1) / 2];
-    if (e->type != 128 || index < 0) {
+    *analytic = e->type != 128;
+    if (index < 0 || (*analytic && !analytic_ok)) {
         snprintf(reason, PC_IGES_REASON, "surface kind %s (IGES %d at DE %ld) not built", *kind,
                  e->type, de);
         return PROJCURVE_OK;
@@ -154,10 +160,28 @@ static int push_piece(const topo *t, pieces *p, const pc_io_curve *c, long edge,
     return 1;
 }
 
+/* Where a face's boundaries come from model-space curves (a 144 on an
+ * analytic surface, iges_face_map.c): the surface and the face's
+ * tolerances. */
+typedef struct face_map {
+    const projcurve_surface *surface;
+    double tol_model, tol_uv;
+} face_map;
+
+/* The (u, v) a loop's last piece ends at, or NULL at a loop's start. */
+static const double *last_end(const pieces *p, size_t first)
+{
+    if (p->count <= first)
+        return NULL;
+    const pc_piece_input *q = &p->items[p->count - 1];
+    return q->ctrl + 2 * (q->n_ctrl - 1);
+}
+
 /* Appends the pieces of the parameter-space curve at DE de (a 102's
- * members one by one, or one curve). */
+ * members one by one, or one curve); with a map, of the model-space curve
+ * at de, each inverted onto the map's surface. */
 static projcurve_status curve_pieces(const topo *t, long de, size_t from_de, int sense,
-                                     pieces *p, char reason[PC_IGES_REASON])
+                                     const face_map *map, pieces *p, char reason[PC_IGES_REASON])
 {
     const pc_iges_entry *e = pc_iges_entry_at(t->f, de, from_de);
     if (e == NULL)
@@ -194,8 +218,22 @@ static projcurve_status curve_pieces(const topo *t, long de, size_t from_de, int
         if (st != PROJCURVE_OK)
             return st;
         if (skip != NULL) {
-            snprintf(reason, PC_IGES_REASON, "its parameter curve DE %ld: %s", member, skip);
+            snprintf(reason, PC_IGES_REASON, "its %s curve DE %ld: %s",
+                     map ? "model-space" : "parameter", member, skip);
             return PROJCURVE_OK;
+        }
+        if (map != NULL) {
+            pc_io_curve uv;
+            st = pc_iges_boundary_by_inversion(t->f, map->surface, &c, map->tol_model,
+                                               map->tol_uv, last_end(p, first), &uv, &skip);
+            if (st != PROJCURVE_OK)
+                return st;
+            if (skip != NULL) {
+                snprintf(reason, PC_IGES_REASON, "its model-space curve DE %ld: %s", member,
+                         skip);
+                return PROJCURVE_OK;
+            }
+            c = uv;
         }
         mark(t, member);
         if (!push_piece(t, p, &c, member, 1))
@@ -231,9 +269,28 @@ static int push_loop(const topo *t, pieces *p, size_t first, int outer)
     return 1;
 }
 
-/* A loop from a 142 curve on surface: its BPTR. */
-static projcurve_status loop_of_142(const topo *t, long de, size_t from_de, int outer, pieces *p,
-                                    char reason[PC_IGES_REASON])
+/* Marks the curve at DE de (and a 102's members) as read through a face. */
+static void mark_curve(const topo *t, long de, size_t from_de)
+{
+    const pc_iges_entry *c = de != 0 ? pc_iges_entry_at(t->f, de, from_de) : NULL;
+    if (c == NULL)
+        return;
+    mark(t, de);
+    pc_iges_params m;
+    long n = 0;
+    if (c->type == 102 && pc_iges_params_of(t->f, (size_t)de, &m) == PROJCURVE_OK &&
+        pc_iges_int(&m, 1, &n) == PROJCURVE_OK)
+        for (long i = 0; i < n && (size_t)(2 + i) < m.count; ++i) {
+            long member = 0;
+            if (pc_iges_int(&m, 2 + (size_t)i, &member) == PROJCURVE_OK)
+                mark(t, member);
+        }
+}
+
+/* A loop from a 142 curve on surface: its BPTR, or with a map its CPTR
+ * inverted onto the map's surface. */
+static projcurve_status loop_of_142(const topo *t, long de, size_t from_de, int outer,
+                                    const face_map *map, pieces *p, char reason[PC_IGES_REASON])
 {
     const pc_iges_entry *e = pc_iges_entry_at(t->f, de, from_de);
     if (e == NULL)
@@ -252,20 +309,23 @@ static projcurve_status loop_of_142(const topo *t, long de, size_t from_de, int 
         return st;
     const long bptr = ptrs[0], cptr = ptrs[1];
     mark(t, de);
-    if (cptr != 0 && pc_iges_entry_at(t->f, cptr, (size_t)de) != NULL) {
-        mark(t, cptr); /* read through the face */
-        const pc_iges_entry *c = pc_iges_entry_at(t->f, cptr, (size_t)de);
-        if (c->type == 102) {
-            pc_iges_params m;
-            long n = 0;
-            if (pc_iges_params_of(t->f, (size_t)cptr, &m) == PROJCURVE_OK &&
-                pc_iges_int(&m, 1, &n) == PROJCURVE_OK)
-                for (long i = 0; i < n && (size_t)(2 + i) < m.count; ++i) {
-                    long member = 0;
-                    if (pc_iges_int(&m, 2 + (size_t)i, &member) == PROJCURVE_OK)
-                        mark(t, member);
-                }
+    mark_curve(t, cptr, (size_t)de); /* read through the face */
+    if (map != NULL) { /* BPTR is in the analytic entity's parameters: CPTR instead */
+        mark_curve(t, bptr, (size_t)de);
+        if (cptr == 0) {
+            snprintf(reason, PC_IGES_REASON,
+                     "its curve on surface DE %ld on an analytic surface has no model-space "
+                     "curve (CPTR 0) to map onto the surface's NURBS",
+                     de);
+            return PROJCURVE_OK;
         }
+        const size_t first = p->count;
+        st = curve_pieces(t, cptr, (size_t)de, 1, map, p, reason);
+        if (st != PROJCURVE_OK || reason[0])
+            return st;
+        return push_loop(t, p, first, outer)
+                   ? PROJCURVE_OK
+                   : pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
     }
     if (bptr == 0) {
         snprintf(reason, PC_IGES_REASON,
@@ -273,12 +333,24 @@ static projcurve_status loop_of_142(const topo *t, long de, size_t from_de, int 
         return PROJCURVE_OK;
     }
     const size_t first = p->count;
-    st = curve_pieces(t, bptr, (size_t)de, 1, p, reason);
+    st = curve_pieces(t, bptr, (size_t)de, 1, NULL, p, reason);
     if (st != PROJCURVE_OK || reason[0])
         return st;
     return push_loop(t, p, first, outer)
                ? PROJCURVE_OK
                : pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+}
+
+/* A face's ON tolerances: the file's resolution (or a fraction of the
+ * surface's size) in space, and what it is in (u, v). */
+static void face_tolerances(const topo *t, const projcurve_surface *surface, double *tol_model,
+                            double *tol_uv)
+{
+    double box[6];
+    projcurve_surface_bounds(NULL, surface, box);
+    const double size = hypot(hypot(box[3] - box[0], box[4] - box[1]), box[5] - box[2]);
+    *tol_model = t->resolution > 0.0 ? t->resolution : PC_IGES_DEFAULT_RESOLUTION_REL * size;
+    *tol_uv = pc_face_uv_tolerance(surface, *tol_model);
 }
 
 /* Builds the face from the loops read, or lists why it cannot be. */
@@ -297,12 +369,8 @@ static projcurve_status finish_face(const topo *t, const projcurve_surface *surf
         p->loops[l].pieces = p->items + at;
         at += p->loops[l].n_pieces;
     }
-    double box[6];
-    projcurve_surface_bounds(NULL, surface, box);
-    const double size = hypot(hypot(box[3] - box[0], box[4] - box[1]), box[5] - box[2]);
-    const double tol_model = t->resolution > 0.0 ? t->resolution
-                                                 : PC_IGES_DEFAULT_RESOLUTION_REL * size;
-    const double tol_uv = pc_face_uv_tolerance(surface, tol_model);
+    double tol_model, tol_uv;
+    face_tolerances(t, surface, &tol_model, &tol_uv);
     const pc_face_params fp = {.tol_uv = tol_uv, .tol_model = tol_model,
                                .close_tol = PC_IGES_CLOSE_FACTOR * tol_uv, .same_sense = 1,
                                .id = (long)de, .kind = kind, .what = what};
@@ -333,19 +401,24 @@ static projcurve_status read_144(const topo *t, size_t de)
     char reason[PC_IGES_REASON] = "";
     const projcurve_surface *surface = NULL;
     const char *kind = "other";
-    if ((st = face_surface(t, pts, de, &surface, &kind, reason)) != PROJCURVE_OK)
+    int analytic = 0;
+    if ((st = face_surface(t, pts, de, 1, &surface, &kind, &analytic, reason)) != PROJCURVE_OK)
         return st;
+    face_map map = {.surface = surface};
+    if (analytic)
+        face_tolerances(t, surface, &map.tol_model, &map.tol_uv);
+    const face_map *via = analytic ? &map : NULL;
     if (n2 < 0 || (size_t)n2 + 5 > params.count)
         snprintf(reason, PC_IGES_REASON, "%ld inner boundaries, but %zu parameters", n2,
                  params.count - 1);
     pieces p = {0};
     if (!reason[0] && n1 != 0 && pto != 0)
-        st = loop_of_142(t, pto, de, 1, &p, reason);
+        st = loop_of_142(t, pto, de, 1, via, &p, reason);
     for (long k = 0; st == PROJCURVE_OK && !reason[0] && k < n2; ++k) {
         long pti = 0;
         st = pc_iges_int(&params, 5 + (size_t)k, &pti);
         if (st == PROJCURVE_OK)
-            st = loop_of_142(t, pti, de, 0, &p, reason);
+            st = loop_of_142(t, pti, de, 0, via, &p, reason);
     }
     if (st == PROJCURVE_ERR_PARSE) { /* a reference to nothing: this face only */
         snprintf(reason, PC_IGES_REASON, "%s", projcurve_context_message(t->f->ctx));
@@ -373,7 +446,8 @@ static projcurve_status read_143(const topo *t, size_t de)
     char reason[PC_IGES_REASON] = "";
     const projcurve_surface *surface = NULL;
     const char *kind = "other";
-    if ((st = face_surface(t, sptr, de, &surface, &kind, reason)) != PROJCURVE_OK)
+    int analytic = 0; /* a 141's PSCPT is in the analytic entity's parameters: refused */
+    if ((st = face_surface(t, sptr, de, 0, &surface, &kind, &analytic, reason)) != PROJCURVE_OK)
         return st;
     pieces p = {0};
     for (long b = 0; st == PROJCURVE_OK && !reason[0] && b < n; ++b) {
@@ -407,7 +481,7 @@ static projcurve_status read_143(const topo *t, size_t de)
             }
             for (long j = 0; st == PROJCURVE_OK && !reason[0] && j < k; ++j)
                 if ((st = pc_iges_int(&bp, at + 3 + (size_t)j, &pscpt)) == PROJCURVE_OK)
-                    st = curve_pieces(t, pscpt, (size_t)bd, sense == 2 ? -1 : 1, &p, reason);
+                    st = curve_pieces(t, pscpt, (size_t)bd, sense == 2 ? -1 : 1, NULL, &p, reason);
             at += 3 + (size_t)k;
         }
         if (st == PROJCURVE_OK && !reason[0] && !push_loop(t, &p, first, b == 0))
@@ -427,7 +501,10 @@ static projcurve_status read_143(const topo *t, size_t de)
 static projcurve_status natural_faces(const topo *t, const unsigned char *is_base)
 {
     for (size_t i = 0; i < t->f->n_entries; ++i) {
-        if (is_base[i] || t->f->surface_of[i] < 0 || t->f->entries[i].subordinate == 1)
+        /* an analytic entity alone is not a face: a plane 108's extent is
+         * only its display symbol's, as CAD readers take it */
+        if (is_base[i] || t->f->surface_of[i] < 0 || t->f->entries[i].subordinate == 1 ||
+            t->f->entries[i].type != 128)
             continue;
         pieces p = {0};
         const projcurve_surface *surface = t->model->surfaces[t->f->surface_of[i]];

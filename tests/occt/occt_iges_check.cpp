@@ -13,7 +13,10 @@
 // composed with its pcurve, S(p(t)), must agree to 1e-12 relative with the
 // branch's curve and with the library's surface at the (u, v) of the
 // branch's pieces (projcurve_result_piece_pcurve), at samples over every
-// piece.
+// piece. (4) Branches joined across the seams of a full cylinder and a
+// torus: one 142 per seam segment, each pcurve inside OCCT's bounds of its
+// surface (to 1e-12 of the width) and OCCT's S(p(t)) within 2 eps_D of its
+// 3D curve (each compact form is within eps_D of the projection).
 #include <BRep_Tool.hxx>
 #include <Geom_Curve.hxx>
 #include <Geom2d_Curve.hxx>
@@ -44,6 +47,7 @@
 extern "C" {
 #include "check.h"
 #include "projcurve.h"
+#include "shapes.h"
 #include "trace/result.h"
 }
 
@@ -442,6 +446,93 @@ void check_case(const std::string &dir_out, const char *name, const double dir[3
     projcurve_model_destroy(in);
 }
 
+// A line projected orthogonally around a closed shape (u = 0 and u = 1 on
+// the half-plane y = 0, x > 0; the torus's v seam on its outer equator),
+// written as IGES; OCCT reads one 142 per seam segment, each pcurve
+// inside its surface's bounds.
+void check_seam_case(const std::string &dir_out, const char *name, pc_shape_surface shape,
+                     const double p0[3], const double p1[3], size_t jumps)
+{
+    projcurve_surface *s = pc_shape_surface_create(&shape);
+    pc_shape_surface_free(&shape);
+    const double ctrl[6] = {p0[0], p0[1], p0[2], p1[0], p1[1], p1[2]};
+    const double knots[4] = {0, 0, 1, 1};
+    projcurve_curve *c = nullptr;
+    CHECK_OK(projcurve_curve_create_nurbs(ctx, 1, 2, ctrl, nullptr, knots, &c));
+    projcurve_result *r = nullptr;
+    if (s && c)
+        CHECK_OK(projcurve_project_orthogonal(ctx, s, c, nullptr, &r));
+    projcurve_curve_destroy(c);
+    if (r == nullptr) {
+        projcurve_surface_destroy(s);
+        return;
+    }
+    size_t seen = 0;
+    for (size_t b = 0; b < r->n_branches; ++b)
+        seen += r->branches[b].n_seams;
+    CHECK(seen == jumps);
+    const int segments = static_cast<int>(r->n_branches + jumps);
+    projcurve_iges_writer *w = nullptr;
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, s, r));
+    const std::string path = dir_out + "/occt_seams_" + name + ".igs";
+    CHECK_OK(projcurve_iges_writer_write(ctx, w, path.c_str()));
+    projcurve_iges_writer_destroy(w);
+    check_file(path, {{128, 1}, {126, 2 * segments}, {142, segments}}, 0, segments);
+    double box[6];
+    CHECK_OK(projcurve_surface_bounds(ctx, s, box));
+    const double size = std::max({box[3] - box[0], box[4] - box[1], box[5] - box[2]});
+    const double gap_allowed = 2.0 * r->stats.tol_distance + kAgreeRel * size;
+    IGESControl_Reader reader;
+    CHECK(reader.ReadFile(path.c_str()) == IFSelect_RetDone);
+    Handle(IGESData_IGESModel) model = reader.IGESModel();
+    IGESToBRep_BasicCurve curves;
+    IGESToBRep_BasicSurface surfaces;
+    int seen_cos = 0;
+    for (Standard_Integer i = 1; !model.IsNull() && i <= model->NbEntities(); ++i) {
+        Handle(IGESGeom_CurveOnSurface) cos =
+            Handle(IGESGeom_CurveOnSurface)::DownCast(model->Entity(i));
+        if (cos.IsNull())
+            continue;
+        ++seen_cos;
+        Handle(IGESGeom_BSplineSurface) gs =
+            Handle(IGESGeom_BSplineSurface)::DownCast(cos->Surface());
+        Handle(IGESGeom_BSplineCurve) g2 = Handle(IGESGeom_BSplineCurve)::DownCast(cos->CurveUV());
+        Handle(IGESGeom_BSplineCurve) g3 = Handle(IGESGeom_BSplineCurve)::DownCast(cos->Curve3D());
+        CHECK(!gs.IsNull() && !g2.IsNull() && !g3.IsNull());
+        if (gs.IsNull() || g2.IsNull() || g3.IsNull())
+            continue;
+        Handle(Geom_Surface) occt_s = surfaces.TransferBSplineSurface(gs);
+        Handle(Geom2d_Curve) occt_p = curves.Transfer2dBSplineCurve(g2);
+        Handle(Geom_Curve) occt_c = curves.TransferBSplineCurve(g3);
+        CHECK(!occt_s.IsNull() && !occt_p.IsNull() && !occt_c.IsNull());
+        if (occt_s.IsNull() || occt_p.IsNull() || occt_c.IsNull())
+            continue;
+        double u1, u2, v1, v2;
+        occt_s->Bounds(u1, u2, v1, v2);
+        const double t0 = occt_p->FirstParameter(), t1 = occt_p->LastParameter();
+        double outside = 0.0, gap = 0.0;
+        for (int k = 0; k <= 200; ++k) {
+            const double t = t0 + (t1 - t0) * k / 200.0;
+            const gp_Pnt2d uv = occt_p->Value(t);
+            outside = std::max({outside, (u1 - uv.X()) / (u2 - u1), (uv.X() - u2) / (u2 - u1),
+                                (v1 - uv.Y()) / (v2 - v1), (uv.Y() - v2) / (v2 - v1)});
+            gap = std::max(gap, occt_s->Value(uv.X(), uv.Y()).Distance(occt_c->Value(t)));
+        }
+        if (!(outside <= kAgreeRel) || !(gap <= gap_allowed))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "%s: 142 #%d: its pcurve leaves the surface's bounds by %g of the "
+                            "width, S(p(t)) is %g from its 3D curve (allowed %g)",
+                            path.c_str(), seen_cos, outside, gap, gap_allowed);
+        ++pc_test_checks;
+        std::printf("%s: 142 #%d over [%g, %g]: inside the bounds, forms %g apart\n",
+                    path.c_str(), seen_cos, t0, t1, gap);
+    }
+    CHECK(seen_cos == segments);
+    projcurve_result_destroy(r);
+    projcurve_surface_destroy(s);
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -476,6 +567,10 @@ int main(int argc, char **argv)
     const double minus_x[3] = {-1.0, 0.0, 0.0}, minus_z[3] = {0.0, 0.0, -1.0};
     check_case(dir, "song_yong_example1", minus_x);
     check_case(dir, "fold_c_sheet_jump", minus_z);
+    const double cyl0[3] = {2, -1, 0.5}, cyl1[3] = {2, 1, 1.5};
+    check_seam_case(dir, "cylinder", pc_shape_cylinder(1.0, 2.0), cyl0, cyl1, 1);
+    const double tor0[3] = {3, -1, -0.6}, tor1[3] = {3, 1, 0.4};
+    check_seam_case(dir, "torus", pc_shape_torus(2.0, 0.5), tor0, tor1, 2);
 
     projcurve_result_destroy(r);
     projcurve_curve_destroy(c);

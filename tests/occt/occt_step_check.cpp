@@ -14,7 +14,10 @@
 // millimetres), which checks the unit. For each SURFACE_CURVE its PCURVE,
 // converted by OCCT (StepToGeom) on the surface it names, gives S(q(t))
 // equal to ours, and OCCT's own 3D curve and S(q(t)) lie within the file's
-// uncertainty of each other (the two forms of one curve).
+// uncertainty of each other (the two forms of one curve). Branches joined
+// across the seams of a full cylinder and a torus give one SURFACE_CURVE
+// per seam segment, each PCURVE inside OCCT's bounds of its surface (to
+// 1e-12 of the width).
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -49,6 +52,7 @@ extern "C" {
 #include "check.h"
 #include "projcurve.h"
 #include "shapes.h"
+#include "trace/result.h"
 }
 
 namespace {
@@ -402,6 +406,83 @@ void check_circle(const std::string &dir)
     pc_shape_curve_free(&circle);
 }
 
+// A line projected orthogonally around a closed shape, written as STEP:
+// one SURFACE_CURVE per seam segment, each pcurve inside the bounds OCCT
+// gives its surface, its S(q(t)) within 2 eps_D of its 3D curve (each
+// compact form is within eps_D of the projection; the file's uncertainty,
+// the fits' errors measured at their check samples, is exceeded by dense
+// samples by a few percent here, so it is not the bound).
+void check_seam_case(const std::string &dir, const char *name, pc_shape_surface shape,
+                     const double p0[3], const double p1[3], size_t jumps)
+{
+    projcurve_surface *s = pc_shape_surface_create(&shape);
+    pc_shape_surface_free(&shape);
+    const double ctrl[6] = {p0[0], p0[1], p0[2], p1[0], p1[1], p1[2]};
+    const double knots[4] = {0, 0, 1, 1};
+    projcurve_curve *c = nullptr;
+    CHECK_OK(projcurve_curve_create_nurbs(ctx, 1, 2, ctrl, nullptr, knots, &c));
+    projcurve_result *r = nullptr;
+    if (s && c)
+        CHECK_OK(projcurve_project_orthogonal(ctx, s, c, nullptr, &r));
+    projcurve_curve_destroy(c);
+    if (r == nullptr) {
+        projcurve_surface_destroy(s);
+        return;
+    }
+    size_t seen = 0;
+    for (size_t b = 0; b < r->n_branches; ++b)
+        seen += r->branches[b].n_seams;
+    CHECK(seen == jumps);
+    const size_t segments = r->n_branches + jumps;
+    projcurve_step_writer *w = nullptr;
+    CHECK_OK(projcurve_step_writer_create(ctx, &w));
+    CHECK_OK(projcurve_step_writer_add_result(ctx, w, s, r));
+    const std::string path = dir + "/occt_seams_" + name + ".step";
+    CHECK_OK(projcurve_step_writer_write(ctx, w, path.c_str()));
+    projcurve_step_writer_destroy(w);
+    double uncertainty = 0.0, box[6];
+    projcurve_model *back = nullptr;
+    CHECK_OK(projcurve_model_read_file(ctx, path.c_str(), &back));
+    CHECK(back != nullptr && projcurve_model_precision(back, &uncertainty));
+    projcurve_model_destroy(back);
+    CHECK_OK(projcurve_surface_bounds(ctx, s, box));
+    const double size = std::max({box[3] - box[0], box[4] - box[1], box[5] - box[2]});
+    STEPControl_Reader reader;
+    const loaded l = load(reader, path);
+    CHECK(l.edges.size() == segments);
+    const std::vector<occt_surface_curve> scs = surface_curves(l.model);
+    CHECK(scs.size() == segments);
+    for (size_t k = 0; k < scs.size(); ++k) {
+        const occt_surface_curve &o = scs[k];
+        CHECK(!o.curve.IsNull() && !o.pcurve.IsNull() && !o.surface.IsNull());
+        if (o.curve.IsNull() || o.pcurve.IsNull() || o.surface.IsNull())
+            continue;
+        double u1, u2, v1, v2;
+        o.surface->Bounds(u1, u2, v1, v2);
+        const double t0 = o.pcurve->FirstParameter(), t1 = o.pcurve->LastParameter();
+        double outside = 0.0, gap = 0.0;
+        for (int i = 0; i <= 200; ++i) {
+            const double t = t0 + (t1 - t0) * i / 200.0;
+            const gp_Pnt2d uv = o.pcurve->Value(t);
+            outside = std::max({outside, (u1 - uv.X()) / (u2 - u1), (uv.X() - u2) / (u2 - u1),
+                                (v1 - uv.Y()) / (v2 - v1), (uv.Y() - v2) / (v2 - v1)});
+            gap = std::max(gap, o.surface->Value(uv.X(), uv.Y()).Distance(o.curve->Value(t)));
+        }
+        const double allowed = 2.0 * r->stats.tol_distance + kAgreeRel * size;
+        if (!(outside <= kAgreeRel) || !(gap <= allowed))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "%s: SURFACE_CURVE %zu: its pcurve leaves the surface's bounds by "
+                            "%g of the width, S(q(t)) is %g from its 3D curve (allowed %g)",
+                            path.c_str(), k, outside, gap, allowed);
+        ++pc_test_checks;
+        std::printf("%s: SURFACE_CURVE %zu over [%g, %g]: inside the bounds, forms %g apart "
+                    "(uncertainty %g)\n",
+                    path.c_str(), k, t0, t1, gap, uncertainty);
+    }
+    projcurve_result_destroy(r);
+    projcurve_surface_destroy(s);
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -413,6 +494,10 @@ int main(int argc, char **argv)
     check_case(dir, "song_yong_example1", minus_x);
     check_case(dir, "fold_c_sheet_jump", minus_z);
     check_circle(dir);
+    const double cyl0[3] = {2, -1, 0.5}, cyl1[3] = {2, 1, 1.5};
+    check_seam_case(dir, "cylinder", pc_shape_cylinder(1.0, 2.0), cyl0, cyl1, 1);
+    const double tor0[3] = {3, -1, -0.6}, tor1[3] = {3, 1, 0.4};
+    check_seam_case(dir, "torus", pc_shape_torus(2.0, 0.5), tor0, tor1, 2);
     projcurve_context_destroy(ctx);
     return pc_test_finish("occt_step_check");
 }
