@@ -22,10 +22,11 @@ from ._errors import ERROR_CLASSES, Error, Status
 from ._lib import SONAME, fn as _fn, path as _path
 from .geometry import ClosestPoint, Curve, CurveInfo, Hit, Surface, SurfaceInfo
 from .model import (Edge, EdgeUse, Face, FaceInfo, FacePiece, IgesWriter, Model, Shape,
-                    ShapeKind, Where)
+                    ShapeKind, StepWriter, Where)
 from .options import Option, OptionInfo, OptionType, Options, option_table
 from .result import (Branch, BranchEnd, BranchStart, CompactInfo, Piece, Result, Stat,
-                     project_directional, project_orthogonal, project_orthogonal_implicit)
+                     project_conical, project_directional, project_orthogonal,
+                     project_orthogonal_implicit)
 
 __version__ = _generated.VERSION
 
@@ -55,7 +56,7 @@ def status_string(status):
 
 __all__ = ["Error", "Status", "Surface", "Curve", "Model", "Face", "Shape", "Options",
            "Option", "OptionType", "OptionInfo", "Result", "Branch", "Piece", "IgesWriter",
-           "project_directional", "project_orthogonal", "project_orthogonal_implicit",
+           "StepWriter", "project_directional", "project_conical", "project_orthogonal", "project_orthogonal_implicit",
            "BranchStart", "BranchEnd", "Stat", "Where", "ShapeKind", "library_path",
            "library_version", "status_string", "option_table"] + \
           [c.__name__ for c in ERROR_CLASSES.values()]

@@ -232,6 +232,17 @@ def project_directional(surface, curve, direction, options=None, *, allow_partia
                     option_values, surface._ptr, curve._ptr, d.ptr)
 
 
+def project_conical(surface, curve, eye, options=None, *, allow_partial=False, **option_values):
+    """Every branch of the conical (central) projection of curve onto
+    surface from the eye point eye: P(t) maps to the points of the surface
+    on the ray from eye through P(t), beyond P(t) (see project_directional
+    for options and partial results). A curve through the eye raises
+    SingularError; an eye that is not finite NotFiniteError."""
+    e = _arrays.point(eye, "eye")
+    return _project("projcurve_project_conical", surface, curve, options, allow_partial,
+                    option_values, surface._ptr, curve._ptr, e.ptr)
+
+
 def project_orthogonal(surface, curve, options=None, *, allow_partial=False, **option_values):
     """Every branch of foot points of curve on surface (see
     project_directional for options and partial results)."""
@@ -265,4 +276,5 @@ def project_orthogonal_implicit(function, model_size, curve, options=None, *,
 
 
 __all__ = ["Branch", "Result", "Piece", "CompactInfo", "BranchStart", "BranchEnd", "Stat",
-           "project_directional", "project_orthogonal", "project_orthogonal_implicit"]
+           "project_directional", "project_conical", "project_orthogonal",
+           "project_orthogonal_implicit"]
