@@ -6,9 +6,9 @@
  * Every C handle has a move-only owner that releases it (projcurve::context,
  * projcurve::options, projcurve::surface, projcurve::curve,
  * projcurve::result, projcurve::model, projcurve::face,
- * projcurve::iges_writer), like a std::unique_ptr with the right deleter:
- * get() gives the C handle, release() hands it over, reset() replaces it,
- * and a moved-from owner holds nothing. Handles borrowed from another
+ * projcurve::iges_writer, projcurve::step_writer), like a std::unique_ptr
+ * with the right deleter: get() gives the C handle, release() hands it
+ * over, reset() replaces it, and a moved-from owner holds nothing. Handles borrowed from another
  * object (the surfaces, curves, faces and shapes of a model) are views
  * (projcurve::surface_view, projcurve::curve_view, projcurve::face_view,
  * projcurve::shape_view), valid while their owner lives; every owner of a
@@ -1237,6 +1237,35 @@ inline expected<result> try_project_directional(context &ctx, surface_view s, cu
     return detail::attempt([&] { return project_directional(ctx, s, c, dir, opts); });
 }
 
+/**
+ * \brief Conical (central) projection of c onto s from the eye point eye
+ * (projcurve_project_conical): P(t) maps to the points of s on the ray
+ * from eye through P(t), beyond P(t). As project_directional() for
+ * partial results and errors; a curve through the eye throws an error
+ * with status PROJCURVE_ERR_SINGULAR.
+ */
+inline result project_conical(context &ctx, surface_view s, curve_view c,
+                              const std::array<double, 3> &eye, const options *opts = nullptr)
+{
+    projcurve_result *raw = nullptr;
+    const status st = projcurve_project_conical(ctx.get(), s.get(), c.get(), eye.data(),
+                                                opts ? opts->get() : nullptr, &raw);
+    return detail::projection(ctx, st, raw);
+}
+/** \brief project_conical() with options. */
+inline result project_conical(context &ctx, surface_view s, curve_view c,
+                              const std::array<double, 3> &eye, const options &opts)
+{
+    return project_conical(ctx, s, c, eye, &opts);
+}
+/** \brief project_conical() without throwing. */
+inline expected<result> try_project_conical(context &ctx, surface_view s, curve_view c,
+                                            const std::array<double, 3> &eye,
+                                            const options *opts = nullptr)
+{
+    return detail::attempt([&] { return project_conical(ctx, s, c, eye, opts); });
+}
+
 /** \brief Orthogonal projection of c onto s (projcurve_project_orthogonal); as
  *  project_directional() for partial results and errors. */
 inline result project_orthogonal(context &ctx, surface_view s, curve_view c,
@@ -1793,6 +1822,96 @@ public:
 
 private:
     projcurve_iges_writer *handle_ = nullptr;
+};
+
+/* ======================================================================== */
+/* STEP output                                                               */
+/* ======================================================================== */
+
+/** \brief Owner of a STEP writer: collects surfaces, curves and results, then
+ *  writes one STEP AP214 file. One thread at a time. */
+class step_writer {
+public:
+    /** \brief An empty owner. */
+    step_writer() noexcept = default;
+    /** \brief A new, empty writer (millimetres, uncertainty 1e-7). */
+    explicit step_writer(context &ctx)
+    {
+        projcurve_step_writer *raw = nullptr;
+        ctx.check(projcurve_step_writer_create(ctx.get(), &raw));
+        handle_ = raw;
+    }
+    /** \brief Takes ownership of a C writer. */
+    explicit step_writer(projcurve_step_writer *adopt) noexcept : handle_(adopt) {}
+    step_writer(const step_writer &) = delete;
+    step_writer &operator=(const step_writer &) = delete;
+    /** \brief Moves the handle. */
+    step_writer(step_writer &&other) noexcept : handle_(other.release()) {}
+    /** \brief Releases the current handle, then takes other's. */
+    step_writer &operator=(step_writer &&other) noexcept
+    {
+        if (this != &other)
+            reset(other.release());
+        return *this;
+    }
+    ~step_writer() { reset(); }
+
+    /** \brief The C handle (still owned). */
+    projcurve_step_writer *get() const noexcept { return handle_; }
+    /** \brief Whether it holds a handle. */
+    explicit operator bool() const noexcept { return handle_ != nullptr; }
+    /** \brief Gives the handle up. */
+    projcurve_step_writer *release() noexcept { return std::exchange(handle_, nullptr); }
+    /** \brief Releases the handle and takes adopt instead. */
+    void reset(projcurve_step_writer *adopt = nullptr) noexcept
+    {
+        projcurve_step_writer_destroy(std::exchange(handle_, adopt));
+    }
+
+    /** \brief Adds a surface (written once however often it is added). */
+    step_writer &add_surface(context &ctx, surface_view s)
+    {
+        ctx.check(projcurve_step_writer_add_surface(ctx.get(), handle_, s.get()));
+        return *this;
+    }
+    /** \brief Adds a NURBS curve. */
+    step_writer &add_curve(context &ctx, curve_view c)
+    {
+        ctx.check(projcurve_step_writer_add_curve(ctx.get(), handle_, c.get()));
+        return *this;
+    }
+    /** \brief Adds every branch of r onto s as a SURFACE_CURVE (compact curve
+     *  and pcurve); the writer is left as it was when it throws. */
+    step_writer &add_result(context &ctx, surface_view s, const result &r)
+    {
+        ctx.check(projcurve_step_writer_add_result(ctx.get(), handle_, s.get(), r.get()));
+        return *this;
+    }
+    /** \brief The file's length unit in metres per unit (default 0.001, mm). */
+    step_writer &set_length_unit(context &ctx, double metres_per_unit)
+    {
+        ctx.check(projcurve_step_writer_set_length_unit(ctx.get(), handle_, metres_per_unit));
+        return *this;
+    }
+    /** \brief The file's distance uncertainty in model units, written as given. */
+    step_writer &set_uncertainty(context &ctx, double distance)
+    {
+        ctx.check(projcurve_step_writer_set_uncertainty(ctx.get(), handle_, distance));
+        return *this;
+    }
+    /** \brief Writes the file; the writer stays usable. */
+    void write(context &ctx, const std::string &path) const
+    {
+        ctx.check(projcurve_step_writer_write(ctx.get(), handle_, path.c_str()));
+    }
+    /** \brief write() without throwing. */
+    expected<void> try_write(context &ctx, const std::string &path) const
+    {
+        return detail::attempt([&] { write(ctx, path); });
+    }
+
+private:
+    projcurve_step_writer *handle_ = nullptr;
 };
 
 } // namespace projcurve

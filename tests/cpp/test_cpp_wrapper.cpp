@@ -636,6 +636,88 @@ void test_iges_round_trip(pc::context &ctx, const std::string &dir)
     std::remove((dir + "/test_cpp_wrapper_pieces.igs").c_str());
 }
 
+// Conical from an eye above the saddle: every traced point lies on the ray
+// from the eye through P(t), beyond P(t), and on S; a curve through the eye
+// and a NaN eye throw with their statuses.
+void test_conical(pc::context &ctx)
+{
+    const pc::surface s = pc::surface::nurbs(ctx, 1, 1, 2, 2, saddle_net, {}, unit_knots, unit_knots);
+    const pc::curve line = pc::curve::nurbs(ctx, 1, line_ctrl, {}, unit_knots);
+    const std::array<double, 3> eye{0.5, 0.45, 20};
+    const pc::result r = pc::project_conical(ctx, s, line, eye);
+    CHECK(r.complete() && r.branch_count() == 1 && r.failure_count() == 0);
+    const pc::branch_info b = r.branch(ctx, 0);
+    CHECK(b.t_range[0] == 0 && b.t_range[1] == 1 && b.n_points >= 2 && b.n_pieces >= 1);
+    const std::vector<double> pts = r.branch_points(ctx, 0);
+    for (std::size_t i = 0; i + 2 < pts.size(); i += 3) {
+        const std::array<double, 3> p = line_at(pts[i]), q = saddle(pts[i + 1], pts[i + 2]);
+        const std::array<double, 3> ray{p[0] - eye[0], p[1] - eye[1], p[2] - eye[2]};
+        const std::array<double, 3> eq{q[0] - eye[0], q[1] - eye[1], q[2] - eye[2]};
+        const std::array<double, 3> cr{eq[1] * ray[2] - eq[2] * ray[1],
+                                       eq[2] * ray[0] - eq[0] * ray[2],
+                                       eq[0] * ray[1] - eq[1] * ray[0]};
+        const double along = (q[0] - p[0]) * ray[0] + (q[1] - p[1]) * ray[1] + (q[2] - p[2]) * ray[2];
+        // Distance of q to the ray, relative: the corrector's tolerance.
+        CHECK(dist3(cr, {0, 0, 0}) / dist3(ray, {0, 0, 0}) <= corrector_tol && along >= 0);
+    }
+    // Not the directional result: the eye's rays lean (by ~0.04 in u at t = 0).
+    const pc::result down = pc::project_directional(ctx, s, line, {0, 0, -1});
+    CHECK(std::fabs(r.branch_points(ctx, 0)[1] - down.branch_points(ctx, 0)[1]) > 1e-2);
+
+    pc::options opts(ctx);
+    opts.set_double(ctx, PROJCURVE_OPT_TOL_DISTANCE, 1e-6);
+    CHECK(pc::project_conical(ctx, s, line, eye, opts).branch_count() == 1);
+    CHECK_THROWS(pc::project_conical(ctx, s, line, line_at(0.5)), PROJCURVE_ERR_SINGULAR, nullptr);
+    const pc::expected<pc::result> nan_eye =
+        pc::try_project_conical(ctx, s, line, {0, std::nan(""), 1}, &opts);
+    CHECK(!nan_eye && nan_eye.code() == PROJCURVE_ERR_NOT_FINITE && !ctx.message().empty());
+    CHECK(pc::try_project_conical(ctx, s, line, eye).has_value());
+}
+
+// The STEP writer: surface, line and the conical result written and read
+// back; 17 significant digits give the same doubles back.
+void test_step_round_trip(pc::context &ctx, const std::string &dir)
+{
+    const pc::surface s = pc::surface::nurbs(ctx, 1, 1, 2, 2, saddle_net, {}, unit_knots, unit_knots);
+    const pc::curve line = pc::curve::nurbs(ctx, 1, line_ctrl, {}, unit_knots);
+    const pc::result r = pc::project_conical(ctx, s, line, {0.5, 0.45, 20});
+    const pc::curve compact = r.compact_curve(ctx, 0);
+    const pc::curve_data want = compact.nurbs_data(ctx);
+
+    pc::step_writer w(ctx);
+    w.add_surface(ctx, s).add_curve(ctx, line).add_result(ctx, s, r).set_length_unit(ctx, 0.0254);
+    w.set_uncertainty(ctx, 1e-6);
+    CHECK_THROWS(w.set_length_unit(ctx, -1), PROJCURVE_ERR_OUT_OF_RANGE, nullptr);
+    CHECK_THROWS(w.set_uncertainty(ctx, std::nan("")), PROJCURVE_ERR_NOT_FINITE, nullptr);
+    const std::string path = dir + "/test_cpp_wrapper.step";
+    w.write(ctx, path);
+    const pc::expected<void> unwritable = w.try_write(ctx, dir + "/no/such/dir/x.step");
+    CHECK(!unwritable && unwritable.code() == PROJCURVE_ERR_IO);
+
+    const pc::model m = pc::model::read_file(ctx, path);
+    CHECK(m.surface_count() == 1);
+    CHECK(m.surface(0).nurbs_data(ctx).ctrl == std::vector<double>(saddle_net, saddle_net + 12));
+    CHECK(m.length_unit().has_value() && near(*m.length_unit(), 0.0254, 1e-15));
+    CHECK(m.precision().has_value() && near(*m.precision(), 1e-6, 1e-21));
+    bool line_found = false, compact_found = false;
+    for (std::size_t i = 0; i < m.curve_count(); ++i) {
+        const pc::curve_data c = m.curve(i).nurbs_data(ctx);
+        line_found |= c.ctrl == std::vector<double>(line_ctrl, line_ctrl + 6);
+        compact_found |= c.ctrl == want.ctrl && c.knots == want.knots;
+    }
+    CHECK(m.curve_count() == 2 && line_found && compact_found);
+
+    pc::step_writer moved(std::move(w));
+    CHECK(!w && moved);
+    projcurve_step_writer *raw = nullptr;
+    CHECK(projcurve_step_writer_create(ctx.get(), &raw) == PROJCURVE_OK);
+    pc::step_writer adopted(raw);
+    CHECK(adopted.get() == raw);
+    adopted.reset();
+    CHECK(!adopted);
+    std::remove(path.c_str());
+}
+
 // A closed solid: every edge is used by two face pieces (a seam twice by
 // one face), and each use names a piece whose edge is that edge.
 void test_model_shapes(pc::context &ctx)
@@ -743,6 +825,8 @@ int main(int argc, char **argv)
         test_projection(ctx);
         test_face(ctx);
         test_iges_round_trip(ctx, dir);
+        test_conical(ctx);
+        test_step_round_trip(ctx, dir);
         test_model_shapes(ctx);
         test_adopt(ctx);
     } catch (const pc::error &e) {
