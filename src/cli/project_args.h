@@ -15,8 +15,8 @@ typedef struct project_args {
     char **files;
     size_t n_files;
     /* projection kind */
-    int have_dir, orthogonal;
-    double dir[3];
+    int have_dir, have_eye, orthogonal;
+    double dir[3], eye[3];
     /* options of the library */
     double tol, angle, timeout;
     long long pcurve_degree;

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The flags of projcurve project that choose what is projected and what is
 printed (--surface, --curve, --line, --points, --interpolate, --quiet,
---progress, --timeout), with their errors, and the sizes projcurve info
+--progress, --timeout), the conical projection (--eye), with their errors, and the sizes projcurve info
 prints; every figure is checked against the files themselves (read by
 iges_geometry, an independent reader and evaluator), not the library's
 own numbers. Used by check_cli.py (parts flags and info)."""
@@ -356,3 +356,77 @@ def info_sizes(t, shared):
                     f"info --json {name}: surface poles/degree {s['poles']} {s['degree']}")
         t.check(doc.get("box") is not None and len(doc["box"]) == 6,
                 f"info --json {name}: model box {doc.get('box')}")
+
+
+def on_ray(t, what, eye, p, q, tol):
+    """q lies within tol of the line from eye through p, and beyond p."""
+    ray, d = [a - b for a, b in zip(p, eye)], [a - b for a, b in zip(q, eye)]
+    cr = [ray[1] * d[2] - ray[2] * d[1], ray[2] * d[0] - ray[0] * d[2],
+          ray[0] * d[1] - ray[1] * d[0]]
+    norm = lambda v: sum(x * x for x in v) ** 0.5
+    off = norm(cr) / norm(ray)
+    beyond = sum((a - b) * r for a, b, r in zip(q, p, ray)) / norm(ray)
+    t.check(off <= tol and beyond >= -tol,
+            f"{what}: a point {off:.3g} off its ray from the eye (tol {tol}), "
+            f"{beyond:.3g} beyond P(t)")
+
+
+def eye_point(t, shared, work):
+    """--eye X,Y,Z: the conical projection. Every branch written to IGES
+    is judged from the file (S at its pcurve and its 3D curve within eps_D
+    of the exact point on the ray from the eye, found by Newton, and at the
+    quarters of its knot spans on that ray and beyond P(t)); the JSON's
+    residuals are the corrector's; STEP, SVG and the usage errors."""
+    surface = case_path(shared, BUMPY)
+    eye = [50.0, 45.0, 200.0]
+    base = [t.exe, "project", surface, "--eye", "50,45,200", "--line", "10,10,20,90,80,20",
+            "--tol", "1e-3"]
+    case = {"tol_dist": "1e-3", "mode": "conical", "eye_x": "50", "eye_y": "45",
+            "eye_z": "200"}
+    igs, js = os.path.join(work, "eye.igs"), os.path.join(work, "eye.json")
+    svg, step = os.path.join(work, "eye.svg"), os.path.join(work, "eye.step")
+    proc = t.run(base + ["-o", igs, "--json", js, "--svg", svg], 0, "--eye")
+    if proc.returncode:
+        return
+    data = load_json(js, t.check, "--eye")
+    curves = iges_geometry.input_curves(igs)
+    written = iges_geometry.branches(igs)
+    # the line stays above the square and inside the cone of the eye over
+    # it: one branch over the whole line
+    t.check(data is not None and len(data["branches"]) == 1 == len(written),
+            f"--eye: {data and len(data['branches'])} branches, {len(written)} written")
+    whole_branches(t, data, "--eye")
+    for b, (s, pcurve, q) in zip(data["branches"], written):
+        t.check_branch_geometry("--eye", case, b, (s, pcurve, q), curves[0])
+        # traced points are corrector solutions: 1e-3 of eps_D is ample
+        t.check(b["residual"] <= 1e-6, f"--eye: residual {b['residual']}")
+        k = pcurve.knots
+        lo, hi = k[pcurve.degree], k[-pcurve.degree - 1]
+        for i in range(9):
+            tt = lo + (hi - lo) * i / 8
+            u, v, _ = pcurve.eval(tt)
+            p = curves[0].eval(tt)
+            on_ray(t, "--eye S(pcurve)", eye, p, s.eval(u, v), 1e-3)
+            if q is not None:
+                on_ray(t, "--eye 3D curve", eye, p, q.eval(tt), 1e-3)
+    t.check_svg(svg, 1, 1, 1, "--eye")
+    if t.run(base + ["-o", step], 0, "--eye -o .step").returncode == 0:
+        proc = t.run([t.exe, "info", "--json", step], 0, "info of the --eye STEP output")
+        if proc.returncode == 0:
+            back = json.loads(proc.stdout)
+            t.check(back["surfaces"] == 1 and back["curves"] == 2,
+                    f"--eye -o .step: read back {back['surfaces']} surface(s), "
+                    f"{back['curves']} curve(s)")
+    # the usage errors and a curve through the eye
+    for extra, message in ((["--dir", "0,0,-1"], "exactly one of"),
+                           (["--orthogonal"], "exactly one of"),
+                           (["--eye", "1,2,3"], "--eye is given twice")):
+        proc = t.run(base + extra, 2, f"--eye with {extra}")
+        t.check(message in proc.stderr, f"--eye with {extra}: {proc.stderr!r}")
+    for value in ("1,2", "1,2,x", "1,2,3,4", "nan,0,0"):
+        proc = t.run([t.exe, "project", surface, "--eye", value], 2, f"--eye {value}")
+        t.check("--eye wants X,Y,Z" in proc.stderr, f"--eye {value}: {proc.stderr!r}")
+    proc = t.run([t.exe, "project", surface, "--eye", "50,45,20", "--line",
+                  "10,10,20,90,80,20"], 1, "--eye on the curve")
+    t.check("passes through the eye" in proc.stderr and "curve 0 onto surface 0" in proc.stderr,
+            f"--eye on the curve: {proc.stderr!r}")
