@@ -266,8 +266,35 @@ typedef enum projcurve_option {
      * the largest degree Open CASCADE reads (Geom_BSplineCurve). Where
      * the projection is an affine image of a NURBS curve (onto a plane)
      * the compact curve keeps the curve's own degree when that is lower. */
-    PROJCURVE_OPT_CURVE_DEGREE = 16
+    PROJCURVE_OPT_CURVE_DEGREE = 16,
+    /* integer: which points of the projection are kept, [0, 1].
+     * PROJCURVE_HITS_ALL (0, the default): every hit of the ray (every
+     * foot point of the orthogonal projection, as FOOT_POINTS selects).
+     * PROJCURVE_HITS_NEAREST (1): at each t only the point nearest to
+     * P(t) (along the ray: the visible projection; orthogonally: the
+     * nearest foot point). A branch is cut exactly where another becomes
+     * nearer (the crossing of the two distances located to 1e-10 of the
+     * model size) or where a nearer one is born; the part kept ends with
+     * PROJCURVE_END_OCCLUDED and what becomes nearest again starts with
+     * PROJCURVE_START_VISIBLE. See docs/hits.md. */
+    PROJCURVE_OPT_HITS = 17,
+    /* double: keep only the points within this distance of P(t) (along
+     * the ray: lambda <= D; orthogonally |S - P(t)| <= D), model units,
+     * [0, 1e300]; 0 (the default) or +inf (the setter stores 0) = no
+     * limit. A branch is cut exactly where its distance reaches D (to
+     * 1e-10 of the model size): PROJCURVE_END_MAX_DISTANCE /
+     * PROJCURVE_START_MAX_DISTANCE. Combines with HITS. Both are ignored
+     * by projcurve_project_orthogonal_implicit (one branch). */
+    PROJCURVE_OPT_MAX_DISTANCE = 18,
+    /* integer: worker threads of the many-curve calls
+     * (projcurve_project_curves_directional, _orthogonal), [1, 1024],
+     * default 1 (the calling thread only). The results are the same bit
+     * for bit whatever the count. Single-curve calls ignore it. */
+    PROJCURVE_OPT_THREADS = 19
 } projcurve_option;
+
+#define PROJCURVE_HITS_ALL 0
+#define PROJCURVE_HITS_NEAREST 1
 
 #define PROJCURVE_FOOT_POINTS_MINIMA 0
 #define PROJCURVE_FOOT_POINTS_ALL 1
@@ -655,16 +682,51 @@ PROJCURVE_API projcurve_status projcurve_project_conical(projcurve_context *ctx,
  * every continuous branch of foot points (minima, saddles and maxima of the
  * distance alike). A branch that reaches a centre of curvature of S ends
  * there with PROJCURVE_END_CURVATURE_CENTRE; one born there starts with
- * PROJCURVE_START_SILHOUETTE. An edge of the domain collapsed to a point
- * (the pole of a NURBS sphere, the apex of a cone) is a boundary: a branch
- * through it ends there with PROJCURVE_END_BOUNDARY and continues as one
- * starting with PROJCURVE_START_BOUNDARY. Same result and statuses as the
+ * PROJCURVE_START_SILHOUETTE. A branch through an edge of the domain
+ * collapsed to a point (the pole of a NURBS sphere) or across the seam of
+ * a closed surface stays one branch whose pcurve jumps there (see
+ * projcurve_result_branch_seam_count). Same result and statuses as the
  * directional projection (ZERO_DIRECTION aside), CANCELLED included. */
 PROJCURVE_API projcurve_status projcurve_project_orthogonal(projcurve_context *ctx,
                                                             const projcurve_surface *surface,
                                                             const projcurve_curve *curve,
                                                             const projcurve_options *opts,
                                                             projcurve_result **out);
+
+/* Many curves onto one surface in one call (a text, a wire): curves[i]
+ * (n of them) projected along dir (as projcurve_project_directional) or
+ * orthogonally (as projcurve_project_orthogonal), each with the same
+ * options, results[i] receiving the result of curves[i] exactly as the
+ * single-curve call would give it (NULL where that call keeps none:
+ * every status but OK, LIMIT_REACHED and CANCELLED). opts may be NULL.
+ * Each curve is its own call: TIME_LIMIT and MAX_WORK apply per curve,
+ * the progress callback reports each curve's fractions.
+ * Threads: PROJCURVE_OPT_THREADS (default 1) workers, the calling thread
+ * among them, share out the curves; the results are the same bit for bit
+ * whatever the count (each curve is projected independently, every worker
+ * with its own state). With more than one, curve callbacks and the
+ * progress callback run on the worker threads: curve callbacks
+ * concurrently (they must be thread-safe), the progress callback never
+ * concurrently (the call serialises it).
+ * Per-curve failures: statuses[i] (statuses may be NULL) gets the status
+ * of curve i (a NULL curves[i] is NULL_ARGUMENT there, the other curves
+ * are still projected). The call returns OK when every curve gave OK;
+ * otherwise the status of the lowest-index curve that did not, ctx
+ * recording that curve's message as "curve i: <message>". Statuses of the
+ * call itself (nothing projected, results untouched): NULL_ARGUMENT (ctx,
+ * surface, dir, or curves / results with n > 0), NOT_FINITE,
+ * ZERO_DIRECTION, OUT_OF_RANGE (options), NO_MEMORY. n = 0 is OK.
+ * Thread-safe for distinct contexts; the inputs are only read. */
+PROJCURVE_API projcurve_status projcurve_project_curves_directional(
+    projcurve_context *ctx, const projcurve_surface *surface,
+    const projcurve_curve *const *curves, size_t n, const double dir[3],
+    const projcurve_options *opts, projcurve_result **results, projcurve_status *statuses);
+
+/* The same for the orthogonal projection (see above). */
+PROJCURVE_API projcurve_status projcurve_project_curves_orthogonal(
+    projcurve_context *ctx, const projcurve_surface *surface,
+    const projcurve_curve *const *curves, size_t n, const projcurve_options *opts,
+    projcurve_result **results, projcurve_status *statuses);
 
 /* An implicit surface f(x) = 0: fills *value, grad[3] and hess[9] (row-major)
  * at x and returns 0; any other return value is a failure. */
@@ -708,9 +770,13 @@ typedef enum projcurve_branch_start {
     PROJCURVE_START_CURVE_CROSSING = 4, /* directional, conical: the curve meets S here;
                                          before it the surface lies behind the
                                          curve ((q - p).Dir < 0) */
-    PROJCURVE_START_FAILED = 5       /* resumes after a stretch the library could
+    PROJCURVE_START_FAILED = 5,      /* resumes after a stretch the library could
                                         not follow or not verify (the branch
                                         before it ends PROJCURVE_END_FAILED) */
+    PROJCURVE_START_VISIBLE = 8,     /* PROJCURVE_OPT_HITS nearest: becomes the
+                                        nearest point again here */
+    PROJCURVE_START_MAX_DISTANCE = 9 /* comes within PROJCURVE_OPT_MAX_DISTANCE
+                                        of P(t) here */
 } projcurve_branch_start;
 
 /* Why a branch ends. */
@@ -722,9 +788,13 @@ typedef enum projcurve_branch_end {
     PROJCURVE_END_LIMIT = 4,         /* a size limit stopped it */
     PROJCURVE_END_FAILED = 5,        /* the corrector could not continue, or what
                                         follows could not be verified */
-    PROJCURVE_END_CURVE_CROSSING = 6 /* directional, conical: the curve meets S here;
+    PROJCURVE_END_CURVE_CROSSING = 6, /* directional, conical: the curve meets S here;
                                         beyond it the surface lies behind the
                                         curve ((q - p).Dir < 0) */
+    PROJCURVE_END_OCCLUDED = 8,      /* PROJCURVE_OPT_HITS nearest: another
+                                        point becomes nearer here */
+    PROJCURVE_END_MAX_DISTANCE = 9   /* leaves PROJCURVE_OPT_MAX_DISTANCE of
+                                        P(t) here */
 } projcurve_branch_end;
 
 /* Statistics keys for projcurve_result_stat. */
@@ -887,6 +957,46 @@ PROJCURVE_API projcurve_status projcurve_result_branch_compact_pcurve(
 PROJCURVE_API projcurve_status projcurve_result_branch_compact_curve(
     projcurve_context *ctx, const projcurve_result *result, size_t branch,
     projcurve_curve **out);
+
+/* Seams and poles. On a surface closed in u (S(u0, v) = S(u1, v) for every
+ * v: a full cylinder, sphere, torus, surface of revolution) or in v, and
+ * through an edge of the domain collapsed to a point (a pole), a branch
+ * that crosses the seam or passes the pole is ONE branch (see
+ * docs/seams.md for the closure test, read on the control net to 1e-9 of
+ * the model size): its pcurve jumps there, at a recorded curve parameter
+ * t_k, by (du_k, dv_k) = (u, v) just after minus just before (by the
+ * period across a seam: du = -(u1 - u0) going from u1 to u0; at a pole
+ * in the coordinate the collapsed edge runs along, e.g. du = +-1/2 of
+ * the period through the pole of a sphere along a meridian). Where it
+ * jumps:
+ * - the traced points hold both sides: two vertices with the same t_k;
+ * - each composed piece lies on one side (no piece spans a jump), in
+ *   increasing t;
+ * - the compact pcurve is one B-spline in unwrapped (u, v): continuous
+ *   across t_k, where the (u, v) on S is the compact pcurve's value plus
+ *   the sum of (du_k, dv_k) over the jumps with t_k <= t;
+ * - the compact 3D curve and projcurve_result_branch_curve are one curve
+ *   across t_k.
+ * Before these joins such a branch came back as one ending with
+ * PROJCURVE_END_BOUNDARY and one starting with PROJCURVE_START_BOUNDARY
+ * at the same t and point; those reasons now remain only for the real
+ * boundary of S. */
+
+/* The number of jumps of a branch's pcurve (0 on a branch that crosses no
+ * seam or pole). Statuses: OK, NULL_ARGUMENT, INDEX. Thread-safe (the
+ * result is only read). */
+PROJCURVE_API projcurve_status projcurve_result_branch_seam_count(projcurve_context *ctx,
+                                                                  const projcurve_result *result,
+                                                                  size_t branch, size_t *count);
+
+/* Jump k (0 <= k < the count above, in increasing t) of a branch: the
+ * curve parameter *t and the jump (*du, *dv) of its pcurve there (see
+ * above). Outputs may be NULL. Statuses: OK, NULL_ARGUMENT, INDEX.
+ * Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_result_branch_seam(projcurve_context *ctx,
+                                                            const projcurve_result *result,
+                                                            size_t branch, size_t k, double *t,
+                                                            double *du, double *dv);
 
 /* What the fit of a branch's compact forms measured (outputs may be
  * NULL): *pcurve_fitted 1 for a fitted pcurve, 0 for the joined pieces'

@@ -6,6 +6,7 @@
 #include "common/arena.h"
 #include "common/error.h"
 #include "io/io_geom.h"
+#include "seam/seam.h"
 
 /* Consecutive pieces share their end (u, v) exactly (the refined vertex);
  * a larger gap, relative to the coordinates, is a broken branch. */
@@ -29,6 +30,14 @@ static projcurve_status piece_part(projcurve_context *ctx, pc_arena *arena,
                        degree, range[0], range[1]);
     const size_t n = (size_t)degree + 1;
     const int reversed = range[0] > range[1];
+    /* across the seams of a joined branch the pcurve is unwrapped, as its
+     * compact pcurve (projcurve_result_branch_seam_count) */
+    double shift[2];
+    pc_seam_unwrap_shift(&r->branches[branch], 0.5 * (range[0] + range[1]), shift);
+    for (size_t i = 0; i < n; ++i) {
+        uv[2 * i] -= shift[0];
+        uv[2 * i + 1] -= shift[1];
+    }
     part->degree = degree;
     part->n_ctrl = n;
     part->weights = NULL;

@@ -74,6 +74,14 @@ static const pc_option_desc pc_option_table[] = {
      0.0, PC_OPTION_SIZE_LIMIT, 0, 0.0, PC_FIELD(max_work)},
     {PROJCURVE_OPT_CURVE_DEGREE, "CURVE_DEGREE", PROJCURVE_OPTION_INTEGER,
      1.0, 25.0, 0, PC_DEFAULT_CURVE_DEGREE, PC_FIELD(curve_degree)},
+    {PROJCURVE_OPT_HITS, "HITS", PROJCURVE_OPTION_INTEGER,
+     (double)PROJCURVE_HITS_ALL, (double)PROJCURVE_HITS_NEAREST, 0, (double)PC_DEFAULT_HITS,
+     PC_FIELD(hits)},
+    {PROJCURVE_OPT_MAX_DISTANCE, "MAX_DISTANCE", PROJCURVE_OPTION_DOUBLE,
+     0.0, PC_OPTION_LENGTH_LIMIT, 0, PC_DEFAULT_MAX_DISTANCE, PC_FIELD(max_distance)},
+    /* one worker per curve at most; 1024 bounds the threads a call starts */
+    {PROJCURVE_OPT_THREADS, "THREADS", PROJCURVE_OPTION_INTEGER,
+     1.0, 1024.0, 0, PC_DEFAULT_THREADS, PC_FIELD(threads)},
 };
 
 /* Integer options whose bounds admit values that mean nothing: the values
@@ -87,6 +95,19 @@ typedef struct pc_option_choices {
 static const pc_option_choices pc_option_choice_table[] = {
     {PROJCURVE_OPT_PCURVE_DEGREE, {1, 3}, 2}, /* straight or cubic Hermite pcurves */
 };
+
+/* Double options whose 0 means "no limit": their setter also takes +inf
+ * for it, and stores 0. */
+static const projcurve_option pc_option_infinity_is_zero[] = {PROJCURVE_OPT_MAX_DISTANCE};
+
+static int pc_option_takes_infinity(projcurve_option key)
+{
+    for (size_t i = 0; i < sizeof pc_option_infinity_is_zero / sizeof *pc_option_infinity_is_zero;
+         ++i)
+        if (pc_option_infinity_is_zero[i] == key)
+            return 1;
+    return 0;
+}
 
 #define PC_OPTION_CHOICE_COUNT (sizeof pc_option_choice_table / sizeof pc_option_choice_table[0])
 
@@ -240,6 +261,8 @@ projcurve_status projcurve_options_set_double(projcurve_context *ctx, projcurve_
     const projcurve_status s = pc_option_lookup(ctx, key, PROJCURVE_OPTION_DOUBLE, &d);
     if (s != PROJCURVE_OK)
         return s;
+    if (value == INFINITY && pc_option_takes_infinity(key))
+        value = 0.0; /* "no limit", stored as its 0 */
     if (!isfinite(value))
         return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "option %s: value %g is not finite",
                        d->name, value);

@@ -40,10 +40,9 @@ projcurve_status pc_projection_params(projcurve_context *ctx, const projcurve_op
     return PROJCURVE_OK;
 }
 
-/* Unit direction from dir; statuses NOT_FINITE, ZERO_DIRECTION. Scaling by
- * the largest component first keeps tiny and huge vectors normalisable. */
-static projcurve_status unit_direction(projcurve_context *ctx, const double dir[3],
-                                       pc_vec3 *out)
+/* Scaling by the largest component first keeps tiny and huge vectors
+ * normalisable. */
+projcurve_status pc_unit_direction(projcurve_context *ctx, const double dir[3], pc_vec3 *out)
 {
     const pc_vec3 d = vec3_load(dir);
     if (!vec3_is_finite(d))
@@ -70,7 +69,7 @@ projcurve_status projcurve_project_directional(projcurve_context *ctx,
     pc_vec3 unit;
     pc_params p;
     pc_budget budget;
-    projcurve_status st = unit_direction(ctx, dir, &unit);
+    projcurve_status st = pc_unit_direction(ctx, dir, &unit);
     if (st == PROJCURVE_OK)
         st = pc_projection_params(ctx, opts, surface->size, &budget, &p);
     if (st != PROJCURVE_OK)

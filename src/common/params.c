@@ -25,9 +25,13 @@ void pc_params_defaults(pc_params *p)
         .pcurve_degree = PC_DEFAULT_PCURVE_DEGREE,
         .foot_points = PC_DEFAULT_FOOT_POINTS,
         .curve_degree = PC_DEFAULT_CURVE_DEGREE,
+        .hits = PC_DEFAULT_HITS,
+        .max_distance = PC_DEFAULT_MAX_DISTANCE,
+        .threads = PC_DEFAULT_THREADS,
         .budget = NULL,
         .sweep_criteria_only = 0,
         .compact = 1,
+        .join_seams = 1,
     };
 }
 

@@ -28,6 +28,9 @@
 #define PC_DEFAULT_PCURVE_DEGREE 1
 #define PC_DEFAULT_FOOT_POINTS PROJCURVE_FOOT_POINTS_MINIMA
 #define PC_DEFAULT_CURVE_DEGREE 5
+#define PC_DEFAULT_HITS PROJCURVE_HITS_ALL
+#define PC_DEFAULT_MAX_DISTANCE 0.0 /* no limit */
+#define PC_DEFAULT_THREADS 1
 
 /* Automatic eps_D, while TOL_DISTANCE is unset: this fraction of the model
  * size (projcurve.h). */
@@ -57,7 +60,10 @@
     X(long long, jump_detection)                                                           \
     X(long long, pcurve_degree)  /* 1 or 3 */                                              \
     X(long long, foot_points)    /* PROJCURVE_FOOT_POINTS_* */                             \
-    X(long long, curve_degree)   /* of the compact 3D curve (fit/) */
+    X(long long, curve_degree)   /* of the compact 3D curve (fit/) */                      \
+    X(long long, hits)           /* PROJCURVE_HITS_*: all, or the nearest (hits/) */       \
+    X(double, max_distance)      /* hits within this of P(t) (hits/); 0 = no limit */      \
+    X(long long, threads)        /* workers of the many-curve calls (batch/) */
 
 #define PC_PARAMS_DECLARE_FIELD(type, field) type field;
 
@@ -77,6 +83,11 @@ typedef struct pc_params {
      * benchmark can time what they add. 1 in every projection a caller
      * can ask for. */
     int compact;
+    /* Not an option, for white-box tests only: 0 leaves the branches split
+     * at seams and poles (seam/), the tracer's own output, so that tests
+     * can show what joining changes. 1 in every projection a caller can
+     * ask for. */
+    int join_seams;
 } pc_params;
 
 /* Fills p with the default of every option, eps_D unset, no budget. */

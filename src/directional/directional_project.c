@@ -13,7 +13,9 @@
 #include "directional/directional.h"
 #include "directional/line_seeds.h"
 #include "fit/fit.h"
+#include "hits/hits.h"
 #include "refine/refine.h"
+#include "seam/seam.h"
 #include "trace/result.h"
 #include "trace/trace.h"
 #include "verify/verify.h"
@@ -52,6 +54,12 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
         r->stats.tol_distance = p->tol_distance;
         st = pc_trace_branches(ctx, &proj, p, &finder.base, &config, r);
     }
+    /* the hits kept (nearest, within MAX_DISTANCE), before composing */
+    if (pc_status_keeps_result(st)) {
+        const projcurve_status hs = pc_hits_select(ctx, &proj, p, r);
+        if (hs != PROJCURVE_OK)
+            st = hs;
+    }
     /* tolerance control and composition also on a result cut by
      * MAX_POINTS; not once the budget is spent (the traced polylines stay) */
     if (p->compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED) &&
@@ -64,6 +72,7 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
     /* only verified branches are returned, also from a partial result */
     st = pc_verify_kept(ctx, &proj, p, r, st);
     st = pc_fit_stage(ctx, &proj, p, r, st);
+    st = pc_seam_stage(ctx, surface, curve, p, r, st);
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     if (finder.no_memory && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))

@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "fit/fit.h"
+#include "hits/hits.h"
 #include "ortho/implicit.h"
 #include "ortho/ortho_centres.h"
 #include "ortho/ortho_duplicates.h"
@@ -16,6 +17,7 @@
 #include "ortho/ortho_projector.h"
 #include "ortho/ortho_seeds.h"
 #include "refine/refine.h"
+#include "seam/seam.h"
 #include "trace/result.h"
 #include "trace/trace.h"
 #include "verify/verify.h"
@@ -67,6 +69,10 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
         pc_ortho_drop_duplicates(&proj, r);
         name_singular_ends(r);
         r->stats.tol_distance = p->tol_distance;
+        /* the hits kept (nearest foot point, within MAX_DISTANCE) */
+        status = pc_hits_select(ctx, &proj, p, r);
+    }
+    if (status == PROJCURVE_OK) {
         if (p->compose && pc_budget_status(budget) == PROJCURVE_OK) {
             pc_budget_stage(budget, 0.5, PC_FIT_STAGE_FROM);
             status = pc_refine_and_compose(ctx, &proj, p, r);
@@ -75,6 +81,7 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
     /* only verified branches are returned, also from a partial result */
     status = pc_verify_kept(ctx, &proj, p, r, status);
     status = pc_fit_stage(ctx, &proj, p, r, status);
+    status = pc_seam_stage(ctx, surface, curve, p, r, status);
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */
     if (cache.callback_failed && pc_status_keeps_result(status))

@@ -153,6 +153,7 @@ static void branch_free(pc_branch *b)
     pc_branch_clear_pieces(b);
     free(b->pieces);
     free(b->points);
+    free(b->seams);
 }
 
 void pc_result_remove_branch(projcurve_result *r, size_t i)

@@ -44,6 +44,13 @@ typedef enum pc_compact_kind {
     PC_COMPACT_JOINED = 2  /* the fit hit its bound: the pieces' pcurves joined */
 } pc_compact_kind;
 
+/* Where a branch's pcurve jumps (seam/): at curve parameter t it crosses
+ * the seam of a closed surface or passes a collapsed edge (a pole), and
+ * its (u, v) changes by (du, dv) there. */
+typedef struct pc_seam_record {
+    double t, du, dv;
+} pc_seam_record;
+
 typedef struct pc_branch {
     double *points;     /* point_dim doubles per vertex: t, u, v (or t, x, y, z) */
     size_t n_points, cap_points;
@@ -57,6 +64,10 @@ typedef struct pc_branch {
     pc_compact_kind compact;
     pc_bspline compact_pcurve, compact_curve;
     double compact_pcurve_error, compact_curve_error;
+    /* The jumps of a branch joined across seams and poles (seam/), in
+     * increasing t; the compact pcurve is then unwrapped (seam/seam.h). */
+    pc_seam_record *seams;
+    size_t n_seams;
 } pc_branch;
 
 typedef struct pc_stats {

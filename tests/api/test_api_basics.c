@@ -116,6 +116,10 @@ static const option_case option_cases[] = {
     {PROJCURVE_OPT_TIME_LIMIT, PROJCURVE_OPTION_DOUBLE, 0.0, 1e9, 0.0, 0},
     {PROJCURVE_OPT_MAX_WORK, PROJCURVE_OPTION_INTEGER, 0, 1099511627776.0, 0, 0},
     {PROJCURVE_OPT_CURVE_DEGREE, PROJCURVE_OPTION_INTEGER, 1, 25, 5, 0},
+    {PROJCURVE_OPT_HITS, PROJCURVE_OPTION_INTEGER, PROJCURVE_HITS_ALL, PROJCURVE_HITS_NEAREST,
+     PROJCURVE_HITS_ALL, 0},
+    {PROJCURVE_OPT_MAX_DISTANCE, PROJCURVE_OPTION_DOUBLE, 0.0, 1e300, 0.0, 0},
+    {PROJCURVE_OPT_THREADS, PROJCURVE_OPTION_INTEGER, 1, 1024, 1, 0},
 };
 #define N_OPTION_CASES (sizeof option_cases / sizeof option_cases[0])
 
@@ -135,7 +139,7 @@ static void test_option_info(void)
     }
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    const int unknown[] = {0, -1, 17, 1000};
+    const int unknown[] = {0, -1, 500, 1000};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         double untouched = 42.0;
         CHECK_STATUS(projcurve_option_info(ctx, (projcurve_option)unknown[i], NULL, NULL, NULL,
@@ -179,9 +183,18 @@ static void check_double_option(projcurve_context *ctx, projcurve_options *opts,
         CHECK(strstr(projcurve_context_message(ctx), "outside") != NULL);
     }
     const double not_finite[] = {NAN, INFINITY, -INFINITY};
-    for (size_t i = 0; i < 3; ++i)
+    for (size_t i = 0; i < 3; ++i) {
+        if (c->key == PROJCURVE_OPT_MAX_DISTANCE && not_finite[i] == INFINITY) {
+            /* +inf is "no limit", stored as its 0 (projcurve.h) */
+            CHECK_OK(projcurve_options_set_double(ctx, opts, c->key, INFINITY));
+            CHECK_OK(projcurve_options_get_double(ctx, opts, c->key, &v));
+            CHECK(v == 0.0);
+            CHECK_OK(projcurve_options_set_double(ctx, opts, c->key, mid));
+            continue;
+        }
         CHECK_STATUS(projcurve_options_set_double(ctx, opts, c->key, not_finite[i]),
                      PROJCURVE_ERR_NOT_FINITE);
+    }
     CHECK_OK(projcurve_options_get_double(ctx, opts, c->key, &v));
     CHECK(v == mid);
 }
@@ -283,7 +296,7 @@ static void test_options_bad_handles(void)
     CHECK_STATUS(projcurve_options_get_int(ctx, opts, k_i, NULL), PROJCURVE_ERR_NULL_ARGUMENT);
     CHECK(v == 3.0 && iv == 3);
 
-    const int unknown[] = {0, -5, 17, 77};
+    const int unknown[] = {0, -5, 500, 77};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; ++i) {
         const projcurve_option k = (projcurve_option)unknown[i];
         CHECK_STATUS(projcurve_options_set_double(ctx, opts, k, 1.0), PROJCURVE_ERR_UNKNOWN_OPTION);

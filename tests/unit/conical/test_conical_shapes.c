@@ -8,6 +8,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "conical_check.h"
 #include "shapes.h"
@@ -255,6 +256,51 @@ static void test_sphere_front_and_back(projcurve_surface *sphere)
     CHECK(hits == 2 * 201);
     /* pieces within eps_D of the exact projection, sampled as polylines */
     CHECK(missed <= 1.01 * EPS_D);
+    projcurve_result_destroy(r);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+}
+
+/* PROJCURVE_OPT_HITS nearest: the back of the sphere is hidden by its
+ * front along every ray from the eye, so one branch is left, each of its
+ * vertices the analytic front hit (the smaller lambda). */
+static void test_sphere_nearest(projcurve_surface *sphere)
+{
+    const double eye[3] = {0.2, 0.1, 5.0};
+    const double p0[3] = {-0.1, 0.25, 3.0}, p1[3] = {0.25, 0.4, 3.1};
+    projcurve_curve *c = make_segment(p0, p1);
+    projcurve_options *o = cc_options(EPS_D);
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_HITS, PROJCURVE_HITS_NEAREST));
+    projcurve_result *r = NULL;
+    CHECK_OK(projcurve_project_conical(NULL, sphere, c, eye, o, &r));
+    CHECK(projcurve_result_branch_count(r) == 1);
+    size_t n = 0;
+    CHECK_OK(projcurve_result_branch_points(NULL, r, 0, 0, NULL, &n));
+    double *pts = malloc(3 * (n ? n : 1) * sizeof *pts);
+    CHECK(pts != NULL);
+    if (pts == NULL)
+        n = 0;
+    else
+        CHECK_OK(projcurve_result_branch_points(NULL, r, 0, n, pts, &n));
+    double worst = 0.0;
+    for (size_t j = 0; j < n; ++j) {
+        double p[3], d[3], x[3], lambda[2], len = 0.0;
+        projcurve_curve_eval(NULL, c, pts[3 * j], 0, p);
+        for (int i = 0; i < 3; ++i) {
+            d[i] = p[i] - eye[i];
+            len += d[i] * d[i];
+        }
+        for (int i = 0; i < 3; ++i)
+            d[i] /= sqrt(len);
+        CHECK(sphere_hits(p, d, lambda) == 2);
+        projcurve_surface_eval(NULL, sphere, pts[3 * j + 1], pts[3 * j + 2], 0, x);
+        for (int i = 0; i < 3; ++i)
+            worst = fmax(worst, fabs(x[i] - (p[i] + lambda[0] * d[i])));
+    }
+    printf("line onto sphere, nearest hits: %zu vertices, farthest from the front hit %.3g\n", n,
+           worst);
+    CHECK(n >= 2 && worst <= VERTEX_TOL);
+    free(pts);
     projcurve_result_destroy(r);
     projcurve_options_destroy(o);
     projcurve_curve_destroy(c);
@@ -524,6 +570,7 @@ int main(void)
         test_line_onto_plane(plane);
         test_circle_onto_plane(plane);
         test_sphere_front_and_back(sphere);
+        test_sphere_nearest(sphere);
         test_eye_on_sphere(sphere);
         test_far_eye(sphere);
         test_options(sphere);

@@ -22,6 +22,7 @@
 #include "piece_oracle.h"
 #include "shapes.h"
 #include "trace_shapes.h"
+#include "unjoined.h"
 
 #define SAMPLES_PER_SPAN 20
 
@@ -159,10 +160,11 @@ static projcurve_result *project(const fit_case *c, double eps_d, int pcurve_deg
     CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_PCURVE_DEGREE, pcurve_degree));
     CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_CURVE_DEGREE, curve_degree));
     projcurve_result *r = NULL;
-    if (is_orthogonal(c))
-        CHECK_OK(projcurve_project_orthogonal(NULL, c->surface, c->curve, o, &r));
-    else
-        CHECK_OK(projcurve_project_directional(NULL, c->surface, c->curve, c->dir, o, &r));
+    /* the fits of the traced branches, in the domain: the seam stage after
+     * them (src/seam/, tests/unit/seam/) would join those at the sphere's
+     * seam and poles into unwrapped compact forms */
+    CHECK_OK(pc_test_project_unjoined(NULL, c->surface, c->curve,
+                                      is_orthogonal(c) ? NULL : c->dir, o, &r));
     projcurve_options_destroy(o);
     return r;
 }

@@ -14,6 +14,7 @@
 
 #include "check.h"
 #include "shapes.h"
+#include "unjoined.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -59,7 +60,9 @@ static size_t project_with_step(const projcurve_surface *surf, const path *w, do
     if (param_step > 0.0)
         CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_PARAM_STEP, param_step));
     projcurve_result *r = NULL;
-    CHECK_OK(projcurve_project_orthogonal(NULL, surf, curve, o, &r));
+    /* the tracer's own ends at the poles and seams, which the seam stage
+     * (src/seam/, tested in tests/unit/seam/) would join */
+    CHECK_OK(pc_test_project_unjoined(NULL, surf, curve, NULL, o, &r));
     size_t nb = projcurve_result_branch_count(r);
     nb = nb < cap ? nb : cap;
     for (size_t b = 0; b < nb; ++b) {

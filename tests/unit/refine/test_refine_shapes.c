@@ -219,7 +219,8 @@ int main(void)
          {0, 0, -1}, 1},
         {"sphere silhouettes", shape_sphere(10.0), shape_bspline_curve(1, 2, sphere_line),
          {0, 0, -1}, 2},
-        {"sphere pole", shape_sphere(10.0), shape_bspline_curve(1, 2, pole_line), {0, 0, -1}, 4},
+        /* four traced branches, two once joined at the poles (src/seam/) */
+        {"sphere pole", shape_sphere(10.0), shape_bspline_curve(1, 2, pole_line), {0, 0, -1}, 2},
         {"rational bumpy", pc_shape_surface_create(&bumpy), shape_bspline_curve(3, 5, bumpy_curve),
          {0.05, 0.02, -1}, 1},
         {"example 1", shape_example1_surface(), shape_example1_curve(), {-1, 0, 0}, 1},
