@@ -31,6 +31,13 @@ static int make_options(projcurve_context *ctx, const project_args *a, projcurve
     if (a->have_timeout && projcurve_options_set_double(ctx, *opts, PROJCURVE_OPT_TIME_LIMIT,
                                                         a->timeout) != PROJCURVE_OK)
         return cli_usage_error("--timeout: %s", projcurve_context_message(ctx));
+    if (a->nearest && projcurve_options_set_int(ctx, *opts, PROJCURVE_OPT_HITS,
+                                                PROJCURVE_HITS_NEAREST) != PROJCURVE_OK)
+        return cli_usage_error("--nearest: %s", projcurve_context_message(ctx));
+    if (a->have_max_distance &&
+        projcurve_options_set_double(ctx, *opts, PROJCURVE_OPT_MAX_DISTANCE, a->max_distance) !=
+            PROJCURVE_OK)
+        return cli_usage_error("--max-distance: %s", projcurve_context_message(ctx));
     return CLI_EXIT_OK;
 }
 

@@ -124,6 +124,22 @@ static int set_interpolate(project_args *a, const project_option *o, const char 
     return CLI_EXIT_OK;
 }
 
+static int set_nearest(project_args *a, const project_option *o, const char *v)
+{
+    (void)o, (void)v;
+    a->nearest = 1;
+    return CLI_EXIT_OK;
+}
+
+static int set_max_distance(project_args *a, const project_option *o, const char *v)
+{
+    if (!cli_parse_double(v, &a->max_distance) || !(a->max_distance > 0.0))
+        return cli_usage_error("%s wants a positive distance in model units, got '%s'", o->name,
+                               v);
+    a->have_max_distance = 1;
+    return CLI_EXIT_OK;
+}
+
 static int set_quiet(project_args *a, const project_option *o, const char *v)
 {
     (void)o, (void)v;
@@ -165,6 +181,12 @@ static const project_option options[] = {
     {"--interpolate", NULL, set_interpolate,
      "with --points: one interpolating cubic through the points\n"
      "(chord-length parameters) instead of the polyline"},
+    {"--nearest", NULL, set_nearest,
+     "keep only the point nearest to the curve on each ray (the\n"
+     "visible projection; orthogonally: the nearest foot point)"},
+    {"--max-distance", "D", set_max_distance,
+     "keep only the points within D (model units) of the curve,\n"
+     "along the ray (orthogonally: in space)"},
     {"--tol", "D", set_tol,
      "distance tolerance eps_D in model units (default: 1e-4\n"
      "of the surface size)"},

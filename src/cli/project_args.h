@@ -21,6 +21,9 @@ typedef struct project_args {
     double tol, angle, timeout;
     long long pcurve_degree;
     int have_tol, have_angle, have_pcurve_degree, have_timeout;
+    /* which hits: the nearest only, those within max_distance */
+    int nearest, have_max_distance;
+    double max_distance;
     /* which pairs: one surface / one curve of the files (by number) */
     int have_surface, have_curve;
     size_t surface, curve;

@@ -623,6 +623,7 @@ def part_flags(exe, shared, work):
     check_flags.given_curves(t, shared, work)
     check_flags.printing(t, shared, work)
     check_flags.eye_point(t, shared, work)
+    check_flags.hits(t, shared, work)
     many_branches_svg(exe, shared, work)
     return None
 

@@ -430,3 +430,85 @@ def eye_point(t, shared, work):
                   "10,10,20,90,80,20"], 1, "--eye on the curve")
     t.check("passes through the eye" in proc.stderr and "curve 0 onto surface 0" in proc.stderr,
             f"--eye on the curve: {proc.stderr!r}")
+
+
+FOLD = "fold_c_sheet_jump"  # a C-folded sheet: rays along -z hit it 0, 1, then 2 times
+
+
+def hit_distances(curve, written, t):
+    """(distance along -z from P(t), branch index) of every written branch
+    whose t range holds t (S at its pcurve: the pcurve's parameter is t)."""
+    out = []
+    for k, (surface, pcurve, _) in enumerate(written):
+        lo, hi = pcurve.knots[pcurve.degree], pcurve.knots[-pcurve.degree - 1]
+        if lo <= t <= hi:
+            u, v, _ = pcurve.eval(t)
+            out.append((curve.eval(t)[2] - surface.eval(u, v)[2], k))
+    return out
+
+
+def near_an_end(written, t, margin):
+    return any(abs(t - pc.knots[pc.degree]) <= margin or abs(t - pc.knots[-pc.degree - 1]) <= margin
+               for _, pc, _ in written)
+
+
+def hits(t, shared, work):
+    """--nearest and --max-distance D on the folded sheet, judged against
+    the run that keeps every hit (the complete set of ray hits, itself
+    judged by cli_cases): at 201 parameters, away from branch ends, the
+    nearest run holds exactly one point where the full run holds any, at
+    the smallest distance of the full run's (to eps_D); the max-distance
+    run holds exactly the full run's points within D, and every branch it
+    cuts ends or starts at distance D."""
+    case = case_path(shared, FOLD)
+    base = [t.exe, "project", case, "--dir", "0,0,-1", "--tol", "1e-3"]
+    tol, margin = 1e-3, 1e-6
+    runs = {}
+    for name, extra in (("all", []), ("nearest", ["--nearest"]),
+                        ("max", ["--max-distance", "25"])):
+        igs, js = os.path.join(work, f"hits_{name}.igs"), os.path.join(work, f"hits_{name}.json")
+        if t.run(base + extra + ["-o", igs, "--json", js], 0, f"hits {name}").returncode:
+            return
+        runs[name] = (iges_geometry.branches(igs), load_json(js, t.check, f"hits {name}"))
+    curve = iges_geometry.input_curves(case)[0]
+    full, nearest, capped = runs["all"][0], runs["nearest"][0], runs["max"][0]
+    ends = [b["end"] for b in runs["nearest"][1]["branches"]]
+    t.check(len(full) == 2 and len(nearest) == 2 and "occluded" in ends,
+            f"--nearest: {len(full)} branches of all hits, {len(nearest)} nearest, ends {ends}")
+    worst = 0.0
+    for i in range(201):
+        s = i / 200
+        if near_an_end(full + nearest + capped, s, margin):
+            continue
+        every = hit_distances(curve, full, s)
+        kept = hit_distances(curve, nearest, s)
+        t.check(len(kept) == (1 if every else 0),
+                f"--nearest at t = {s}: {len(kept)} points kept of {len(every)} hits")
+        if every and len(kept) == 1:
+            worst = max(worst, abs(kept[0][0] - min(d for d, _ in every)))
+        within = sorted(d for d, _ in every if d <= 25 - tol)
+        got = sorted(d for d, _ in hit_distances(curve, capped, s))
+        t.check(len(got) == len(within) and all(abs(a - b) <= tol for a, b in zip(got, within))
+                and all(d <= 25 + tol for d in got),
+                f"--max-distance 25 at t = {s}: {got} kept, hits within 25: {within}")
+    t.check(worst <= tol, f"--nearest: kept points {worst:.3g} farther than the nearest hit")
+    for b, (surface, pcurve, _) in zip(runs["max"][1]["branches"], capped):
+        for kind, tt in ((b["start"], b["t_range"][0]), (b["end"], b["t_range"][1])):
+            if kind == "max_distance":
+                u, v, _ = pcurve.eval(tt)
+                d = curve.eval(tt)[2] - surface.eval(u, v)[2]
+                t.check(abs(d - 25) <= tol, f"--max-distance 25: a cut at distance {d}")
+    t.check(any("max_distance" in (b["start"], b["end"]) for b in runs["max"][1]["branches"]),
+            "--max-distance 25: no branch cut at the distance")
+    for value in ("0", "-1", "x", "1e400"):
+        proc = t.run(base + ["--max-distance", value], 2, f"--max-distance {value}")
+        t.check("--max-distance wants a positive distance" in proc.stderr,
+                f"--max-distance {value}: {proc.stderr!r}")
+    t.run(base + ["--nearest", "--nearest"], 2, "--nearest twice")
+    # the eye sees the same fold: nearest keeps one point per ray there too
+    js = os.path.join(work, "hits_eye.json")
+    if t.run([t.exe, "project", case, "--eye", "30,0,100", "--nearest", "--json", js], 0,
+             "--eye --nearest").returncode == 0:
+        data = load_json(js, t.check, "--eye --nearest")
+        t.check(data and "occluded" in [b["end"] for b in data["branches"]],
+                "--eye --nearest: no branch ends occluded")
