@@ -21,6 +21,9 @@ typedef struct pcb_args {
     const char *svg_path;    /* NULL: no plot */
     const char *data_dir;  /* the shared data directory (cases/, real/) */
     int quick;               /* tiny sizes, few repetitions */
+    const char *from_path;   /* profile: an occt JSON to take tolerances from */
+    const char *only_case;   /* profile: run only the case of this name (NULL: all) */
+    int pcurve_degree;       /* profile: PROJCURVE_OPT_PCURVE_DEGREE (0: the default) */
 } pcb_args;
 
 int pcb_cmd_eval(const pcb_args *args);
@@ -29,6 +32,7 @@ int pcb_cmd_table1(const pcb_args *args);
 int pcb_cmd_cases(const pcb_args *args);
 int pcb_cmd_scaling(const pcb_args *args);
 int pcb_cmd_brep(const pcb_args *args);
+int pcb_cmd_profile(const pcb_args *args);
 #ifdef PCB_HAVE_OCCT
 int pcb_cmd_occt(const pcb_args *args);
 #endif

@@ -58,6 +58,8 @@ const double OCCT_MIN_RUN_S = 0.02;
 /* Matched-accuracy runs ask for no less than this fraction of the model
  * size (Open CASCADE can be exact to rounding on simple shapes). */
 const double MATCH_TOL_FLOOR = 1e-10;
+/* The control points our results may join into one curve to be measured. */
+const size_t MEASURE_CONTROL_POINTS = 100000000;
 /* Quick runs (CI) take only these. */
 const char *const quick_cases[] = {"song_yong_example1", "ortho_nurbs_half_cylinder"};
 
@@ -307,6 +309,9 @@ bool measure_ours(const pcb_case *c, const projcurve_options *opts, const pcb_ex
     projcurve_result *res = nullptr;
     pcb_result_curves rc = {nullptr, 0}, compact = {nullptr, 0};
     projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx);
+    /* the joined pieces of a tight eps_D (straight pieces: ~20,000 of
+     * degree p + q) pass the default limit; they are only sampled here */
+    projcurve_context_set_limit(ctx, PROJCURVE_LIMIT_CONTROL_POINTS, MEASURE_CONTROL_POINTS);
     projcurve_status st = pcb_case_project(ctx, c, opts, &res);
     if (st == PROJCURVE_OK)
         st = pcb_result_curves_init(ctx, res, &rc);
@@ -510,11 +515,15 @@ void write_json(const pcb_args *args, const std::vector<row> &rows)
         pcb_json_number(&j, "case_tol_ours_over_occt", r.at_case_tol.ratio);
         pcb_json_number(&j, "case_tol_ours_deviation", r.at_case_tol.dev);
         const ours_run &cub = r.cubic_reported();
+        pcb_json_number(&j, "ours_poles", rep.poles);
+        pcb_json_number(&j, "ours_pcurve_poles_timed", rep.pcurve_poles);
+        pcb_json_number(&j, "case_tol_ours_poles", r.at_case_tol.poles);
         pcb_json_number(&j, "cubic_ours_ms", cub.ms);
         pcb_json_number(&j, "cubic_occt_ms", cub.occt_ms);
         pcb_json_number(&j, "cubic_ours_over_occt", cub.ratio);
         pcb_json_number(&j, "cubic_ours_deviation", cub.dev);
         pcb_json_number(&j, "cubic_ours_tol_dist", cub.tol);
+        pcb_json_number(&j, "cubic_ours_poles", cub.poles);
         const ours_run &pol =
             std::isfinite(r.poles_at_occt_dev.tol) ? r.poles_at_occt_dev : r.reported();
         pcb_json_number(&j, "ours_compact_tol_dist", pol.tol);
@@ -558,9 +567,11 @@ void write_svg(const pcb_args *args, const std::vector<row> &rows)
 
 void print_run(const row &r, const char *mode, const ours_run &run, const char *status)
 {
-    std::printf("%-30s %-5s %9.2e %10.3f %10.3f %9.4f %11.3e %11.3e %5.0f %5.0f %s\n",
+    std::printf("%-30s %-5s %9.2e %10.3f %10.3f %9.4f %11.3e %11.3e %5.0f %5.0f %6.0f %6.0f "
+                "%7.0f %s\n",
                 *mode ? r.name.c_str() : "", mode, run.tol, run.ms, run.occt_ms, run.ratio,
-                run.dev, r.occt_dev, run.branches, r.occt_branches, status);
+                run.dev, r.occt_dev, run.branches, r.occt_branches, run.poles, run.pcurve_poles,
+                r.occt_poles, status);
 }
 
 }  // namespace
@@ -574,9 +585,9 @@ extern "C" int pcb_cmd_occt(const pcb_args *args)
     pcb_print_banner("occt: libprojcurve and Open CASCADE " OCC_VERSION_COMPLETE
                      " on the same geometry",
                      args);
-    std::printf("%-30s %-5s %9s %10s %10s %9s %11s %11s %5s %5s %s\n", "case", "mode", "eps_D",
-                "ours_ms", "occt_ms", "ours/occt", "ours_dev", "occt_dev", "br_us", "br_oc",
-                "status");
+    std::printf("%-30s %-5s %9s %10s %10s %9s %11s %11s %5s %5s %6s %6s %7s %s\n", "case", "mode",
+                "eps_D", "ours_ms", "occt_ms", "ours/occt", "ours_dev", "occt_dev", "br_us",
+                "br_oc", "3d_pl", "uv_pl", "occt_pl", "status");
     std::vector<row> rows;
     int rc = 0;
     for (size_t i = 0; i < list.n; ++i) {

@@ -33,6 +33,7 @@ static const pcb_command commands[] = {
     {"table1", pcb_cmd_table1, "the paper's Table 1: RK4 vs second-order tracing on Example 1"},
     {"cases", pcb_cmd_cases, "every test case: time, branches, pieces, measured deviation"},
     {"scaling", pcb_cmd_scaling, "time against 1/eps_D, patches and curve length"},
+    {"profile", pcb_cmd_profile, "CPU time of each case by stage, at eps_D and at Open CASCADE's"},
     {"brep", pcb_cmd_brep, "read + build of each real model, face classification ns per point"},
 #ifdef PCB_HAVE_OCCT
     {"occt", pcb_cmd_occt, "the cases through Open CASCADE, side by side"},
@@ -44,6 +45,7 @@ static void usage(FILE *f)
 {
     fputs("usage: projcurve-bench <command> [--json FILE] [--svg FILE] [--quick] "
           "[--data DIR]\n"
+          "       projcurve-bench profile [--from FILE] [--case NAME] [--pcurve-degree 1|3]\n"
           "       projcurve-bench all --out DIR [--quick] [--data DIR]\n"
           "commands:\n",
           f);
@@ -69,6 +71,12 @@ static int parse_options(int argc, char **argv, pcb_args *args, const char **out
             args->svg_path = argv[++i];
         } else if ((!strcmp(opt, "--data") || !strcmp(opt, "--shared")) && has_value) {
             args->data_dir = argv[++i];
+        } else if (!strcmp(opt, "--pcurve-degree") && has_value) {
+            args->pcurve_degree = atoi(argv[++i]);
+        } else if (!strcmp(opt, "--case") && has_value) {
+            args->only_case = argv[++i];
+        } else if (!strcmp(opt, "--from") && has_value) {
+            args->from_path = argv[++i];
         } else if (!strcmp(opt, "--out") && has_value) {
             *out_dir = argv[++i];
         } else {
@@ -109,7 +117,7 @@ int main(int argc, char **argv)
     /* The same override as the tests: $PROJCURVE_TEST_DATA_DIR, then --data
      * (--shared is its former spelling). */
     const char *data = getenv("PROJCURVE_TEST_DATA_DIR");
-    pcb_args args = {NULL, NULL, data && data[0] ? data : PCB_TEST_DATA_DIR, 0};
+    pcb_args args = {NULL, NULL, data && data[0] ? data : PCB_TEST_DATA_DIR, 0, NULL, NULL, 0};
     const char *out_dir = NULL;
     if (parse_options(argc, argv, &args, &out_dir) != 0) {
         usage(stderr);

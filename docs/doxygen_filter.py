@@ -148,8 +148,10 @@ def filter_header(lines):
         if group_open and not following.strip() and "SPDX" not in line \
                 and not BANNER.match(line):
             # Alone: part of the group's page.
-            group_text.setdefault(current_group(out), []).extend(
-                [" *\n", " * " + line[col + 2:].lstrip()] + lines[i + 1:end + 1])
+            text = [" *\n", " * " + line[col + 2:].lstrip()] + lines[i + 1:end + 1]
+            # each lone comment's own close goes (a group may have several)
+            text[-1] = text[-1].replace("*/", "").rstrip() + "\n"
+            group_text.setdefault(current_group(out), []).extend(text)
             out.extend("\n" for _ in range(i, end + 1))
             i = end + 1
             continue
@@ -163,7 +165,6 @@ def filter_header(lines):
         m = re.search(r"\\defgroup (\S+)", line)
         if m and m.group(1) in group_text:
             text = group_text[m.group(1)]
-            text[-1] = text[-1].replace("*/", "").rstrip() + "\n"
             result.append(line)
             result.extend(text)
         else:

@@ -32,6 +32,7 @@ void pc_params_defaults(pc_params *p)
         .sweep_criteria_only = 0,
         .compact = 1,
         .join_seams = 1,
+        .stages = NULL,
     };
 }
 

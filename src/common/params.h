@@ -10,6 +10,7 @@
 #define PC_COMMON_PARAMS_H
 
 #include "common/budget.h"
+#include "common/stage_clock.h"
 #include "projcurve.h"
 
 /* The defaults of the options that reach the engine (projcurve.h states
@@ -88,6 +89,10 @@ typedef struct pc_params {
      * can show what joining changes. 1 in every projection a caller can
      * ask for. */
     int join_seams;
+    /* Not an option: where set, each stage adds its CPU time here
+     * (common/stage_clock.h), for the benchmark's profile. NULL in every
+     * projection a caller can ask for. */
+    pc_stage_clock *stages;
 } pc_params;
 
 /* Fills p with the default of every option, eps_D unset, no budget. */

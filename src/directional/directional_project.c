@@ -70,8 +70,11 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
             st = cs;
     }
     /* only verified branches are returned, also from a partial result */
+    double since = pc_stage_clock_now(p->stages);
     st = pc_verify_kept(ctx, &proj, p, r, st);
+    since = pc_stage_clock_lap(p->stages, PC_STAGE_VERIFICATION, since);
     st = pc_fit_stage(ctx, &proj, p, r, st);
+    pc_stage_clock_lap(p->stages, PC_STAGE_FITTING, since);
     st = pc_seam_stage(ctx, surface, curve, p, r, st);
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");

@@ -19,7 +19,7 @@
 #include "fit/samples.h"
 #include "trace/result.h"
 
-#define PC_FIT_CHECK_PER_SPAN 20
+#define PC_FIT_CHECK_PER_SPAN 10
 #define PC_FIT_MAX_ROUNDS 64
 
 typedef struct pc_fit_goal {

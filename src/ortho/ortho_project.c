@@ -79,8 +79,11 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
         }
     }
     /* only verified branches are returned, also from a partial result */
+    double since = pc_stage_clock_now(p->stages);
     status = pc_verify_kept(ctx, &proj, p, r, status);
+    since = pc_stage_clock_lap(p->stages, PC_STAGE_VERIFICATION, since);
     status = pc_fit_stage(ctx, &proj, p, r, status);
+    pc_stage_clock_lap(p->stages, PC_STAGE_FITTING, since);
     status = pc_seam_stage(ctx, surface, curve, p, r, status);
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */

@@ -74,7 +74,7 @@ pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rve
 {
     r->last_singular = 0;
     r->last_has_d = 0;
-    if (!pc_refine_on_knot_line(r, v) || other->t == v->t)
+    if (!pc_refine_at_crease(r, v) || other->t == v->t)
         return derivative_tangent(r, v);
     double step = PC_SIDE_STEP_REL * r->t_range;
     pc_proj_point pt;
@@ -249,7 +249,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
         h = hh * f > h || hh >= h ? hh * f : h;
         h_ok = h;
         /* the start tangent of the next piece: the other side at a knot line */
-        t_cur = cand.t < b->t && pc_refine_on_knot_line(r, &cand)
+        t_cur = cand.t < b->t && pc_refine_at_crease(r, &cand)
                     ? pc_refine_exact_tangent(r, &cand, b)
                     : t_cand;
         cur = cand;

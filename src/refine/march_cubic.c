@@ -70,7 +70,9 @@ static cubic_verdict try_cubic(pc_refiner *r, cubic_march *m, const pc_bezier_pa
         m->d0_patch = patch;
     }
     double d1[2], uv[8], cw[PC_PIECE_MAX_CW];
-    if (!m->d0_ok || !pc_refine_uv_tangent(r, cand, patch, d1) ||
+    pc_rvertex end = *cand; /* its q' from before it: one-sided at a corner of P */
+    end.t = pc_refine_corner_left(r, cand->t);
+    if (!m->d0_ok || !pc_refine_uv_tangent(r, &end, patch, d1) ||
         !pc_refine_hermite(r, patch, &m->cur, cand, m->d0, d1, uv))
         return CUBIC_INVALID;
     /* uv[2..5] hold h q' / 3. The allowance min_move keeps a stationary
@@ -87,7 +89,7 @@ static cubic_verdict try_cubic(pc_refiner *r, cubic_march *m, const pc_bezier_pa
     if (n < 0)
         return CUBIC_INVALID;
     /* G1 by construction off the knot lines: checked */
-    if (!pc_refine_on_knot_line(r, &m->cur) &&
+    if (!pc_refine_at_crease(r, &m->cur) &&
         !within_angle(m->prev_end, pc_refine_end_direction(n, cw, 0), r->cos_eps_t))
         return CUBIC_INVALID;
     cand->in_cubic = 1;

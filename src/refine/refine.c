@@ -108,6 +108,7 @@ static projcurve_status refine_branch(pc_refiner *r, const pc_branch *b, refine_
         return st;
     for (size_t k = 0; k < l->traced.count; ++k)
         pc_refine_snap_to_knot_lines(r, &l->traced.items[k]);
+    pc_refine_fix_corners(r, &l->traced);
     const pc_rvertex *tv = l->traced.items;
     const size_t nt = l->traced.count;
     l->out.count = 0; /* what store_branch finds if the budget stops step 1 */
@@ -426,7 +427,9 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
         r.max_vertices = max_pieces - pieces + 1;
         r.progress_lo = (double)i / (double)n_traced;
         r.progress_width = 1.0 / (double)n_traced;
+        double since = pc_stage_clock_now(opts->stages);
         st = refine_branch(&r, b, &lists, &descending);
+        since = pc_stage_clock_lap(opts->stages, PC_STAGE_REFINEMENT, since);
         if (st == PROJCURVE_ERR_LIMIT_REACHED) {
             b->end = PROJCURVE_END_LIMIT;
             st = PROJCURVE_OK;
@@ -434,6 +437,7 @@ projcurve_status pc_refine_and_compose(projcurve_context *ctx, const pc_projecto
         size_t made = 0;
         if (st == PROJCURVE_OK)
             st = store_branch(&r, res, i, &lists.out, descending, &made);
+        pc_stage_clock_lap(opts->stages, PC_STAGE_COMPOSITION, since);
         pieces += made;
         if (pieces >= max_pieces && i + 1 < n_traced)
             r.limit_hit = 1;

@@ -13,6 +13,7 @@
  *                fallback past a failure, a piece's end directions
  *   angle.c      joint angle control (eps_T)
  *   march_cubic.c, cubic.c   the same march with cubic Hermite pcurves
+ *   corners.c    corners of the curve P: fixed vertices, one-sided tangents
  *   refine.c     the driver: options, branches, composition, statistics
  */
 #ifndef PC_REFINE_INTERNAL_H
@@ -132,6 +133,18 @@ pc_vec3 pc_refine_surface_point(pc_refiner *r, double u, double v);
  * otherwise count as crossing it, and the crossing, found a rounding error
  * later in t, would leave a run too short for the corrector). */
 void pc_refine_snap_to_knot_lines(const pc_refiner *r, pc_rvertex *v);
+
+/* corners.c: 1 when the exact projection may turn at v: v lies on an inner
+ * knot line of S (pc_refine_on_knot_line) or at a corner of P (a knot
+ * where P is only C0); the tangents there are one-sided. */
+int pc_refine_at_crease(const pc_refiner *r, const pc_rvertex *v);
+/* corners.c: marks the vertices of list at a corner of P fixed: every
+ * output keeps them, so no piece straddles a corner. */
+void pc_refine_fix_corners(const pc_refiner *r, pc_vertex_list *list);
+/* corners.c: the curve parameter at which to evaluate the derivatives of
+ * the projection at t for the side before t (the neighbouring double when
+ * t is a corner of P, t elsewhere). */
+double pc_refine_corner_left(const pc_refiner *r, double t);
 
 /* cells.c: the patch whose closed parameter box holds both a and b (then the
  * whole segment lies in it), or NULL. */

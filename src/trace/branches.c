@@ -107,6 +107,7 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     tr->dir = cfg->dir;
     tr->lambda_tol = proj->newton_tol;
     tr->behind_tol = opts->tol_distance;
+    pc_curve_breaks_init(&tr->breaks, c, PC_BREAK_ORDER_PREDICTOR);
 }
 
 static projcurve_branch_start start_reason(projcurve_branch_end backward_end)
@@ -327,7 +328,10 @@ static void drop_coincident(const pc_tracer *tr, pc_seed_list *list)
 }
 
 /* [SY13] s3.4 over the whole curve. */
-static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
+/* The sweep; with a stage clock, the CPU time of the branches it starts
+ * (tracing, not jump detection) is added to *births. */
+static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder, pc_stage_clock *clock,
+                              double *births)
 {
     pc_seed_list active = {0}, found = {0};
     unsigned char *matched = NULL;
@@ -375,11 +379,14 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder)
             break;
         pc_match_seeds(tr->proj->surface, active.items, active.count, found.items, found.count,
                        tr->ds, matched);
+        const double born_at = pc_stage_clock_now(clock);
         for (size_t k = 0; k < found.count && st == PROJCURVE_OK && !tr->limit_hit; ++k)
             if (!matched[k])
                 st = start_branch(tr, &found.items[k],
                                   continues_branch(tr, &found.items[k], t - t_prev) ? SEED_RESUMED
                                                                                    : SEED_BORN);
+        if (clock != NULL)
+            *births += pc_stage_clock_now(clock) - born_at;
         if (st != PROJCURVE_OK)
             break;
     }
@@ -460,9 +467,12 @@ projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *p
 {
     pc_tracer tr;
     tracer_setup(&tr, ctx, proj, opts, config, r);
+    pc_stage_clock *const clock = opts->stages;
+    double since = pc_stage_clock_now(clock);
     pc_seed_list seeds = {0};
     projcurve_status st = finder->find(finder, ctx, tr.t_begin, &seeds);
     drop_coincident(&tr, &seeds);
+    since = pc_stage_clock_lap(clock, PC_STAGE_SEEDING, since);
     const double share = opts->jump_detection ? PC_SWEEP_SHARE_START : 1.0;
     for (size_t k = 0; k < seeds.count && st == PROJCURVE_OK && !tr.limit_hit; ++k) {
         tr.progress_lo = share * (double)k / (double)seeds.count;
@@ -470,8 +480,16 @@ projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *p
         st = start_branch(&tr, &seeds.items[k], SEED_AT_START);
     }
     pc_seed_list_free(&seeds);
-    if (st == PROJCURVE_OK && opts->jump_detection && !tr.limit_hit)
-        st = sweep(&tr, finder);
+    since = pc_stage_clock_lap(clock, PC_STAGE_TRACING, since);
+    if (st == PROJCURVE_OK && opts->jump_detection && !tr.limit_hit) {
+        double births = 0.0;
+        st = sweep(&tr, finder, clock, &births);
+        if (clock != NULL) {
+            clock->seconds[PC_STAGE_TRACING] += births;
+            clock->seconds[PC_STAGE_JUMPS] -= births;
+        }
+        since = pc_stage_clock_lap(clock, PC_STAGE_JUMPS, since);
+    }
     drop_single_points(r);
     if (tr.ray && opts->tol_distance > 0.0)
         drop_point_images(&tr, opts->tol_distance, r);

@@ -6,7 +6,9 @@
  * parameter step; the predictor (Taylor (3.5) or RK4) estimates q(t + h) and
  * Newton corrects it. A failed correction halves the step; a step never
  * passes the end of the curve, crosses a fold (a sign change of det J) or
- * leaves the domain (the exit is then located on the boundary).
+ * leaves the domain (the exit is then located on the boundary), and never
+ * passes a break of P (curve_breaks.h): it lands on it, and the branch
+ * goes on from there with the derivatives of the side ahead.
  */
 #include "trace/tracer.h"
 
@@ -254,6 +256,39 @@ static projcurve_status end_at_crossing(pc_tracer *tr, const pc_proj_point *cur,
     return add_vertex(tr, b, at.t, at.u, at.v);
 }
 
+/* q', q'' and det at (t, u, v) as seen from the side of t that the run
+ * goes to: at a break of P (curve_breaks.h) the curve is evaluated at the
+ * neighbouring double on that side, and out->t is t again. Returns the
+ * projector's derivatives() result. */
+static int derive_one_sided(const pc_tracer *tr, double t, double u, double v, int direction,
+                            pc_proj_point *out)
+{
+    const pc_projector *proj = tr->proj;
+    const double at = pc_curve_break_side(proj->curve, t, direction, tr->breaks.order);
+    const int ok = proj->derivatives(proj, at, u, v, out);
+    out->t = t;
+    return ok;
+}
+
+/* The curve parameter of the next step of length h from t: never past the
+ * end t_stop (remaining away) nor past the next break of P, landing
+ * exactly on either (a step within rounding of one is stretched to it, so
+ * that it is never missed by a sliver). */
+static double step_target(pc_tracer *tr, double t, double t_stop, double sign, double h,
+                          double remaining, int *on_break)
+{
+    *on_break = 0;
+    if (h >= remaining - PC_TRACE_END_SLACK * h)
+        return t_stop;
+    const double brk = pc_curve_breaks_next(&tr->breaks, t, sign > 0.0 ? 1 : -1);
+    const double to_break = sign * (brk - t);
+    if (to_break < remaining && h >= to_break - PC_TRACE_END_SLACK * h) {
+        *on_break = 1;
+        return brk;
+    }
+    return t + sign * h;
+}
+
 projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction, double t_stop,
                               int add_seed, pc_branch *b, projcurve_branch_end *why)
 {
@@ -275,7 +310,7 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
     /* the current point and the one being tried, swapped on acceptance */
     pc_proj_point points[2];
     pc_proj_point *cur = &points[0], *next = &points[1];
-    if (!proj->derivatives(proj, seed->t, seed->u, seed->v, cur)) {
+    if (!derive_one_sided(tr, seed->t, seed->u, seed->v, direction, cur)) {
         *why = stall_reason(cur);
         return PROJCURVE_OK;
     }
@@ -312,11 +347,9 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             *why = stall_reason(cur);
             return PROJCURVE_OK;
         }
-        /* never step over the end of the curve: land exactly on it (a
-         * step within rounding of the end is stretched to it, so that the
-         * end is never missed by a sliver) */
-        const double t_next =
-            h >= remaining - PC_TRACE_END_SLACK * h ? t_stop : cur->t + sign * h;
+        /* never step over the end of the curve or a break of P */
+        int on_break;
+        const double t_next = step_target(tr, cur->t, t_stop, sign, h, remaining, &on_break);
         tr->r->stats.steps += 1.0;
         const step_outcome out = try_step(tr, cur, t_next, next);
         if (out == STEP_REJECT) {
@@ -335,6 +368,11 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             return st;
         if (out == STEP_EXIT) {
             *why = PROJCURVE_END_BOUNDARY;
+            return PROJCURVE_OK;
+        }
+        /* on a break of P: go on with the derivatives of the side ahead */
+        if (on_break && !derive_one_sided(tr, next->t, next->u, next->v, direction, next)) {
+            *why = stall_reason(next);
             return PROJCURVE_OK;
         }
         pc_proj_point *const done = cur;

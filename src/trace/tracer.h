@@ -9,6 +9,7 @@
 
 #include <stddef.h>
 
+#include "trace/curve_breaks.h"
 #include "trace/trace.h"
 
 /* A corrected point farther than this fraction of the predicted step from
@@ -60,6 +61,9 @@ typedef struct pc_tracer {
     int ray;
     pc_vec3 dir;
     double lambda_tol, behind_tol;
+    /* The curve's breaks (curve_breaks.h): every step lands exactly on the
+     * next one, and the branch goes on with the derivatives of its side. */
+    pc_curve_breaks breaks;
 } pc_tracer;
 
 /* Polls the call's budget in full at curve parameter t (after
