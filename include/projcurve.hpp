@@ -1023,6 +1023,13 @@ struct compact_info {
     double curve_error;  ///< the same for the compact 3D curve
 };
 
+/** \brief A jump of a branch's pcurve where it crosses a seam or passes a pole. */
+struct seam_jump {
+    double t;  ///< the curve parameter of the jump
+    double du; ///< u just after minus u just before
+    double dv; ///< v just after minus v just before
+};
+
 /**
  * \brief Owner of a projection result: its branches, their points, pieces
  * and compact curves, and the status of the call that made it (a partial
@@ -1168,6 +1175,18 @@ public:
         info.pcurve_fitted = fitted != 0;
         return info;
     }
+    /** \brief The jumps of branch b's pcurve in increasing t
+     *  (projcurve_result_branch_seam); empty when it crosses no seam. */
+    std::vector<seam_jump> seams(context &ctx, std::size_t b) const
+    {
+        std::size_t n = 0;
+        ctx.check(projcurve_result_branch_seam_count(ctx.get(), handle_, b, &n));
+        std::vector<seam_jump> out(n);
+        for (std::size_t k = 0; k < n; ++k)
+            ctx.check(projcurve_result_branch_seam(ctx.get(), handle_, b, k, &out[k].t,
+                                                   &out[k].du, &out[k].dv));
+        return out;
+    }
 
 private:
     projcurve_result *handle_ = nullptr;
@@ -1188,6 +1207,48 @@ inline result projection(context &ctx, status s, projcurve_result *raw)
         return result(raw, s, ctx.message());
     projcurve_result_destroy(raw);
     throw ctx.error_of(s);
+}
+
+/* The results of a many-curve call: one per curve, each with its curve's
+ * status (an empty owner where the call kept none); thrown when the call
+ * failed as a whole (no statuses[i] is its status: nothing was projected). */
+inline std::vector<result> curve_results(context &ctx, status st,
+                                         std::vector<projcurve_result *> &raw,
+                                         const std::vector<projcurve_status> &statuses)
+{
+    std::size_t first = statuses.size();
+    for (std::size_t i = 0; i < statuses.size() && first == statuses.size(); ++i)
+        if (st != PROJCURVE_OK && statuses[i] == st)
+            first = i;
+    if (st != PROJCURVE_OK && first == statuses.size()) {
+        for (projcurve_result *r : raw)
+            projcurve_result_destroy(r);
+        throw ctx.error_of(st);
+    }
+    std::vector<result> out;
+    out.reserve(raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        std::string why;
+        if (i == first) {
+            why = ctx.message();
+            const std::string prefix = "curve " + std::to_string(i) + ": ";
+            if (why.compare(0, prefix.size(), prefix) == 0)
+                why.erase(0, prefix.size());
+        } else if (statuses[i] != PROJCURVE_OK) {
+            why = projcurve_status_string(statuses[i]);
+        }
+        out.emplace_back(std::exchange(raw[i], nullptr), statuses[i], std::move(why));
+    }
+    return out;
+}
+
+template <class Curves>
+std::vector<const projcurve_curve *> curve_handles(const Curves &curves)
+{
+    std::vector<const projcurve_curve *> out;
+    for (const auto &c : curves)
+        out.push_back(static_cast<const curve_view &>(c).get());
+    return out;
 }
 
 template <class F>
@@ -1287,6 +1348,45 @@ inline expected<result> try_project_orthogonal(context &ctx, surface_view s, cur
                                                const options *opts = nullptr)
 {
     return detail::attempt([&] { return project_orthogonal(ctx, s, c, opts); });
+}
+
+/**
+ * \brief Many curves onto s along dir in one call
+ * (projcurve_project_curves_directional): curves is a container of
+ * curve or curve_view. Returns one result per curve, the same as
+ * project_directional() gives it, whatever PROJCURVE_OPT_THREADS is; a
+ * curve that failed has its status in code() and message() (and an empty
+ * owner when its call kept no result). Throws when the call fails as a
+ * whole (zero or non-finite dir, bad options, out of memory).
+ */
+template <class Curves>
+std::vector<result> project_curves_directional(context &ctx, surface_view s, const Curves &curves,
+                                               const std::array<double, 3> &dir,
+                                               const options *opts = nullptr)
+{
+    const std::vector<const projcurve_curve *> handles = detail::curve_handles(curves);
+    std::vector<projcurve_result *> raw(handles.size(), nullptr);
+    std::vector<projcurve_status> statuses(handles.size(), PROJCURVE_OK);
+    const status st = projcurve_project_curves_directional(
+        ctx.get(), s.get(), handles.data(), handles.size(), dir.data(),
+        opts ? opts->get() : nullptr, raw.data(), statuses.data());
+    return detail::curve_results(ctx, st, raw, statuses);
+}
+
+/** \brief Many curves orthogonally onto s (projcurve_project_curves_orthogonal);
+ *  as project_curves_directional(). */
+template <class Curves>
+std::vector<result> project_curves_orthogonal(context &ctx, surface_view s, const Curves &curves,
+                                              const options *opts = nullptr)
+{
+    const std::vector<const projcurve_curve *> handles = detail::curve_handles(curves);
+    std::vector<projcurve_result *> raw(handles.size(), nullptr);
+    std::vector<projcurve_status> statuses(handles.size(), PROJCURVE_OK);
+    const status st = projcurve_project_curves_orthogonal(ctx.get(), s.get(), handles.data(),
+                                                          handles.size(),
+                                                          opts ? opts->get() : nullptr, raw.data(),
+                                                          statuses.data());
+    return detail::curve_results(ctx, st, raw, statuses);
 }
 
 /**

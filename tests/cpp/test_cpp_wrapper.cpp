@@ -718,6 +718,74 @@ void test_step_round_trip(pc::context &ctx, const std::string &dir)
     std::remove(path.c_str());
 }
 
+// Many curves in one call: each result equal, point for point, to the
+// single call's, with one thread or three; a curve that is a point fails
+// alone; a zero direction throws.
+void test_many_curves(pc::context &ctx)
+{
+    const pc::surface s = pc::surface::nurbs(ctx, 1, 1, 2, 2, saddle_net, {}, unit_knots, unit_knots);
+    std::vector<pc::curve> curves;
+    for (int k = 0; k < 4; ++k) {
+        const double a = 0.1 + 0.05 * k;
+        const double ctrl[] = {a, 0.2, 2, 0.9, 0.9 - a, 2};
+        curves.push_back(pc::curve::nurbs(ctx, 1, ctrl, {}, unit_knots));
+    }
+    pc::options opts(ctx);
+    for (long long threads : {1LL, 3LL}) {
+        opts.set_int(ctx, PROJCURVE_OPT_THREADS, threads);
+        const std::vector<pc::result> got = pc::project_curves_directional(ctx, s, curves, {0, 0.2, -1}, &opts);
+        CHECK(got.size() == curves.size());
+        for (std::size_t i = 0; i < got.size() && i < curves.size(); ++i) {
+            const pc::result one = pc::project_directional(ctx, s, curves[i], {0, 0.2, -1}, &opts);
+            CHECK(got[i].complete() && got[i].branch_count() == one.branch_count());
+            CHECK(got[i].branch_points(ctx, 0) == one.branch_points(ctx, 0));
+        }
+        const std::vector<pc::result> ortho = pc::project_curves_orthogonal(ctx, s, curves, &opts);
+        CHECK(ortho.size() == curves.size() && ortho[1].complete() &&
+              ortho[1].branch_count() == pc::project_orthogonal(ctx, s, curves[1]).branch_count());
+    }
+    const double same[] = {0.5, 0.5, 2, 0.5, 0.5, 2};
+    const pc::curve dot = pc::curve::nurbs(ctx, 1, same, {}, unit_knots);
+    const std::vector<pc::curve_view> mixed{curves[0], dot, curves[1]};
+    const std::vector<pc::result> got = pc::project_curves_directional(ctx, s, mixed, {0, 0, -1});
+    CHECK(got.size() == 3 && got[0].complete() && got[2].complete() && got[0].branch_count() == 1);
+    CHECK(got[1].code() == PROJCURVE_ERR_SINGULAR && !got[1] && !got[1].message().empty());
+    CHECK_THROWS(pc::project_curves_directional(ctx, s, curves, {0, 0, 0}),
+                 PROJCURVE_ERR_ZERO_DIRECTION, nullptr);
+    CHECK(pc::project_curves_orthogonal(ctx, s, std::vector<pc::curve_view>{}).empty());
+}
+
+// A branch across the seam of the closed cylinder of cylinder_analytic.step
+// (radius 10), seen from a point of its axis: one branch, one jump of the
+// period; and nearest hits on the sphere of sphere_analytic.step from
+// outside keep the front cap (z > 2.5, where the tangent cone from
+// (0, 0, 40) touches the radius-10 sphere).
+void test_seams_and_hits(pc::context &ctx)
+{
+    const std::string dir = std::string(PC_TEST_DATA_DIR) + "/cases-brep/";
+    const pc::model cyl = pc::model::read_file(ctx, dir + "cylinder_analytic.step");
+    const pc::model cyl_curve = pc::model::read_file(ctx, dir + "cyl_analytic_seam_conical.curves.igs");
+    const pc::surface_view wall = cyl.surface(0);
+    const pc::result r = pc::project_conical(ctx, wall, cyl_curve.curve(0), {0, 0, 10});
+    CHECK(r.complete() && r.branch_count() == 1);
+    const std::vector<pc::seam_jump> jumps = r.seams(ctx, 0);
+    const std::array<double, 4> dom = wall.domain(ctx);
+    CHECK(jumps.size() == 1 && near(std::fabs(jumps[0].du), dom[1] - dom[0], 1e-12) &&
+          std::fabs(jumps[0].dv) < 1e-9);
+    CHECK_THROWS(r.seams(ctx, 1), PROJCURVE_ERR_INDEX, nullptr);
+
+    const pc::model sph = pc::model::read_file(ctx, dir + "sphere_analytic.step");
+    const pc::model sph_curve = pc::model::read_file(ctx, dir + "sphere_analytic_conical_outside.curves.igs");
+    pc::options nearest(ctx);
+    nearest.set_int(ctx, PROJCURVE_OPT_HITS, PROJCURVE_HITS_NEAREST);
+    const pc::result every = pc::project_conical(ctx, sph.surface(0), sph_curve.curve(0), {0, 0, 40});
+    const pc::result front = pc::project_conical(ctx, sph.surface(0), sph_curve.curve(0), {0, 0, 40}, nearest);
+    CHECK(every.branch_count() == 2 && front.branch_count() == 1);
+    const std::vector<double> pts = front.branch_points(ctx, 0);
+    for (std::size_t i = 0; i + 2 < pts.size(); i += 3)
+        CHECK(sph.surface(0).point(ctx, pts[i + 1], pts[i + 2])[2] > 2.5);
+}
+
 // A closed solid: every edge is used by two face pieces (a seam twice by
 // one face), and each use names a piece whose edge is that edge.
 void test_model_shapes(pc::context &ctx)
@@ -827,6 +895,8 @@ int main(int argc, char **argv)
         test_iges_round_trip(ctx, dir);
         test_conical(ctx);
         test_step_round_trip(ctx, dir);
+        test_many_curves(ctx);
+        test_seams_and_hits(ctx);
         test_model_shapes(ctx);
         test_adopt(ctx);
     } catch (const pc::error &e) {
