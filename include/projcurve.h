@@ -773,6 +773,8 @@ typedef enum projcurve_branch_start {
     PROJCURVE_START_FAILED = 5,      /* resumes after a stretch the library could
                                         not follow or not verify (the branch
                                         before it ends PROJCURVE_END_FAILED) */
+    PROJCURVE_START_TRIM = 6,        /* onto a face: enters the face through one
+                                        of its trimming loops */
     PROJCURVE_START_VISIBLE = 8,     /* PROJCURVE_OPT_HITS nearest: becomes the
                                         nearest point again here */
     PROJCURVE_START_MAX_DISTANCE = 9 /* comes within PROJCURVE_OPT_MAX_DISTANCE
@@ -791,6 +793,8 @@ typedef enum projcurve_branch_end {
     PROJCURVE_END_CURVE_CROSSING = 6, /* directional, conical: the curve meets S here;
                                         beyond it the surface lies behind the
                                         curve ((q - p).Dir < 0) */
+    PROJCURVE_END_TRIM = 7,          /* onto a face: leaves the face through one
+                                        of its trimming loops */
     PROJCURVE_END_OCCLUDED = 8,      /* PROJCURVE_OPT_HITS nearest: another
                                         point becomes nearer here */
     PROJCURVE_END_MAX_DISTANCE = 9   /* leaves PROJCURVE_OPT_MAX_DISTANCE of
@@ -1219,6 +1223,136 @@ PROJCURVE_API projcurve_status projcurve_shape_edge_use(projcurve_context *ctx,
                                                         const projcurve_shape *shape,
                                                         size_t edge, size_t use, size_t *face,
                                                         size_t *loop, size_t *piece, int *sense);
+
+/* ======================================================================== */
+/* Projection onto faces and shapes                                          */
+/* ======================================================================== */
+
+/* The kind of a projection onto faces and shapes, and the vector it takes. */
+typedef enum projcurve_projection_kind {
+    PROJCURVE_PROJECT_DIRECTIONAL = 0, /* vec: the direction Dir (as projcurve_project_directional) */
+    PROJCURVE_PROJECT_CONICAL = 1,     /* vec: the eye point; not available yet: UNSUPPORTED */
+    PROJCURVE_PROJECT_ORTHOGONAL = 2   /* vec: unused (may be NULL) */
+} projcurve_projection_kind;
+
+/* The projection of a curve onto a face or a shape: per face, a
+ * projcurve_result of the branches clipped to the face's loops, and the
+ * face pieces chained across shared edges into connected curves. Immutable
+ * once made; may be read by many threads at once; released with
+ * projcurve_shape_result_destroy, which releases the per-face results too. */
+typedef struct projcurve_shape_result projcurve_shape_result;
+
+/* Projects curve onto face: the projection onto the face's untrimmed
+ * surface (projcurve_project_directional / _orthogonal with opts, NULL for
+ * defaults), clipped to the face's loops. Where a branch crosses a loop the
+ * crossing is located on the exact projection (Newton on q(t) = c(tau), the
+ * loop's 2D curve, to 1e-10 of the model size in 3D) and the branch is cut
+ * there: it ends with PROJCURVE_END_TRIM or starts with PROJCURVE_START_TRIM
+ * (also where the untrimmed projection ends on a loop, e.g. the domain's
+ * side), its traced points end at the crossing, its composed pieces are cut
+ * there by subdivision (still exactly on S) and its compact forms are
+ * restricted to the kept t range by knot insertion; the parts outside are
+ * dropped. The result has one face (index 0) and its connected curves are
+ * its branches, chained as projcurve_project_shape chains (across a seam
+ * edge of the face, and the end of a closed curve into its start). kind
+ * CONICAL gives UNSUPPORTED.
+ * Statuses: OK, NULL_ARGUMENT (face, curve, out; vec for DIRECTIONAL),
+ * INVALID_ARGUMENT (kind), UNSUPPORTED (CONICAL), and those of the
+ * projection onto the surface (LIMIT_REACHED and CANCELLED with the
+ * partial result set in *out). The progress callback of opts is not
+ * called by this function and projcurve_project_shape; TIME_LIMIT and
+ * MAX_WORK bound the whole call. Thread-safe for distinct contexts. */
+PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
+                                                      const projcurve_face *face,
+                                                      const projcurve_curve *curve,
+                                                      projcurve_projection_kind kind,
+                                                      const double vec[3],
+                                                      const projcurve_options *opts,
+                                                      projcurve_shape_result **out);
+
+/* Projects curve onto every face of shape that it can reach (directional:
+ * the faces whose 3D boxes meet the curve's box swept along +Dir;
+ * orthogonal: every face), each as projcurve_project_face, with one eps_D
+ * for all (unset: 1e-4 of the diagonal of the shape's box), then chains
+ * the face pieces into connected curves: a piece ending with
+ * PROJCURVE_END_TRIM on an edge continues with the piece starting with
+ * PROJCURVE_START_TRIM on the same edge of the shape
+ * (projcurve_shape_edge_use) whose start lies within the chaining
+ * tolerance of its end, in 3D and on the curve (|P(t1) - P(t2)|): the
+ * largest of the shape's sewing tolerance, the faces' model precision
+ * (projcurve_face_tolerance) and 1e-9 of the shape's size. On a closed
+ * curve (P(t0) and P(t1) within that tolerance) the piece that ends the
+ * curve continues into the piece of the same face that starts it, and the
+ * connected curve is closed (projcurve_shape_result_curve_info). Connected
+ * curves come in increasing order of their first curve parameter, then of
+ * the distance of their first point along Dir (orthogonal: from the curve).
+ * A face whose projection fails is kept with its status and message
+ * (projcurve_shape_result_face) and the others are still projected and
+ * chained; a piece that ends on an edge with no continuation (the other
+ * face is missing, e.g. not built by the reader, or lies beyond the
+ * chaining tolerance) ends its connected curve, and is counted in
+ * projcurve_shape_result_open_end_count (see there).
+ * Statuses: those of projcurve_project_face; a failed face alone does not
+ * fail the call. Thread-safe for distinct contexts. */
+PROJCURVE_API projcurve_status projcurve_project_shape(projcurve_context *ctx,
+                                                       const projcurve_shape *shape,
+                                                       const projcurve_curve *curve,
+                                                       projcurve_projection_kind kind,
+                                                       const double vec[3],
+                                                       const projcurve_options *opts,
+                                                       projcurve_shape_result **out);
+
+/* Releases a shape result and its per-face results (NULL is ignored). */
+PROJCURVE_API void projcurve_shape_result_destroy(projcurve_shape_result *result);
+
+/* Connected curves (0 for NULL). Thread-safe. */
+PROJCURVE_API size_t projcurve_shape_result_curve_count(const projcurve_shape_result *result);
+
+/* A connected curve (outputs may be NULL): its number of face pieces, its
+ * curve-parameter range (t of its first piece's start, t of its last
+ * piece's end) and *closed 1 when its last piece chains into its first.
+ * Statuses: OK, NULL_ARGUMENT, INDEX. Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_shape_result_curve_info(
+    projcurve_context *ctx, const projcurve_shape_result *result, size_t curve,
+    size_t *n_pieces, double t_range[2], int *closed);
+
+/* Face piece `piece` of connected curve `curve` (outputs may be NULL):
+ * *face the index of its face in the shape (0 for projcurve_project_face;
+ * projcurve_shape_face_model_index gives the model's), and the piece as a
+ * branch of that face's result: *face_result (borrowed, valid while the
+ * shape result lives) and *branch, to be read with the projcurve_result
+ * functions (points = pcurve on that face, pieces, compact forms); its t
+ * range and start / end reasons as projcurve_result_branch_info gives them.
+ * Statuses: OK, NULL_ARGUMENT, INDEX. Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_shape_result_piece(
+    projcurve_context *ctx, const projcurve_shape_result *result, size_t curve, size_t piece,
+    size_t *face, const projcurve_result **face_result, size_t *branch, double t_range[2],
+    projcurve_branch_start *start, projcurve_branch_end *end);
+
+/* Faces that were projected (0 for NULL): those whose box the swept curve
+ * meets, in the order of the shape. */
+PROJCURVE_API size_t projcurve_shape_result_face_count(const projcurve_shape_result *result);
+
+/* Projected face i (outputs may be NULL): *face its index in the shape,
+ * *face_result its clipped result (borrowed; NULL when its projection
+ * failed), *status the status of its projection and *message its message
+ * ("" on OK; borrowed). Statuses: OK, NULL_ARGUMENT, INDEX. Thread-safe. */
+PROJCURVE_API projcurve_status projcurve_shape_result_face(
+    projcurve_context *ctx, const projcurve_shape_result *result, size_t index, size_t *face,
+    const projcurve_result **face_result, projcurve_status *status, const char **message);
+
+/* Gaps between faces (0 for NULL): ends of face pieces on an edge that
+ * found no continuation where one was due, either because the edge's other
+ * face is missing (the edge has one use in a solid or closed shell: e.g. a
+ * face the reader could not build) or because a piece of the other face
+ * starts (ends) on the same edge within 1000 chaining tolerances but not
+ * within one (faces that do not meet within the model's precision). An end
+ * on a free border, or on a silhouette edge beyond which Dir grazes the
+ * next face, is not a gap. Thread-safe. */
+PROJCURVE_API size_t projcurve_shape_result_open_end_count(const projcurve_shape_result *result);
+
+/* The chaining tolerance the result was made with, model units (0 for NULL). */
+PROJCURVE_API double projcurve_shape_result_chain_tolerance(const projcurve_shape_result *result);
 
 /* An IGES writer: collect surfaces, curves and projection results, then
  * write them as one IGES 5.3 file. */

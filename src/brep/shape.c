@@ -15,6 +15,7 @@ void pc_shape_free(projcurve_shape *shape)
     free(shape->boxes);
     free(shape->edges);
     free(shape->uses);
+    pc_face_bvh_free(&shape->bvh);
     free(shape);
 }
 
@@ -97,6 +98,8 @@ projcurve_status pc_shape_build(projcurve_context *ctx, projcurve_shape_kind kin
         s->n_faces = n;
         st = group_edges(ctx, s);
     }
+    if (st == PROJCURVE_OK)
+        st = pc_face_bvh_build(ctx, &s->bvh, s->boxes, n);
     if (st != PROJCURVE_OK) {
         pc_shape_free(s);
         return st;

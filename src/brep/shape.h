@@ -2,8 +2,8 @@
 /*
  * A shape: a set of faces of a model and the edges they share (which
  * piece of which face runs along which edge, and in which sense), with the
- * 3D box of every face (a box list: shapes of real models have tens to a
- * few hundred faces).
+ * 3D box of every face and a BVH over them (shape_bvh.h; shapes of real
+ * models have tens to a * few hundred faces).
  *
  * Faces are borrowed from the model that holds the shape.
  */
@@ -13,6 +13,7 @@
 #include <stddef.h>
 
 #include "brep/face.h"
+#include "brep/shape_bvh.h"
 #include "projcurve.h"
 
 typedef struct pc_edge_use {
@@ -38,6 +39,7 @@ struct projcurve_shape {
     size_t n_uses;
     double sew_tol;     /* the tolerance edges were matched with, 0 when read */
     long id;            /* the file's entity, -1 when none */
+    pc_face_bvh bvh;    /* over boxes (shape_bvh.h) */
 };
 
 /* Builds a shape over faces[0..n) (model indices index[0..n)), grouping

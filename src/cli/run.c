@@ -186,6 +186,7 @@ const char *cli_start_name(projcurve_branch_start s)
     case PROJCURVE_START_SILHOUETTE: return "silhouette";
     case PROJCURVE_START_CURVE_CROSSING: return "curve_crossing";
     case PROJCURVE_START_FAILED: return "failed";
+    case PROJCURVE_START_TRIM: return "trim";
     case PROJCURVE_START_VISIBLE: return "visible";
     case PROJCURVE_START_MAX_DISTANCE: return "max_distance";
     }
@@ -202,6 +203,7 @@ const char *cli_end_name(projcurve_branch_end e)
     case PROJCURVE_END_LIMIT: return "limit";
     case PROJCURVE_END_FAILED: return "failed";
     case PROJCURVE_END_CURVE_CROSSING: return "curve_crossing";
+    case PROJCURVE_END_TRIM: return "trim";
     case PROJCURVE_END_OCCLUDED: return "occluded";
     case PROJCURVE_END_MAX_DISTANCE: return "max_distance";
     }
@@ -217,6 +219,7 @@ const char *cli_start_words(projcurve_branch_start s)
     case PROJCURVE_START_SILHOUETTE: return "a silhouette";
     case PROJCURVE_START_CURVE_CROSSING: return "where the curve leaves the surface";
     case PROJCURVE_START_FAILED: return "a stretch that could not be followed";
+    case PROJCURVE_START_TRIM: return "the trimmed edge of a face";
     case PROJCURVE_START_VISIBLE: return "where it comes out from behind another part";
     case PROJCURVE_START_MAX_DISTANCE: return "where it comes within the maximum distance";
     }
@@ -233,6 +236,7 @@ const char *cli_end_words(projcurve_branch_end e)
     case PROJCURVE_END_LIMIT: return "a limit (time, work or pieces)";
     case PROJCURVE_END_FAILED: return "a stretch that could not be followed";
     case PROJCURVE_END_CURVE_CROSSING: return "where the curve meets the surface";
+    case PROJCURVE_END_TRIM: return "the trimmed edge of a face";
     case PROJCURVE_END_OCCLUDED: return "where another part hides it";
     case PROJCURVE_END_MAX_DISTANCE: return "where it goes beyond the maximum distance";
     }

@@ -312,8 +312,34 @@ static outcome project(project_kind kind)
 }
 
 static outcome call_directional(void) { return project(PROJECT_DIRECTIONAL); }
-static outcome call_orthogonal(void) { return project(PROJECT_ORTHOGONAL); }
 static outcome call_conical(void) { return project(PROJECT_CONICAL); }
+
+/* onto a face: the whole domain with a square hole in its middle */
+static projcurve_face *face;
+
+static outcome call_project_face(void)
+{
+    projcurve_shape_result *r = SENTINEL;
+    armed = 1;
+    const projcurve_status st = projcurve_project_face(ctx, face, curve,
+                                                       PROJCURVE_PROJECT_DIRECTIONAL, down, NULL, &r);
+    armed = 0;
+    outcome o = {st, 0, r == SENTINEL};
+    if (st == PROJCURVE_OK) {
+        o.out = 1469598103934665603ull;
+        for (size_t i = 0; i < projcurve_shape_result_face_count(r); ++i) {
+            const projcurve_result *fr = NULL;
+            projcurve_shape_result_face(ctx, r, i, NULL, &fr, NULL, NULL);
+            const hash h = fr ? result_hash(ctx, fr) : 0;
+            o.out = mix(o.out, &h, sizeof h);
+        }
+        const size_t n = projcurve_shape_result_curve_count(r);
+        o.out = mix(o.out, &n, sizeof n);
+        projcurve_shape_result_destroy(r);
+    }
+    return o;
+}
+static outcome call_orthogonal(void) { return project(PROJECT_ORTHOGONAL); }
 
 /* Result access that allocates: every branch as one curve. */
 static outcome call_branch_curves(void)
@@ -488,7 +514,19 @@ int main(void)
     if (surface == NULL || curve == NULL || result == NULL || ortho_opts == NULL)
         return pc_test_finish("test_api_alloc_failures");
     CHECK(projcurve_result_branch_count(result) > 0);
+    {
+        static const double outer[] = {0, 0, 1, 0, 1, 1, 0, 1, 0, 0};
+        static const double hole[] = {0.4, 0.4, 0.4, 0.6, 0.6, 0.6, 0.6, 0.4, 0.4, 0.4};
+        static const double knots[] = {0, 0, 1, 2, 3, 4, 4};
+        const size_t loop_pieces[] = {1, 1}, n_ctrl[] = {5, 5};
+        const int degrees[] = {1, 1};
+        const double *ctrl[] = {outer, hole}, *weights[] = {NULL, NULL};
+        const double *kn[] = {knots, knots};
+        CHECK_OK(projcurve_face_create(ctx, surface, 2, loop_pieces, degrees, n_ctrl, ctrl,
+                                       weights, kn, 0.0, &face));
+    }
     static const entry entries[] = {
+        {"project_face", call_project_face},
         {"surface_create_nurbs", call_surface_create},
         {"curve_create_nurbs", call_curve_create},
         {"model_read (IGES)", call_read_iges},
@@ -506,6 +544,7 @@ int main(void)
         check_entry(&entries[i]);
     remove(write_path);
     projcurve_result_destroy(result);
+    projcurve_face_destroy(face);
     projcurve_options_destroy(ortho_opts);
     projcurve_curve_destroy(curve);
     projcurve_surface_destroy(surface);

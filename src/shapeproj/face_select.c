@@ -1,0 +1,51 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * The faces a projection can reach (shapeproj/face_select.h).
+ */
+#include "shapeproj/face_select.h"
+
+#include <math.h>
+
+int pc_swept_box_meets(const double cb[6], pc_vec3 dir, const double fb[6])
+{
+    const double d[3] = {dir.x, dir.y, dir.z};
+    double lo = 0.0, hi = INFINITY;
+    for (int i = 0; i < 3; ++i) {
+        /* cb + lambda d_i overlaps fb on axis i:
+         * fb_lo - cb_hi <= lambda d_i <= fb_hi - cb_lo */
+        const double a = fb[i] - cb[i + 3], b = fb[i + 3] - cb[i];
+        if (d[i] == 0.0) {
+            if (a > 0.0 || b < 0.0)
+                return 0;
+            continue;
+        }
+        double l = a / d[i], h = b / d[i];
+        if (l > h) {
+            const double tmp = l;
+            l = h;
+            h = tmp;
+        }
+        lo = fmax(lo, l);
+        hi = fmin(hi, h);
+    }
+    return lo <= hi;
+}
+
+int pc_curve_box(const projcurve_curve *curve, double box[6])
+{
+    if (curve->kind != PC_CURVE_NURBS)
+        return 0;
+    box_empty(box);
+    for (size_t i = 0; i < curve->nurbs.n_ctrl; ++i) {
+        const double *h = curve->nurbs.cw + 4 * i;
+        const double p[3] = {h[0] / h[3], h[1] / h[3], h[2] / h[3]};
+        box_add_point(box, p);
+    }
+    return 1;
+}
+
+int pc_swept_box_test(const void *user, const double box[6])
+{
+    const pc_swept_box *s = user;
+    return pc_swept_box_meets(s->curve_box, s->dir, box);
+}

@@ -1,0 +1,34 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * Which faces of a shape a projection can reach.
+ *
+ * Directional: the faces whose 3D box meets the curve's box swept along
+ * +Dir, {b + lambda Dir : b in box(P), lambda >= 0}. Per axis i the two
+ * boxes overlap for lambda in an interval (all lambda or none where
+ * Dir_i = 0); the face is a candidate when the intersection of the three
+ * intervals meets [0, inf). The curve's box is that of its control points
+ * (the curve lies in their convex hull); a callback curve has no bound,
+ * so every face is a candidate. The shape's face BVH (brep/shape_bvh.h)
+ * prunes the faces: the test holds for a node's box whenever it holds for
+ * a box inside it.
+ * Orthogonal: every face (a foot point may lie on any face).
+ */
+#ifndef PC_SHAPEPROJ_FACE_SELECT_H
+#define PC_SHAPEPROJ_FACE_SELECT_H
+
+#include "faceproj/surface_projection.h"
+
+/* 1 when the face box (6 doubles) may hold a projection of the curve box. */
+int pc_swept_box_meets(const double curve_box[6], pc_vec3 dir, const double face_box[6]);
+
+/* The same as a pc_box_test of the BVH, user a pc_swept_box. */
+typedef struct pc_swept_box {
+    double curve_box[6];
+    pc_vec3 dir;
+} pc_swept_box;
+int pc_swept_box_test(const void *user, const double box[6]);
+
+/* The curve's box from its control points: 1, or 0 for a callback curve. */
+int pc_curve_box(const projcurve_curve *curve, double box[6]);
+
+#endif /* PC_SHAPEPROJ_FACE_SELECT_H */
