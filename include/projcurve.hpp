@@ -6,11 +6,11 @@
  * Every C handle has a move-only owner that releases it (projcurve::context,
  * projcurve::options, projcurve::surface, projcurve::curve,
  * projcurve::result, projcurve::model, projcurve::face,
- * projcurve::iges_writer, projcurve::step_writer), like a std::unique_ptr
- * with the right deleter: get() gives the C handle, release() hands it
- * over, reset() replaces it, and a moved-from owner holds nothing. Handles borrowed from another
- * object (the surfaces, curves, faces and shapes of a model) are views
- * (projcurve::surface_view, projcurve::curve_view, projcurve::face_view,
+ * projcurve::shape_result, projcurve::iges_writer, projcurve::step_writer),
+ * like a std::unique_ptr with the right deleter: get() gives the C handle,
+ * release() hands it over, reset() replaces it, and a moved-from owner
+ * holds nothing. Handles borrowed from another object (the surfaces,
+ * curves, faces and shapes of a model) are views (projcurve::surface_view, projcurve::curve_view, projcurve::face_view,
  * projcurve::shape_view), valid while their owner lives; every owner of a
  * surface, curve or face converts to its view, and the calls that only read
  * a handle take views.
@@ -1834,6 +1834,179 @@ public:
 private:
     projcurve_model *handle_ = nullptr;
 };
+
+/* ======================================================================== */
+/* Projection onto faces and shapes                                          */
+/* ======================================================================== */
+
+/** \brief A connected curve of a shape_result. */
+struct connected_curve {
+    std::size_t n_pieces;          ///< its face pieces
+    std::array<double, 2> t_range; ///< t of its first piece's start, of its last piece's end
+    bool closed;                   ///< its last piece chains into its first
+};
+
+/** \brief A face piece of a connected curve: branch `branch` of the face's
+ *  result (borrowed from the shape_result; read it with the
+ *  projcurve_result_* functions). */
+struct shape_piece {
+    std::size_t face;                   ///< index of its face in the shape
+    const projcurve_result *face_result; ///< the face's clipped result
+    std::size_t branch;                 ///< its branch there
+    std::array<double, 2> t_range;      ///< its curve-parameter range
+    projcurve_branch_start start;       ///< why it starts
+    projcurve_branch_end end;           ///< why it ends
+};
+
+/** \brief A projected face of a shape_result. */
+struct face_outcome {
+    std::size_t face;               ///< index of the face in the shape
+    const projcurve_result *result; ///< its clipped result (borrowed; NULL when it failed)
+    status code;                    ///< the status of its projection
+    std::string message;            ///< its message ("" on OK)
+};
+
+/** \brief Owner of the result of project_face() / project_shape(): per face
+ *  a clipped result, and the face pieces chained into connected curves. */
+class shape_result {
+public:
+    /** \brief An empty owner. */
+    shape_result() noexcept = default;
+    /** \brief Takes ownership of a C shape result made by a call that returned s. */
+    explicit shape_result(projcurve_shape_result *adopt, status s = PROJCURVE_OK,
+                          std::string message = std::string()) noexcept
+        : handle_(adopt), status_(s), message_(std::move(message))
+    {
+    }
+    shape_result(const shape_result &) = delete;
+    shape_result &operator=(const shape_result &) = delete;
+    /** \brief Moves the handle and the call's status. */
+    shape_result(shape_result &&other) noexcept
+        : handle_(other.release()), status_(other.status_), message_(std::move(other.message_))
+    {
+    }
+    /** \brief Releases the current handle, then takes other's. */
+    shape_result &operator=(shape_result &&other) noexcept
+    {
+        if (this != &other) {
+            status_ = other.status_;
+            message_ = std::move(other.message_);
+            reset(other.release());
+        }
+        return *this;
+    }
+    ~shape_result() { reset(); }
+
+    /** \brief The C handle (still owned). */
+    const projcurve_shape_result *get() const noexcept { return handle_; }
+    /** \brief Whether it holds a handle. */
+    explicit operator bool() const noexcept { return handle_ != nullptr; }
+    /** \brief Gives the handle up. */
+    projcurve_shape_result *release() noexcept { return std::exchange(handle_, nullptr); }
+    /** \brief Releases the handle and takes adopt instead. */
+    void reset(projcurve_shape_result *adopt = nullptr) noexcept
+    {
+        projcurve_shape_result_destroy(std::exchange(handle_, adopt));
+    }
+    /** \brief The status of the call: OK, LIMIT_REACHED or CANCELLED. */
+    status code() const noexcept { return status_; }
+    /** \brief The context's message when the call stopped early. */
+    const std::string &message() const noexcept { return message_; }
+    /** \brief Whether the call ran to its end. */
+    bool complete() const noexcept { return status_ == PROJCURVE_OK; }
+
+    /** \brief The number of connected curves. */
+    std::size_t curve_count() const noexcept { return projcurve_shape_result_curve_count(handle_); }
+    /** \brief Connected curve k. */
+    connected_curve curve(context &ctx, std::size_t k) const
+    {
+        connected_curve c{};
+        int closed = 0;
+        ctx.check(projcurve_shape_result_curve_info(ctx.get(), handle_, k, &c.n_pieces,
+                                                    c.t_range.data(), &closed));
+        c.closed = closed != 0;
+        return c;
+    }
+    /** \brief Face piece j of connected curve k. */
+    shape_piece piece(context &ctx, std::size_t k, std::size_t j) const
+    {
+        shape_piece p{};
+        ctx.check(projcurve_shape_result_piece(ctx.get(), handle_, k, j, &p.face, &p.face_result,
+                                               &p.branch, p.t_range.data(), &p.start, &p.end));
+        return p;
+    }
+    /** \brief The number of faces projected. */
+    std::size_t face_count() const noexcept { return projcurve_shape_result_face_count(handle_); }
+    /** \brief Projected face i. */
+    face_outcome face(context &ctx, std::size_t i) const
+    {
+        face_outcome f{};
+        const char *why = nullptr;
+        ctx.check(projcurve_shape_result_face(ctx.get(), handle_, i, &f.face, &f.result, &f.code,
+                                              &why));
+        f.message = why ? why : "";
+        return f;
+    }
+    /** \brief Ends on an edge that found no continuation where one was due. */
+    std::size_t open_end_count() const noexcept
+    {
+        return projcurve_shape_result_open_end_count(handle_);
+    }
+    /** \brief The chaining tolerance, model units. */
+    double chain_tolerance() const noexcept
+    {
+        return projcurve_shape_result_chain_tolerance(handle_);
+    }
+
+private:
+    projcurve_shape_result *handle_ = nullptr;
+    status status_ = PROJCURVE_OK;
+    std::string message_;
+};
+
+/// \cond PROJCURVE_DETAIL
+namespace detail {
+inline shape_result shape_projection(context &ctx, status s, projcurve_shape_result *raw)
+{
+    if (s == PROJCURVE_OK)
+        return shape_result(raw);
+    if ((s == PROJCURVE_ERR_LIMIT_REACHED || s == PROJCURVE_ERR_CANCELLED) && raw)
+        return shape_result(raw, s, ctx.message());
+    projcurve_shape_result_destroy(raw);
+    throw ctx.error_of(s);
+}
+} // namespace detail
+/// \endcond
+
+/**
+ * \brief Projection of c onto face f (projcurve_project_face): kind
+ * PROJCURVE_PROJECT_DIRECTIONAL with vec the direction, or
+ * PROJCURVE_PROJECT_ORTHOGONAL (vec unused). A partial result is returned
+ * (shape_result::complete() false); any other failure throws.
+ */
+inline shape_result project_face(context &ctx, face_view f, curve_view c,
+                                 projcurve_projection_kind kind,
+                                 const std::array<double, 3> &vec = {0, 0, 0},
+                                 const options *opts = nullptr)
+{
+    projcurve_shape_result *raw = nullptr;
+    const status st = projcurve_project_face(ctx.get(), f.get(), c.get(), kind, vec.data(),
+                                             opts ? opts->get() : nullptr, &raw);
+    return detail::shape_projection(ctx, st, raw);
+}
+
+/** \brief Projection of c onto every face of shape sh it reaches, chained into
+ *  connected curves (projcurve_project_shape); as project_face(). */
+inline shape_result project_shape(context &ctx, shape_view sh, curve_view c,
+                                  projcurve_projection_kind kind,
+                                  const std::array<double, 3> &vec = {0, 0, 0},
+                                  const options *opts = nullptr)
+{
+    projcurve_shape_result *raw = nullptr;
+    const status st = projcurve_project_shape(ctx.get(), sh.get(), c.get(), kind, vec.data(),
+                                              opts ? opts->get() : nullptr, &raw);
+    return detail::shape_projection(ctx, st, raw);
+}
 
 /* ======================================================================== */
 /* IGES output                                                               */
