@@ -10,8 +10,9 @@
  * like a std::unique_ptr with the right deleter: get() gives the C handle,
  * release() hands it over, reset() replaces it, and a moved-from owner
  * holds nothing. Handles borrowed from another object (the surfaces,
- * curves, faces and shapes of a model) are views (projcurve::surface_view, projcurve::curve_view, projcurve::face_view,
- * projcurve::shape_view), valid while their owner lives; every owner of a
+ * curves, faces and shapes of a model) are views (projcurve::surface_view,
+ * projcurve::curve_view, projcurve::face_view, projcurve::shape_view),
+ * valid while their owner lives; every owner of a
  * surface, curve or face converts to its view, and the calls that only read
  * a handle take views.
  *
