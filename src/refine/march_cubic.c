@@ -16,10 +16,11 @@
  * Where the cubic cannot be used — its control points leave the patch (the
  * curve would leave it: the composition would not be on S), or q' is not
  * available (a fold at a branch end) — the step is halved a few times, and
- * then that stretch is handed to the straight-segment march (march.c),
- * which holds its pieces to eps_D and their end tangents to eps_T / 2 of the
- * exact ones: a joint between a straight and a cubic piece is then within
- * eps_T / 2.
+ * then the rest of the run (to its next fixed vertex) is handed to the
+ * straight-segment march (march.c), as is a cubic still beyond eps_D at
+ * the step floor; that march holds its pieces to eps_D and their end
+ * tangents to eps_T / 2 of the exact ones: a joint between a straight and a
+ * cubic piece is then within eps_T / 2.
  */
 #include <math.h>
 
@@ -114,17 +115,17 @@ static double step_factor(double ratio_d)
     return f;
 }
 
-/* Appends the stretch cur-end made by the straight march (or, without a
- * common patch, split at the knot lines), its vertices marked straight. */
+/* Appends the stretch cur-end made by the straight march, its vertices
+ * marked straight; *straight_step gets that march's last step. */
 static projcurve_status straight_stretch(pc_refiner *r, const pc_rvertex *cur,
-                                         const pc_rvertex *end, int in_patch,
-                                         pc_vertex_list *out)
+                                         const pc_rvertex *end, pc_vertex_list *out,
+                                         double *straight_step)
 {
     const size_t first = out->count;
     const double step = r->step;
     r->step = 0.0;
-    const projcurve_status st = in_patch ? pc_refine_march(r, cur, end, out)
-                                         : pc_refine_split(r, cur, end, 0, out);
+    const projcurve_status st = pc_refine_march(r, cur, end, out);
+    *straight_step = r->step;
     r->step = step;
     for (size_t k = first; k < out->count; ++k)
         out->items[k].in_cubic = 0;
@@ -145,11 +146,15 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
     cubic_march m = {*a, NULL, {0.0, 0.0}, 0, vec3(0.0, 0.0, 0.0)};
     double h = r->step > 0.0 ? r->step : b->t - a->t;
     int rejections = 0, invalid = 0;
+    pc_rvertex first_invalid = *a; /* the candidate before the current invalid halvings */
     while (m.cur.t < b->t) {
         pc_rvertex cand;
         int reached = pc_refine_march_candidate(r, &m.cur, b, h, &cand);
         if (reached && pc_refine_common_patch(r, &m.cur, &cand) == NULL)
             reached = pc_refine_knot_crossing(r, &m.cur, &cand, &cand);
+        /* a knot-line crossing found at cur itself is no step: taken, it
+         * was output again and again, to the piece limit (as march.c) */
+        reached = reached && cand.t > m.cur.t;
         if (!reached) {
             h *= 0.5; /* the corrector failed: come closer */
             if (++rejections < PC_CUBIC_MAX_REJECTIONS && h > r->min_dt)
@@ -178,25 +183,54 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
             h = hh * step_factor(ratio_d);
             continue;
         }
+        if (v == CUBIC_INVALID && invalid == 0)
+            first_invalid = cand;
         if (v == CUBIC_INVALID && can_shrink && ++invalid < PC_CUBIC_MAX_INVALID) {
             ++rejections;
             h = 0.5 * hh;
             continue;
         }
         projcurve_status st;
-        if (v == CUBIC_INVALID) {
-            st = straight_stretch(r, &m.cur, &cand, patch != NULL, out);
+        if (v != CUBIC_ACCEPT) {
+            /* The straight march takes over where the cubic stays invalid
+             * (near a fold, where q' grows without bound) or is still too
+             * far at the step floor: the stretch cur-cand. Where that
+             * stretch ends beside a fold, its last straight piece, held to
+             * the exact tangent there, can miss the angle bound down to
+             * the step floor and become a gap (the bumpy sheet of
+             * test_trace_far 1e8 from the origin: 181 FAILED ends): then
+             * the stretch is undone and the straight march takes the rest
+             * of the run, as it would with straight pcurves throughout.
+             * The march then goes on from the step tried before the
+             * halvings: going on from the halved one, 1/32 of it, made
+             * every later candidate there invalid too and the step 32
+             * times shorter again at each stretch, down to rounding-sized
+             * stretches one after another to the call's limit
+             * (linkrods.step surface 15, lifted diagonal, t = 0.9827). */
+            const int whole = v == CUBIC_INVALID && first_invalid.t > cand.t;
+            const size_t first = out->count, gaps = r->gaps, forced = r->forced;
+            const int cur_gap = first > 0 ? out->items[first - 1].gap : 0; /* (a gap marks
+                                                                     the vertex before it) */
+            double straight_step = 0.0;
+            st = straight_stretch(r, &m.cur, &cand, out, &straight_step);
+            if (st == PROJCURVE_OK && r->gaps > gaps && cand.t < b->t) {
+                out->count = first;
+                if (first > 0)
+                    out->items[first - 1].gap = cur_gap;
+                r->gaps = gaps;
+                r->forced = forced;
+                st = straight_stretch(r, &m.cur, b, out, &straight_step);
+            }
+            h = fmax(h, fmax(whole ? first_invalid.t - m.cur.t : hh, straight_step));
         } else {
-            if (v == CUBIC_TOO_FAR) /* forced: see PC_CUBIC_MAX_REJECTIONS */
-                ++r->forced;
             st = pc_refine_output(r, out, &cand);
+            /* A step cut short by the run end or a knot line says nothing
+             * against the old h. */
+            const double f = step_factor(ratio_d);
+            h = hh * f > h || hh >= h ? hh * f : h;
         }
         if (st != PROJCURVE_OK)
             return st;
-        /* A step cut short by the run end or a knot line says nothing
-         * against the old h. */
-        const double f = v == CUBIC_ACCEPT ? step_factor(ratio_d) : 1.0;
-        h = hh * f > h || hh >= h ? hh * f : h;
         advance(&m, &out->items[out->count - 1], end_dir);
         rejections = invalid = 0;
     }

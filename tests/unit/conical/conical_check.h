@@ -16,7 +16,7 @@
 #include "projcurve.h"
 
 /* Samples of each piece for the distance of a point to a result. */
-#define CONICAL_PIECE_SAMPLES 16
+#define CONICAL_PIECE_SAMPLES 256
 
 static inline double cc_dist(const double a[3], const double b[3])
 {
