@@ -6,12 +6,13 @@
  * Every C handle has a move-only owner that releases it (projcurve::context,
  * projcurve::options, projcurve::surface, projcurve::curve,
  * projcurve::result, projcurve::model, projcurve::face,
- * projcurve::iges_writer), like a std::unique_ptr with the right deleter:
- * get() gives the C handle, release() hands it over, reset() replaces it,
- * and a moved-from owner holds nothing. Handles borrowed from another
- * object (the surfaces, curves, faces and shapes of a model) are views
- * (projcurve::surface_view, projcurve::curve_view, projcurve::face_view,
- * projcurve::shape_view), valid while their owner lives; every owner of a
+ * projcurve::shape_result, projcurve::iges_writer, projcurve::step_writer),
+ * like a std::unique_ptr with the right deleter: get() gives the C handle,
+ * release() hands it over, reset() replaces it, and a moved-from owner
+ * holds nothing. Handles borrowed from another object (the surfaces,
+ * curves, faces and shapes of a model) are views (projcurve::surface_view,
+ * projcurve::curve_view, projcurve::face_view, projcurve::shape_view),
+ * valid while their owner lives; every owner of a
  * surface, curve or face converts to its view, and the calls that only read
  * a handle take views.
  *
@@ -1023,6 +1024,13 @@ struct compact_info {
     double curve_error;  ///< the same for the compact 3D curve
 };
 
+/** \brief A jump of a branch's pcurve where it crosses a seam or passes a pole. */
+struct seam_jump {
+    double t;  ///< the curve parameter of the jump
+    double du; ///< u just after minus u just before
+    double dv; ///< v just after minus v just before
+};
+
 /**
  * \brief Owner of a projection result: its branches, their points, pieces
  * and compact curves, and the status of the call that made it (a partial
@@ -1168,6 +1176,18 @@ public:
         info.pcurve_fitted = fitted != 0;
         return info;
     }
+    /** \brief The jumps of branch b's pcurve in increasing t
+     *  (projcurve_result_branch_seam); empty when it crosses no seam. */
+    std::vector<seam_jump> seams(context &ctx, std::size_t b) const
+    {
+        std::size_t n = 0;
+        ctx.check(projcurve_result_branch_seam_count(ctx.get(), handle_, b, &n));
+        std::vector<seam_jump> out(n);
+        for (std::size_t k = 0; k < n; ++k)
+            ctx.check(projcurve_result_branch_seam(ctx.get(), handle_, b, k, &out[k].t,
+                                                   &out[k].du, &out[k].dv));
+        return out;
+    }
 
 private:
     projcurve_result *handle_ = nullptr;
@@ -1188,6 +1208,48 @@ inline result projection(context &ctx, status s, projcurve_result *raw)
         return result(raw, s, ctx.message());
     projcurve_result_destroy(raw);
     throw ctx.error_of(s);
+}
+
+/* The results of a many-curve call: one per curve, each with its curve's
+ * status (an empty owner where the call kept none); thrown when the call
+ * failed as a whole (no statuses[i] is its status: nothing was projected). */
+inline std::vector<result> curve_results(context &ctx, status st,
+                                         std::vector<projcurve_result *> &raw,
+                                         const std::vector<projcurve_status> &statuses)
+{
+    std::size_t first = statuses.size();
+    for (std::size_t i = 0; i < statuses.size() && first == statuses.size(); ++i)
+        if (st != PROJCURVE_OK && statuses[i] == st)
+            first = i;
+    if (st != PROJCURVE_OK && first == statuses.size()) {
+        for (projcurve_result *r : raw)
+            projcurve_result_destroy(r);
+        throw ctx.error_of(st);
+    }
+    std::vector<result> out;
+    out.reserve(raw.size());
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+        std::string why;
+        if (i == first) {
+            why = ctx.message();
+            const std::string prefix = "curve " + std::to_string(i) + ": ";
+            if (why.compare(0, prefix.size(), prefix) == 0)
+                why.erase(0, prefix.size());
+        } else if (statuses[i] != PROJCURVE_OK) {
+            why = projcurve_status_string(statuses[i]);
+        }
+        out.emplace_back(std::exchange(raw[i], nullptr), statuses[i], std::move(why));
+    }
+    return out;
+}
+
+template <class Curves>
+std::vector<const projcurve_curve *> curve_handles(const Curves &curves)
+{
+    std::vector<const projcurve_curve *> out;
+    for (const auto &c : curves)
+        out.push_back(static_cast<const curve_view &>(c).get());
+    return out;
 }
 
 template <class F>
@@ -1237,6 +1299,35 @@ inline expected<result> try_project_directional(context &ctx, surface_view s, cu
     return detail::attempt([&] { return project_directional(ctx, s, c, dir, opts); });
 }
 
+/**
+ * \brief Conical (central) projection of c onto s from the eye point eye
+ * (projcurve_project_conical): P(t) maps to the points of s on the ray
+ * from eye through P(t), beyond P(t). As project_directional() for
+ * partial results and errors; a curve through the eye throws an error
+ * with status PROJCURVE_ERR_SINGULAR.
+ */
+inline result project_conical(context &ctx, surface_view s, curve_view c,
+                              const std::array<double, 3> &eye, const options *opts = nullptr)
+{
+    projcurve_result *raw = nullptr;
+    const status st = projcurve_project_conical(ctx.get(), s.get(), c.get(), eye.data(),
+                                                opts ? opts->get() : nullptr, &raw);
+    return detail::projection(ctx, st, raw);
+}
+/** \brief project_conical() with options. */
+inline result project_conical(context &ctx, surface_view s, curve_view c,
+                              const std::array<double, 3> &eye, const options &opts)
+{
+    return project_conical(ctx, s, c, eye, &opts);
+}
+/** \brief project_conical() without throwing. */
+inline expected<result> try_project_conical(context &ctx, surface_view s, curve_view c,
+                                            const std::array<double, 3> &eye,
+                                            const options *opts = nullptr)
+{
+    return detail::attempt([&] { return project_conical(ctx, s, c, eye, opts); });
+}
+
 /** \brief Orthogonal projection of c onto s (projcurve_project_orthogonal); as
  *  project_directional() for partial results and errors. */
 inline result project_orthogonal(context &ctx, surface_view s, curve_view c,
@@ -1258,6 +1349,45 @@ inline expected<result> try_project_orthogonal(context &ctx, surface_view s, cur
                                                const options *opts = nullptr)
 {
     return detail::attempt([&] { return project_orthogonal(ctx, s, c, opts); });
+}
+
+/**
+ * \brief Many curves onto s along dir in one call
+ * (projcurve_project_curves_directional): curves is a container of
+ * curve or curve_view. Returns one result per curve, the same as
+ * project_directional() gives it, whatever PROJCURVE_OPT_THREADS is; a
+ * curve that failed has its status in code() and message() (and an empty
+ * owner when its call kept no result). Throws when the call fails as a
+ * whole (zero or non-finite dir, bad options, out of memory).
+ */
+template <class Curves>
+std::vector<result> project_curves_directional(context &ctx, surface_view s, const Curves &curves,
+                                               const std::array<double, 3> &dir,
+                                               const options *opts = nullptr)
+{
+    const std::vector<const projcurve_curve *> handles = detail::curve_handles(curves);
+    std::vector<projcurve_result *> raw(handles.size(), nullptr);
+    std::vector<projcurve_status> statuses(handles.size(), PROJCURVE_OK);
+    const status st = projcurve_project_curves_directional(
+        ctx.get(), s.get(), handles.data(), handles.size(), dir.data(),
+        opts ? opts->get() : nullptr, raw.data(), statuses.data());
+    return detail::curve_results(ctx, st, raw, statuses);
+}
+
+/** \brief Many curves orthogonally onto s (projcurve_project_curves_orthogonal);
+ *  as project_curves_directional(). */
+template <class Curves>
+std::vector<result> project_curves_orthogonal(context &ctx, surface_view s, const Curves &curves,
+                                              const options *opts = nullptr)
+{
+    const std::vector<const projcurve_curve *> handles = detail::curve_handles(curves);
+    std::vector<projcurve_result *> raw(handles.size(), nullptr);
+    std::vector<projcurve_status> statuses(handles.size(), PROJCURVE_OK);
+    const status st = projcurve_project_curves_orthogonal(ctx.get(), s.get(), handles.data(),
+                                                          handles.size(),
+                                                          opts ? opts->get() : nullptr, raw.data(),
+                                                          statuses.data());
+    return detail::curve_results(ctx, st, raw, statuses);
 }
 
 /**
@@ -1707,6 +1837,179 @@ private:
 };
 
 /* ======================================================================== */
+/* Projection onto faces and shapes                                          */
+/* ======================================================================== */
+
+/** \brief A connected curve of a shape_result. */
+struct connected_curve {
+    std::size_t n_pieces;          ///< its face pieces
+    std::array<double, 2> t_range; ///< t of its first piece's start, of its last piece's end
+    bool closed;                   ///< its last piece chains into its first
+};
+
+/** \brief A face piece of a connected curve: branch `branch` of the face's
+ *  result (borrowed from the shape_result; read it with the
+ *  projcurve_result_* functions). */
+struct shape_piece {
+    std::size_t face;                   ///< index of its face in the shape
+    const projcurve_result *face_result; ///< the face's clipped result
+    std::size_t branch;                 ///< its branch there
+    std::array<double, 2> t_range;      ///< its curve-parameter range
+    projcurve_branch_start start;       ///< why it starts
+    projcurve_branch_end end;           ///< why it ends
+};
+
+/** \brief A projected face of a shape_result. */
+struct face_outcome {
+    std::size_t face;               ///< index of the face in the shape
+    const projcurve_result *result; ///< its clipped result (borrowed; NULL when it failed)
+    status code;                    ///< the status of its projection
+    std::string message;            ///< its message ("" on OK)
+};
+
+/** \brief Owner of the result of project_face() / project_shape(): per face
+ *  a clipped result, and the face pieces chained into connected curves. */
+class shape_result {
+public:
+    /** \brief An empty owner. */
+    shape_result() noexcept = default;
+    /** \brief Takes ownership of a C shape result made by a call that returned s. */
+    explicit shape_result(projcurve_shape_result *adopt, status s = PROJCURVE_OK,
+                          std::string message = std::string()) noexcept
+        : handle_(adopt), status_(s), message_(std::move(message))
+    {
+    }
+    shape_result(const shape_result &) = delete;
+    shape_result &operator=(const shape_result &) = delete;
+    /** \brief Moves the handle and the call's status. */
+    shape_result(shape_result &&other) noexcept
+        : handle_(other.release()), status_(other.status_), message_(std::move(other.message_))
+    {
+    }
+    /** \brief Releases the current handle, then takes other's. */
+    shape_result &operator=(shape_result &&other) noexcept
+    {
+        if (this != &other) {
+            status_ = other.status_;
+            message_ = std::move(other.message_);
+            reset(other.release());
+        }
+        return *this;
+    }
+    ~shape_result() { reset(); }
+
+    /** \brief The C handle (still owned). */
+    const projcurve_shape_result *get() const noexcept { return handle_; }
+    /** \brief Whether it holds a handle. */
+    explicit operator bool() const noexcept { return handle_ != nullptr; }
+    /** \brief Gives the handle up. */
+    projcurve_shape_result *release() noexcept { return std::exchange(handle_, nullptr); }
+    /** \brief Releases the handle and takes adopt instead. */
+    void reset(projcurve_shape_result *adopt = nullptr) noexcept
+    {
+        projcurve_shape_result_destroy(std::exchange(handle_, adopt));
+    }
+    /** \brief The status of the call: OK, LIMIT_REACHED or CANCELLED. */
+    status code() const noexcept { return status_; }
+    /** \brief The context's message when the call stopped early. */
+    const std::string &message() const noexcept { return message_; }
+    /** \brief Whether the call ran to its end. */
+    bool complete() const noexcept { return status_ == PROJCURVE_OK; }
+
+    /** \brief The number of connected curves. */
+    std::size_t curve_count() const noexcept { return projcurve_shape_result_curve_count(handle_); }
+    /** \brief Connected curve k. */
+    connected_curve curve(context &ctx, std::size_t k) const
+    {
+        connected_curve c{};
+        int closed = 0;
+        ctx.check(projcurve_shape_result_curve_info(ctx.get(), handle_, k, &c.n_pieces,
+                                                    c.t_range.data(), &closed));
+        c.closed = closed != 0;
+        return c;
+    }
+    /** \brief Face piece j of connected curve k. */
+    shape_piece piece(context &ctx, std::size_t k, std::size_t j) const
+    {
+        shape_piece p{};
+        ctx.check(projcurve_shape_result_piece(ctx.get(), handle_, k, j, &p.face, &p.face_result,
+                                               &p.branch, p.t_range.data(), &p.start, &p.end));
+        return p;
+    }
+    /** \brief The number of faces projected. */
+    std::size_t face_count() const noexcept { return projcurve_shape_result_face_count(handle_); }
+    /** \brief Projected face i. */
+    face_outcome face(context &ctx, std::size_t i) const
+    {
+        face_outcome f{};
+        const char *why = nullptr;
+        ctx.check(projcurve_shape_result_face(ctx.get(), handle_, i, &f.face, &f.result, &f.code,
+                                              &why));
+        f.message = why ? why : "";
+        return f;
+    }
+    /** \brief Ends on an edge that found no continuation where one was due. */
+    std::size_t open_end_count() const noexcept
+    {
+        return projcurve_shape_result_open_end_count(handle_);
+    }
+    /** \brief The chaining tolerance, model units. */
+    double chain_tolerance() const noexcept
+    {
+        return projcurve_shape_result_chain_tolerance(handle_);
+    }
+
+private:
+    projcurve_shape_result *handle_ = nullptr;
+    status status_ = PROJCURVE_OK;
+    std::string message_;
+};
+
+/// \cond PROJCURVE_DETAIL
+namespace detail {
+inline shape_result shape_projection(context &ctx, status s, projcurve_shape_result *raw)
+{
+    if (s == PROJCURVE_OK)
+        return shape_result(raw);
+    if ((s == PROJCURVE_ERR_LIMIT_REACHED || s == PROJCURVE_ERR_CANCELLED) && raw)
+        return shape_result(raw, s, ctx.message());
+    projcurve_shape_result_destroy(raw);
+    throw ctx.error_of(s);
+}
+} // namespace detail
+/// \endcond
+
+/**
+ * \brief Projection of c onto face f (projcurve_project_face): kind
+ * PROJCURVE_PROJECT_DIRECTIONAL with vec the direction, or
+ * PROJCURVE_PROJECT_ORTHOGONAL (vec unused). A partial result is returned
+ * (shape_result::complete() false); any other failure throws.
+ */
+inline shape_result project_face(context &ctx, face_view f, curve_view c,
+                                 projcurve_projection_kind kind,
+                                 const std::array<double, 3> &vec = {0, 0, 0},
+                                 const options *opts = nullptr)
+{
+    projcurve_shape_result *raw = nullptr;
+    const status st = projcurve_project_face(ctx.get(), f.get(), c.get(), kind, vec.data(),
+                                             opts ? opts->get() : nullptr, &raw);
+    return detail::shape_projection(ctx, st, raw);
+}
+
+/** \brief Projection of c onto every face of shape sh it reaches, chained into
+ *  connected curves (projcurve_project_shape); as project_face(). */
+inline shape_result project_shape(context &ctx, shape_view sh, curve_view c,
+                                  projcurve_projection_kind kind,
+                                  const std::array<double, 3> &vec = {0, 0, 0},
+                                  const options *opts = nullptr)
+{
+    projcurve_shape_result *raw = nullptr;
+    const status st = projcurve_project_shape(ctx.get(), sh.get(), c.get(), kind, vec.data(),
+                                              opts ? opts->get() : nullptr, &raw);
+    return detail::shape_projection(ctx, st, raw);
+}
+
+/* ======================================================================== */
 /* IGES output                                                               */
 /* ======================================================================== */
 
@@ -1793,6 +2096,96 @@ public:
 
 private:
     projcurve_iges_writer *handle_ = nullptr;
+};
+
+/* ======================================================================== */
+/* STEP output                                                               */
+/* ======================================================================== */
+
+/** \brief Owner of a STEP writer: collects surfaces, curves and results, then
+ *  writes one STEP AP214 file. One thread at a time. */
+class step_writer {
+public:
+    /** \brief An empty owner. */
+    step_writer() noexcept = default;
+    /** \brief A new, empty writer (millimetres, uncertainty 1e-7). */
+    explicit step_writer(context &ctx)
+    {
+        projcurve_step_writer *raw = nullptr;
+        ctx.check(projcurve_step_writer_create(ctx.get(), &raw));
+        handle_ = raw;
+    }
+    /** \brief Takes ownership of a C writer. */
+    explicit step_writer(projcurve_step_writer *adopt) noexcept : handle_(adopt) {}
+    step_writer(const step_writer &) = delete;
+    step_writer &operator=(const step_writer &) = delete;
+    /** \brief Moves the handle. */
+    step_writer(step_writer &&other) noexcept : handle_(other.release()) {}
+    /** \brief Releases the current handle, then takes other's. */
+    step_writer &operator=(step_writer &&other) noexcept
+    {
+        if (this != &other)
+            reset(other.release());
+        return *this;
+    }
+    ~step_writer() { reset(); }
+
+    /** \brief The C handle (still owned). */
+    projcurve_step_writer *get() const noexcept { return handle_; }
+    /** \brief Whether it holds a handle. */
+    explicit operator bool() const noexcept { return handle_ != nullptr; }
+    /** \brief Gives the handle up. */
+    projcurve_step_writer *release() noexcept { return std::exchange(handle_, nullptr); }
+    /** \brief Releases the handle and takes adopt instead. */
+    void reset(projcurve_step_writer *adopt = nullptr) noexcept
+    {
+        projcurve_step_writer_destroy(std::exchange(handle_, adopt));
+    }
+
+    /** \brief Adds a surface (written once however often it is added). */
+    step_writer &add_surface(context &ctx, surface_view s)
+    {
+        ctx.check(projcurve_step_writer_add_surface(ctx.get(), handle_, s.get()));
+        return *this;
+    }
+    /** \brief Adds a NURBS curve. */
+    step_writer &add_curve(context &ctx, curve_view c)
+    {
+        ctx.check(projcurve_step_writer_add_curve(ctx.get(), handle_, c.get()));
+        return *this;
+    }
+    /** \brief Adds every branch of r onto s as a SURFACE_CURVE (compact curve
+     *  and pcurve); the writer is left as it was when it throws. */
+    step_writer &add_result(context &ctx, surface_view s, const result &r)
+    {
+        ctx.check(projcurve_step_writer_add_result(ctx.get(), handle_, s.get(), r.get()));
+        return *this;
+    }
+    /** \brief The file's length unit in metres per unit (default 0.001, mm). */
+    step_writer &set_length_unit(context &ctx, double metres_per_unit)
+    {
+        ctx.check(projcurve_step_writer_set_length_unit(ctx.get(), handle_, metres_per_unit));
+        return *this;
+    }
+    /** \brief The file's distance uncertainty in model units, written as given. */
+    step_writer &set_uncertainty(context &ctx, double distance)
+    {
+        ctx.check(projcurve_step_writer_set_uncertainty(ctx.get(), handle_, distance));
+        return *this;
+    }
+    /** \brief Writes the file; the writer stays usable. */
+    void write(context &ctx, const std::string &path) const
+    {
+        ctx.check(projcurve_step_writer_write(ctx.get(), handle_, path.c_str()));
+    }
+    /** \brief write() without throwing. */
+    expected<void> try_write(context &ctx, const std::string &path) const
+    {
+        return detail::attempt([&] { write(ctx, path); });
+    }
+
+private:
+    projcurve_step_writer *handle_ = nullptr;
 };
 
 } // namespace projcurve

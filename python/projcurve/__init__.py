@@ -22,9 +22,12 @@ from ._errors import ERROR_CLASSES, Error, Status
 from ._lib import SONAME, fn as _fn, path as _path
 from .geometry import ClosestPoint, Curve, CurveInfo, Hit, Surface, SurfaceInfo
 from .model import (Edge, EdgeUse, Face, FaceInfo, FacePiece, IgesWriter, Model, Shape,
-                    ShapeKind, Where)
+                    ShapeKind, StepWriter, Where)
+from .shapeproj import (ConnectedCurve, FaceResult, ProjectionKind, ShapePiece, ShapeResult,
+                        project_face, project_shape)
 from .options import Option, OptionInfo, OptionType, Options, option_table
-from .result import (Branch, BranchEnd, BranchStart, CompactInfo, Piece, Result, Stat,
+from .result import (Branch, BranchEnd, BranchStart, CompactInfo, Piece, Result, Seam, Stat,
+                     project_conical, project_curves_directional, project_curves_orthogonal,
                      project_directional, project_orthogonal, project_orthogonal_implicit)
 
 __version__ = _generated.VERSION
@@ -55,7 +58,9 @@ def status_string(status):
 
 __all__ = ["Error", "Status", "Surface", "Curve", "Model", "Face", "Shape", "Options",
            "Option", "OptionType", "OptionInfo", "Result", "Branch", "Piece", "IgesWriter",
-           "project_directional", "project_orthogonal", "project_orthogonal_implicit",
+           "StepWriter", "project_directional", "project_conical", "project_curves_directional",
+           "project_curves_orthogonal", "Seam", "project_face", "project_shape",
+           "ShapeResult", "ShapePiece", "ConnectedCurve", "FaceResult", "ProjectionKind", "project_orthogonal", "project_orthogonal_implicit",
            "BranchStart", "BranchEnd", "Stat", "Where", "ShapeKind", "library_path",
            "library_version", "status_string", "option_table"] + \
           [c.__name__ for c in ERROR_CLASSES.values()]

@@ -308,3 +308,40 @@ class IgesWriter(Handle):
 
     def write(self, path):
         call("projcurve_iges_writer_write", self._ptr, os.fsencode(path))
+
+
+class StepWriter(Handle):
+    """Collects surfaces, curves and results, then writes one STEP file
+    (AP214): surfaces, curves and one SURFACE_CURVE per branch of a result."""
+    _kind = "STEP writer"
+
+    def __init__(self, length_unit=None, uncertainty=None):
+        out = ctypes.c_void_p()
+        call("projcurve_step_writer_create", ctypes.byref(out))
+        super().__init__(out.value, fn["projcurve_step_writer_destroy"])
+        if length_unit is not None:
+            self.set_length_unit(length_unit)
+        if uncertainty is not None:
+            self.set_uncertainty(uncertainty)
+
+    def add_surface(self, surface):
+        call("projcurve_step_writer_add_surface", self._ptr, surface._ptr)
+
+    def add_curve(self, curve):
+        call("projcurve_step_writer_add_curve", self._ptr, curve._ptr)
+
+    def add_result(self, surface, result):
+        """Every branch of result (on surface) as a SURFACE_CURVE of its
+        compact curve and pcurve."""
+        call("projcurve_step_writer_add_result", self._ptr, surface._ptr, result._ptr)
+
+    def set_length_unit(self, metres_per_unit):
+        call("projcurve_step_writer_set_length_unit", self._ptr, float(metres_per_unit))
+
+    def set_uncertainty(self, distance):
+        """The file's distance uncertainty in model units (no longer raised
+        by add_result)."""
+        call("projcurve_step_writer_set_uncertainty", self._ptr, float(distance))
+
+    def write(self, path):
+        call("projcurve_step_writer_write", self._ptr, os.fsencode(path))

@@ -25,6 +25,9 @@ Stat = _enum("projcurve_stat", "PROJCURVE_STAT_", "Stat")
 Piece = collections.namedtuple(
     "Piece", "degree control_points weights t_range uv_range pcurve_degree pcurve_control_points")
 CompactInfo = collections.namedtuple("CompactInfo", "pcurve_fitted pcurve_error curve_error")
+# A jump of a branch's pcurve across a seam or a pole: at curve parameter t
+# the (u, v) just after minus just before is (du, dv).
+Seam = collections.namedtuple("Seam", "t du dv")
 
 _MAX_PIECE = gen.DEFINES["PROJCURVE_MAX_PIECE_POINTS"]
 _MAX_PCURVE = gen.DEFINES["PROJCURVE_MAX_PCURVE_POINTS"]
@@ -93,6 +96,21 @@ class Branch:
                 flat[3 * k:3 * k + 3] = buf[4 * k + 1:4 * k + 4]
             return _arrays.rows(flat, n, 3, numpy)
         return self.result.surface.points(self.uv(), numpy)
+
+    @property
+    def seams(self):
+        """[Seam(t, du, dv), ...] in increasing t: where the pcurve jumps (a
+        seam of a closed surface crossed, a pole passed); [] for none."""
+        ptr = self.result._ptr
+        count = _size()
+        call("projcurve_result_branch_seam_count", ptr, self.index, ctypes.byref(count))
+        t, du, dv = ctypes.c_double(), ctypes.c_double(), ctypes.c_double()
+        out = []
+        for k in range(count.value):
+            call("projcurve_result_branch_seam", ptr, self.index, k, ctypes.byref(t),
+                 ctypes.byref(du), ctypes.byref(dv))
+            out.append(Seam(t.value, du.value, dv.value))
+        return out
 
     @property
     def pieces(self):
@@ -189,7 +207,8 @@ class Result(Handle):
 _PARTIAL = (Status.ERR_LIMIT_REACHED, Status.ERR_CANCELLED)
 
 
-def _project(name, surface, curve, options, allow_partial, option_values, *args):
+def _merged_options(options, option_values):
+    """The Options of a call: the caller's, with the keywords' over them."""
     if options is None or option_values:
         opts = Options(**option_values)
         if options is not None:  # the caller's options, with the keywords' over them
@@ -201,6 +220,11 @@ def _project(name, surface, curve, options, allow_partial, option_values, *args)
     else:
         opts = options
     opts.progress_error = None
+    return opts
+
+
+def _project(name, surface, curve, options, allow_partial, option_values, *args):
+    opts = _merged_options(options, option_values)
     out = ctypes.c_void_p()
     with Context() as ctx:
         status = fn[name](ctx.ptr, *args, opts._ptr, ctypes.byref(out))
@@ -230,6 +254,78 @@ def project_directional(surface, curve, direction, options=None, *, allow_partia
     d = _arrays.point(direction, "direction")
     return _project("projcurve_project_directional", surface, curve, options, allow_partial,
                     option_values, surface._ptr, curve._ptr, d.ptr)
+
+
+# Written by no call: tells a call that failed as a whole (statuses untouched).
+_UNSET = -0x7fff
+
+
+def _project_curves(name, surface, curves, direction, options, allow_partial, option_values):
+    curves = list(curves)
+    n = len(curves)
+    opts = _merged_options(options, option_values)
+    handles = (ctypes.c_void_p * max(n, 1))(*[c._ptr for c in curves])
+    raw = (ctypes.c_void_p * max(n, 1))()
+    statuses = (ctypes.c_int * max(n, 1))(*([_UNSET] * max(n, 1)))
+    middle = (direction.ptr,) if direction is not None else ()
+    with Context() as ctx:
+        status = fn[name](ctx.ptr, surface._ptr, handles, n, *middle, opts._ptr, raw, statuses)
+        message = ctx.message() if status != 0 else ""
+    ran = n > 0 and statuses[0] != _UNSET
+    results, codes = [], []
+    for i in range(n if ran else 0):
+        code = Status(statuses[i])
+        codes.append(code)
+        why = "" if code == Status.OK else fn["projcurve_status_string"](int(code)).decode()
+        if message.startswith("curve %d: " % i):
+            why = message[len("curve %d: " % i):]
+        results.append(Result(raw[i], surface, curves[i], code, why) if raw[i] else None)
+    if opts.progress_error is not None:
+        err, opts.progress_error = opts.progress_error, None
+        for r in results:
+            if r is not None:
+                r.close()
+        raise err
+    if status == 0:
+        return results
+    if ran and allow_partial and all(c == Status.OK or c in _PARTIAL for c in codes):
+        return results
+    e = error_for(status, message, name)
+    e.results = results  # per curve: its Result, None where its call kept none ([]: none ran)
+    e.statuses = codes
+    raise e
+
+
+def project_curves_directional(surface, curves, direction, options=None, *,
+                               allow_partial=False, **option_values):
+    """Many curves onto surface along direction in one call: a list with
+    the Result of each curve, the same as project_directional gives it.
+    threads=N (the option) shares the curves out among N threads; the
+    results are the same bit for bit. A curve that fails raises the Error
+    of the first such curve, whose .results (None where a curve kept no
+    result) and .statuses give every curve's; allow_partial=True returns
+    the list when the only failures are limits and cancels."""
+    d = _arrays.point(direction, "direction")
+    return _project_curves("projcurve_project_curves_directional", surface, curves, d, options,
+                           allow_partial, option_values)
+
+
+def project_curves_orthogonal(surface, curves, options=None, *, allow_partial=False,
+                              **option_values):
+    """Many curves orthogonally onto surface (see project_curves_directional)."""
+    return _project_curves("projcurve_project_curves_orthogonal", surface, curves, None, options,
+                           allow_partial, option_values)
+
+
+def project_conical(surface, curve, eye, options=None, *, allow_partial=False, **option_values):
+    """Every branch of the conical (central) projection of curve onto
+    surface from the eye point eye: P(t) maps to the points of the surface
+    on the ray from eye through P(t), beyond P(t) (see project_directional
+    for options and partial results). A curve through the eye raises
+    SingularError; an eye that is not finite NotFiniteError."""
+    e = _arrays.point(eye, "eye")
+    return _project("projcurve_project_conical", surface, curve, options, allow_partial,
+                    option_values, surface._ptr, curve._ptr, e.ptr)
 
 
 def project_orthogonal(surface, curve, options=None, *, allow_partial=False, **option_values):
@@ -264,5 +360,7 @@ def project_orthogonal_implicit(function, model_size, curve, options=None, *,
                     allow_partial, option_values, cb, None, float(model_size), curve._ptr)
 
 
-__all__ = ["Branch", "Result", "Piece", "CompactInfo", "BranchStart", "BranchEnd", "Stat",
-           "project_directional", "project_orthogonal", "project_orthogonal_implicit"]
+__all__ = ["Branch", "Result", "Piece", "CompactInfo", "Seam", "BranchStart", "BranchEnd", "Stat",
+           "project_curves_directional", "project_curves_orthogonal",
+           "project_directional", "project_conical", "project_orthogonal",
+           "project_orthogonal_implicit"]

@@ -68,7 +68,9 @@ typedef struct cli_job {
     const projcurve_curve *const *curves;
     size_t n_curves;
     int orthogonal;
+    int conical;   /* from the eye point eye (orthogonal 0) */
     double dir[3];
+    double eye[3];
     const projcurve_options *opts;
     cli_pair *pairs; /* n_surfaces * n_curves after cli_run */
     size_t n_pairs;
@@ -107,7 +109,8 @@ void cli_job_free(cli_job *job);
 
 /* Quality of one branch: residual = largest violation of the projection
  * condition at the traced points (distance of S(u,v) from the line through
- * P(t) along Dir, or the tangential part of S(u,v) - P(t) for orthogonal);
+ * P(t) along Dir, from the ray from the eye through P(t) for conical, or the
+ * tangential part of S(u,v) - P(t) for orthogonal);
  * deviation = largest distance between the composed curve and S(u,v) at
  * the traced points (negative when not composed). Returns 0 when the branch
  * could not be measured (a failed call or allocation): residual is then NaN,

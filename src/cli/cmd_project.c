@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
- * projcurve project FILE... (--dir X,Y,Z | --orthogonal) [OPTION]...: the
+ * projcurve project FILE... (--dir X,Y,Z | --eye X,Y,Z | --orthogonal) [OPTION]...: the
  * options are in project_args.c; here the inputs are read, the pairs
  * picked, the projections run and the outputs written.
  */
@@ -31,6 +31,13 @@ static int make_options(projcurve_context *ctx, const project_args *a, projcurve
     if (a->have_timeout && projcurve_options_set_double(ctx, *opts, PROJCURVE_OPT_TIME_LIMIT,
                                                         a->timeout) != PROJCURVE_OK)
         return cli_usage_error("--timeout: %s", projcurve_context_message(ctx));
+    if (a->nearest && projcurve_options_set_int(ctx, *opts, PROJCURVE_OPT_HITS,
+                                                PROJCURVE_HITS_NEAREST) != PROJCURVE_OK)
+        return cli_usage_error("--nearest: %s", projcurve_context_message(ctx));
+    if (a->have_max_distance &&
+        projcurve_options_set_double(ctx, *opts, PROJCURVE_OPT_MAX_DISTANCE, a->max_distance) !=
+            PROJCURVE_OK)
+        return cli_usage_error("--max-distance: %s", projcurve_context_message(ctx));
     return CLI_EXIT_OK;
 }
 
@@ -164,6 +171,9 @@ static void make_title(const project_args *a, char *title, size_t cap)
     char kind[96], more[48] = "";
     if (a->orthogonal)
         snprintf(kind, sizeof kind, "Orthogonal projection");
+    else if (a->have_eye)
+        snprintf(kind, sizeof kind, "Projection from the eye (%g, %g, %g)", a->eye[0], a->eye[1],
+                 a->eye[2]);
     else
         snprintf(kind, sizeof kind, "Projection along (%g, %g, %g)", a->dir[0], a->dir[1],
                  a->dir[2]);
@@ -210,7 +220,9 @@ int cli_cmd_project(int argc, char **argv)
         code = pick(ctx, &a, &in, &pk, &job);
     if (code == CLI_EXIT_OK) {
         job.orthogonal = a.orthogonal;
+        job.conical = a.have_eye;
         memcpy(job.dir, a.dir, sizeof job.dir);
+        memcpy(job.eye, a.eye, sizeof job.eye);
         /* the unit of the first input that declares one: coordinates are
          * written as read, so the output keeps the input's size */
         for (size_t m = 0; m < in.n_models && job.metres_per_unit == 0.0; ++m)

@@ -37,6 +37,14 @@ static int set_dir(project_args *a, const project_option *o, const char *v)
     return CLI_EXIT_OK;
 }
 
+static int set_eye(project_args *a, const project_option *o, const char *v)
+{
+    if (!cli_parse_vec3(v, a->eye))
+        return cli_usage_error("%s wants X,Y,Z (the eye point), got '%s'", o->name, v);
+    a->have_eye = 1;
+    return CLI_EXIT_OK;
+}
+
 static int set_orthogonal(project_args *a, const project_option *o, const char *v)
 {
     (void)o, (void)v;
@@ -116,6 +124,22 @@ static int set_interpolate(project_args *a, const project_option *o, const char 
     return CLI_EXIT_OK;
 }
 
+static int set_nearest(project_args *a, const project_option *o, const char *v)
+{
+    (void)o, (void)v;
+    a->nearest = 1;
+    return CLI_EXIT_OK;
+}
+
+static int set_max_distance(project_args *a, const project_option *o, const char *v)
+{
+    if (!cli_parse_double(v, &a->max_distance) || !(a->max_distance > 0.0))
+        return cli_usage_error("%s wants a positive distance in model units, got '%s'", o->name,
+                               v);
+    a->have_max_distance = 1;
+    return CLI_EXIT_OK;
+}
+
 static int set_quiet(project_args *a, const project_option *o, const char *v)
 {
     (void)o, (void)v;
@@ -139,6 +163,9 @@ static int set_output(project_args *a, const project_option *o, const char *v)
 
 static const project_option options[] = {
     {"--dir", "X,Y,Z", set_dir, "directional projection along (X, Y, Z)"},
+    {"--eye", "X,Y,Z", set_eye,
+     "conical projection from the eye point (X, Y, Z): each\n"
+     "point maps along the ray from the eye through it"},
     {"--orthogonal", NULL, set_orthogonal, "orthogonal projection (foot points)"},
     {"--surface", "I", set_surface,
      "project onto surface I only (numbered from 0 across the\n"
@@ -154,6 +181,12 @@ static const project_option options[] = {
     {"--interpolate", NULL, set_interpolate,
      "with --points: one interpolating cubic through the points\n"
      "(chord-length parameters) instead of the polyline"},
+    {"--nearest", NULL, set_nearest,
+     "keep only the point nearest to the curve on each ray (the\n"
+     "visible projection; orthogonally: the nearest foot point)"},
+    {"--max-distance", "D", set_max_distance,
+     "keep only the points within D (model units) of the curve,\n"
+     "along the ray (orthogonally: in space)"},
     {"--tol", "D", set_tol,
      "distance tolerance eps_D in model units (default: 1e-4\n"
      "of the surface size)"},
@@ -179,7 +212,8 @@ static const project_option options[] = {
 
 void project_args_usage(FILE *out)
 {
-    fputs("usage: projcurve project FILE... (--dir X,Y,Z | --orthogonal) [OPTION]...\n"
+    fputs("usage: projcurve project FILE... (--dir X,Y,Z | --eye X,Y,Z | --orthogonal)\n"
+          "                         [OPTION]...\n"
           "\n"
           "Projects every curve of the files (or the curve of --line / --points)\n"
           "onto every surface of the files (or the ones --surface / --curve pick).\n"
@@ -220,8 +254,8 @@ static int check_combinations(const project_args *a)
 {
     if (a->n_files == 0)
         return cli_usage_error("project needs at least one file (for the surfaces)");
-    if (a->have_dir == a->orthogonal)
-        return cli_usage_error("give exactly one of --dir X,Y,Z and --orthogonal");
+    if (a->have_dir + a->have_eye + a->orthogonal != 1)
+        return cli_usage_error("give exactly one of --dir X,Y,Z, --eye X,Y,Z and --orthogonal");
     if (a->have_line && a->points_path)
         return cli_usage_error("give one of --line and --points, not both");
     if (a->have_curve && (a->have_line || a->points_path))

@@ -15,12 +15,15 @@ typedef struct project_args {
     char **files;
     size_t n_files;
     /* projection kind */
-    int have_dir, orthogonal;
-    double dir[3];
+    int have_dir, have_eye, orthogonal;
+    double dir[3], eye[3];
     /* options of the library */
     double tol, angle, timeout;
     long long pcurve_degree;
     int have_tol, have_angle, have_pcurve_degree, have_timeout;
+    /* which hits: the nearest only, those within max_distance */
+    int nearest, have_max_distance;
+    double max_distance;
     /* which pairs: one surface / one curve of the files (by number) */
     int have_surface, have_curve;
     size_t surface, curve;

@@ -34,12 +34,16 @@ int cli_run(projcurve_context *ctx, cli_job *job)
             if (job->pair_started)
                 job->pair_started(job->pair_user, k, n);
             const double t0 = cli_now_ms();
-            p->status = job->orthogonal
-                            ? projcurve_project_orthogonal(ctx, job->surfaces[s], job->curves[c],
-                                                           job->opts, &p->result)
-                            : projcurve_project_directional(ctx, job->surfaces[s],
-                                                            job->curves[c], job->dir, job->opts,
-                                                            &p->result);
+            if (job->orthogonal)
+                p->status = projcurve_project_orthogonal(ctx, job->surfaces[s], job->curves[c],
+                                                         job->opts, &p->result);
+            else if (job->conical)
+                p->status = projcurve_project_conical(ctx, job->surfaces[s], job->curves[c],
+                                                      job->eye, job->opts, &p->result);
+            else
+                p->status = projcurve_project_directional(ctx, job->surfaces[s],
+                                                          job->curves[c], job->dir, job->opts,
+                                                          &p->result);
             job->time_ms += cli_now_ms() - t0;
             if (p->status != PROJCURVE_OK) {
                 const char *why = projcurve_context_message(ctx);
@@ -80,8 +84,9 @@ void cli_job_free(cli_job *job)
     job->n_pairs = 0;
 }
 
-/* The violation of the projection condition at one traced point (for the
- * orthogonal kind, residual.h). */
+/* The violation of the projection condition at one traced point: the
+ * distance of S(u, v) from the line of P(t)'s ray (for the orthogonal kind,
+ * residual.h). */
 static double residual_at(projcurve_context *ctx, const cli_job *job, const cli_pair *pair,
                           const double tuv[3])
 {
@@ -93,6 +98,16 @@ static double residual_at(projcurve_context *ctx, const cli_job *job, const cli_
         return cli_orthogonal_residual(ctx, surface, p, tuv[1], tuv[2]);
     if (projcurve_surface_eval(ctx, surface, tuv[1], tuv[2], 0, s) != PROJCURVE_OK)
         return INFINITY;
+    if (job->conical) {
+        /* distance of S from the line E + lambda (P - E); the library
+         * refuses a curve through the eye, so P - E is not zero here */
+        const double d[3] = {s[0] - job->eye[0], s[1] - job->eye[1], s[2] - job->eye[2]};
+        const double ray[3] = {p[0] - job->eye[0], p[1] - job->eye[1], p[2] - job->eye[2]};
+        double c[3];
+        cross3(d, ray, c);
+        const double len = norm3(ray);
+        return len > 0.0 ? norm3(c) / len : INFINITY;
+    }
     /* distance of S from the line P + lambda Dir */
     const double d[3] = {s[0] - p[0], s[1] - p[1], s[2] - p[2]};
     double c[3];

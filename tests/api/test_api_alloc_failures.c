@@ -4,7 +4,8 @@
  * built with PROJCURVE_ALLOC_HOOK: its allocations go through
  * src/common/alloc_hook.h, and pc_alloc_hook_fail below decides). For each
  * entry point exercised here (surface and curve creation, model reading,
- * directional and orthogonal projection, result access, IGES writing) the
+ * directional, conical and orthogonal projection, result access, IGES and
+ * STEP writing) the
  * call is run once to count its allocations and note the first allocation
  * of each call site, then once per allocation with that one failing (every
  * call site at least once, and every k-th allocation when there are more
@@ -157,6 +158,8 @@ static const double net_knots[12] = {0, 0, 0, 0, 0.2, 0.4, 0.6, 0.8, 1, 1, 1, 1}
 static const double curve_pts[] = {5, 10, 30, 30, 40, 30, 60, 60, 30, 95, 90, 30};
 static const double curve_knots[] = {0, 0, 0, 0, 1, 1, 1, 1};
 static const double down[3] = {0.0, 0.0, -1.0};
+/* above the middle of the net, the curve (z = 30) between it and the net */
+static const double eye[3] = {50.0, 50.0, 200.0};
 static projcurve_surface *surface;
 static projcurve_curve *curve;
 static projcurve_options *ortho_opts;
@@ -288,13 +291,19 @@ static outcome call_point_queries(void)
     return o;
 }
 
-static outcome project(int orthogonal)
+typedef enum { PROJECT_DIRECTIONAL, PROJECT_ORTHOGONAL, PROJECT_CONICAL } project_kind;
+
+static outcome project(project_kind kind)
 {
     projcurve_result *r = SENTINEL;
     armed = 1;
-    const projcurve_status st =
-        orthogonal ? projcurve_project_orthogonal(ctx, surface, curve, ortho_opts, &r)
-                   : projcurve_project_directional(ctx, surface, curve, down, NULL, &r);
+    projcurve_status st;
+    if (kind == PROJECT_ORTHOGONAL)
+        st = projcurve_project_orthogonal(ctx, surface, curve, ortho_opts, &r);
+    else if (kind == PROJECT_CONICAL)
+        st = projcurve_project_conical(ctx, surface, curve, eye, NULL, &r);
+    else
+        st = projcurve_project_directional(ctx, surface, curve, down, NULL, &r);
     armed = 0;
     outcome o = {st, st == PROJCURVE_OK ? result_hash(ctx, r) : 0, r == SENTINEL};
     if (st == PROJCURVE_OK)
@@ -302,7 +311,8 @@ static outcome project(int orthogonal)
     return o;
 }
 
-static outcome call_directional(void) { return project(0); }
+static outcome call_directional(void) { return project(PROJECT_DIRECTIONAL); }
+static outcome call_conical(void) { return project(PROJECT_CONICAL); }
 
 /* onto a face: the whole domain with a square hole in its middle */
 static projcurve_face *face;
@@ -329,7 +339,7 @@ static outcome call_project_face(void)
     }
     return o;
 }
-static outcome call_orthogonal(void) { return project(1); }
+static outcome call_orthogonal(void) { return project(PROJECT_ORTHOGONAL); }
 
 /* Result access that allocates: every branch as one curve. */
 static outcome call_branch_curves(void)
@@ -525,6 +535,7 @@ int main(void)
         {"closest/foot/line", call_point_queries},
         {"project_directional", call_directional},
         {"project_orthogonal", call_orthogonal},
+        {"project_conical", call_conical},
         {"result_branch_curve", call_branch_curves},
         {"iges_writer", call_iges_write},
         {"step_writer", call_step_write},

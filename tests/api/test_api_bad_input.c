@@ -272,6 +272,29 @@ static void test_projections(void)
                 PROJCURVE_ERR_NOT_FINITE, "direction");
     CHECK_FAILS(projcurve_project_directional(ctx, plane, line, zero, NULL, &r),
                 PROJCURVE_ERR_ZERO_DIRECTION, "zero");
+    /* conical: the eye NULL, not finite, on the curve (the middle of
+     * line_net); on the surface it is allowed (the points near it are
+     * behind the curve) */
+    const double nan_eye[3] = {0.5, 0.5, NAN}, inf_eye[3] = {INFINITY, 0, 2};
+    const double eye_on_line[3] = {0.45, 0.45, 1}, eye_on_plane[3] = {0.5, 0.5, 0};
+    CHECK_FAILS(projcurve_project_conical(ctx, plane, line, NULL, NULL, &r),
+                PROJCURVE_ERR_NULL_ARGUMENT, "eye");
+    CHECK_FAILS(projcurve_project_conical(ctx, NULL, line, down, NULL, &r),
+                PROJCURVE_ERR_NULL_ARGUMENT, "surface");
+    CHECK_FAILS(projcurve_project_conical(ctx, plane, line, down, NULL, NULL),
+                PROJCURVE_ERR_NULL_ARGUMENT, "out");
+    CHECK_FAILS(projcurve_project_conical(ctx, plane, line, nan_eye, NULL, &r),
+                PROJCURVE_ERR_NOT_FINITE, "eye point");
+    CHECK_FAILS(projcurve_project_conical(ctx, plane, line, inf_eye, NULL, &r),
+                PROJCURVE_ERR_NOT_FINITE, "eye point");
+    CHECK_FAILS(projcurve_project_conical(ctx, plane, line, eye_on_line, NULL, &r),
+                PROJCURVE_ERR_SINGULAR, "passes through the eye");
+    CHECK(r == SENTINEL);
+    projcurve_result *from_plane = NULL;
+    CHECK_OK(projcurve_project_conical(ctx, plane, line, eye_on_plane, NULL, &from_plane));
+    /* every ray from a point of S through the line leaves S behind it */
+    CHECK(from_plane != NULL && projcurve_result_branch_count(from_plane) == 0);
+    projcurve_result_destroy(from_plane);
     CHECK_FAILS(projcurve_project_orthogonal_implicit(ctx, NULL, NULL, 1.0, line, NULL, &r),
                 PROJCURVE_ERR_NULL_ARGUMENT, "implicit");
     CHECK_FAILS(projcurve_project_orthogonal_implicit(ctx, plane_fn, NULL, NAN, line, NULL, &r),

@@ -426,10 +426,14 @@ def check_branch_geometry(name, case, b, written, curve):
     check(abs(lo - b["t_range"][0]) <= 1e-12 and abs(hi - b["t_range"][1]) <= 1e-12,
           f"{name}: JSON t_range {b['t_range']} vs the pcurve's {lo}..{hi}")
     ortho = case["mode"] == "orthogonal"
-    direction = [float(case[k]) for k in ("dir_x", "dir_y", "dir_z")]
     if ortho:
         hit = lambda x, u, v: foot_point(surface, x, u, v)
+    elif case["mode"] == "conical":
+        # the point of S on the line from the eye through P(t)
+        eye = [float(case[k]) for k in ("eye_x", "eye_y", "eye_z")]
+        hit = lambda x, u, v: ray_hit(surface, eye, sub(x, eye), u, v)
     else:
+        direction = [float(case[k]) for k in ("dir_x", "dir_y", "dir_z")]
         hit = lambda x, u, v: ray_hit(surface, x, direction, u, v)
     if q is None:
         check(b["pieces"] == 0, f"{name}: pieces without a 3D curve")
@@ -607,6 +611,7 @@ class Tester:
         self.run = run
         self.check = check
         self.check_branch_geometry = check_branch_geometry
+        self.check_svg = check_svg
 
 
 def part_flags(exe, shared, work):
@@ -617,6 +622,8 @@ def part_flags(exe, shared, work):
     check_flags.pick_pairs(t, shared, work)
     check_flags.given_curves(t, shared, work)
     check_flags.printing(t, shared, work)
+    check_flags.eye_point(t, shared, work)
+    check_flags.hits(t, shared, work)
     many_branches_svg(exe, shared, work)
     return None
 

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """The flags of projcurve project that choose what is projected and what is
 printed (--surface, --curve, --line, --points, --interpolate, --quiet,
---progress, --timeout), with their errors, and the sizes projcurve info
+--progress, --timeout), the conical projection (--eye), with their errors, and the sizes projcurve info
 prints; every figure is checked against the files themselves (read by
 iges_geometry, an independent reader and evaluator), not the library's
 own numbers. Used by check_cli.py (parts flags and info)."""
@@ -356,3 +356,159 @@ def info_sizes(t, shared):
                     f"info --json {name}: surface poles/degree {s['poles']} {s['degree']}")
         t.check(doc.get("box") is not None and len(doc["box"]) == 6,
                 f"info --json {name}: model box {doc.get('box')}")
+
+
+def on_ray(t, what, eye, p, q, tol):
+    """q lies within tol of the line from eye through p, and beyond p."""
+    ray, d = [a - b for a, b in zip(p, eye)], [a - b for a, b in zip(q, eye)]
+    cr = [ray[1] * d[2] - ray[2] * d[1], ray[2] * d[0] - ray[0] * d[2],
+          ray[0] * d[1] - ray[1] * d[0]]
+    norm = lambda v: sum(x * x for x in v) ** 0.5
+    off = norm(cr) / norm(ray)
+    beyond = sum((a - b) * r for a, b, r in zip(q, p, ray)) / norm(ray)
+    t.check(off <= tol and beyond >= -tol,
+            f"{what}: a point {off:.3g} off its ray from the eye (tol {tol}), "
+            f"{beyond:.3g} beyond P(t)")
+
+
+def eye_point(t, shared, work):
+    """--eye X,Y,Z: the conical projection. Every branch written to IGES
+    is judged from the file (S at its pcurve and its 3D curve within eps_D
+    of the exact point on the ray from the eye, found by Newton, and at the
+    quarters of its knot spans on that ray and beyond P(t)); the JSON's
+    residuals are the corrector's; STEP, SVG and the usage errors."""
+    surface = case_path(shared, BUMPY)
+    eye = [50.0, 45.0, 200.0]
+    base = [t.exe, "project", surface, "--eye", "50,45,200", "--line", "10,10,20,90,80,20",
+            "--tol", "1e-3"]
+    case = {"tol_dist": "1e-3", "mode": "conical", "eye_x": "50", "eye_y": "45",
+            "eye_z": "200"}
+    igs, js = os.path.join(work, "eye.igs"), os.path.join(work, "eye.json")
+    svg, step = os.path.join(work, "eye.svg"), os.path.join(work, "eye.step")
+    proc = t.run(base + ["-o", igs, "--json", js, "--svg", svg], 0, "--eye")
+    if proc.returncode:
+        return
+    data = load_json(js, t.check, "--eye")
+    curves = iges_geometry.input_curves(igs)
+    written = iges_geometry.branches(igs)
+    # the line stays above the square and inside the cone of the eye over
+    # it: one branch over the whole line
+    t.check(data is not None and len(data["branches"]) == 1 == len(written),
+            f"--eye: {data and len(data['branches'])} branches, {len(written)} written")
+    whole_branches(t, data, "--eye")
+    for b, (s, pcurve, q) in zip(data["branches"], written):
+        t.check_branch_geometry("--eye", case, b, (s, pcurve, q), curves[0])
+        # traced points are corrector solutions: 1e-3 of eps_D is ample
+        t.check(b["residual"] <= 1e-6, f"--eye: residual {b['residual']}")
+        k = pcurve.knots
+        lo, hi = k[pcurve.degree], k[-pcurve.degree - 1]
+        for i in range(9):
+            tt = lo + (hi - lo) * i / 8
+            u, v, _ = pcurve.eval(tt)
+            p = curves[0].eval(tt)
+            on_ray(t, "--eye S(pcurve)", eye, p, s.eval(u, v), 1e-3)
+            if q is not None:
+                on_ray(t, "--eye 3D curve", eye, p, q.eval(tt), 1e-3)
+    t.check_svg(svg, 1, 1, 1, "--eye")
+    if t.run(base + ["-o", step], 0, "--eye -o .step").returncode == 0:
+        proc = t.run([t.exe, "info", "--json", step], 0, "info of the --eye STEP output")
+        if proc.returncode == 0:
+            back = json.loads(proc.stdout)
+            t.check(back["surfaces"] == 1 and back["curves"] == 2,
+                    f"--eye -o .step: read back {back['surfaces']} surface(s), "
+                    f"{back['curves']} curve(s)")
+    # the usage errors and a curve through the eye
+    for extra, message in ((["--dir", "0,0,-1"], "exactly one of"),
+                           (["--orthogonal"], "exactly one of"),
+                           (["--eye", "1,2,3"], "--eye is given twice")):
+        proc = t.run(base + extra, 2, f"--eye with {extra}")
+        t.check(message in proc.stderr, f"--eye with {extra}: {proc.stderr!r}")
+    for value in ("1,2", "1,2,x", "1,2,3,4", "nan,0,0"):
+        proc = t.run([t.exe, "project", surface, "--eye", value], 2, f"--eye {value}")
+        t.check("--eye wants X,Y,Z" in proc.stderr, f"--eye {value}: {proc.stderr!r}")
+    proc = t.run([t.exe, "project", surface, "--eye", "50,45,20", "--line",
+                  "10,10,20,90,80,20"], 1, "--eye on the curve")
+    t.check("passes through the eye" in proc.stderr and "curve 0 onto surface 0" in proc.stderr,
+            f"--eye on the curve: {proc.stderr!r}")
+
+
+FOLD = "fold_c_sheet_jump"  # a C-folded sheet: rays along -z hit it 0, 1, then 2 times
+
+
+def hit_distances(curve, written, t):
+    """(distance along -z from P(t), branch index) of every written branch
+    whose t range holds t (S at its pcurve: the pcurve's parameter is t)."""
+    out = []
+    for k, (surface, pcurve, _) in enumerate(written):
+        lo, hi = pcurve.knots[pcurve.degree], pcurve.knots[-pcurve.degree - 1]
+        if lo <= t <= hi:
+            u, v, _ = pcurve.eval(t)
+            out.append((curve.eval(t)[2] - surface.eval(u, v)[2], k))
+    return out
+
+
+def near_an_end(written, t, margin):
+    return any(abs(t - pc.knots[pc.degree]) <= margin or abs(t - pc.knots[-pc.degree - 1]) <= margin
+               for _, pc, _ in written)
+
+
+def hits(t, shared, work):
+    """--nearest and --max-distance D on the folded sheet, judged against
+    the run that keeps every hit (the complete set of ray hits, itself
+    judged by cli_cases): at 201 parameters, away from branch ends, the
+    nearest run holds exactly one point where the full run holds any, at
+    the smallest distance of the full run's (to eps_D); the max-distance
+    run holds exactly the full run's points within D, and every branch it
+    cuts ends or starts at distance D."""
+    case = case_path(shared, FOLD)
+    base = [t.exe, "project", case, "--dir", "0,0,-1", "--tol", "1e-3"]
+    tol, margin = 1e-3, 1e-6
+    runs = {}
+    for name, extra in (("all", []), ("nearest", ["--nearest"]),
+                        ("max", ["--max-distance", "25"])):
+        igs, js = os.path.join(work, f"hits_{name}.igs"), os.path.join(work, f"hits_{name}.json")
+        if t.run(base + extra + ["-o", igs, "--json", js], 0, f"hits {name}").returncode:
+            return
+        runs[name] = (iges_geometry.branches(igs), load_json(js, t.check, f"hits {name}"))
+    curve = iges_geometry.input_curves(case)[0]
+    full, nearest, capped = runs["all"][0], runs["nearest"][0], runs["max"][0]
+    ends = [b["end"] for b in runs["nearest"][1]["branches"]]
+    t.check(len(full) == 2 and len(nearest) == 2 and "occluded" in ends,
+            f"--nearest: {len(full)} branches of all hits, {len(nearest)} nearest, ends {ends}")
+    worst = 0.0
+    for i in range(201):
+        s = i / 200
+        if near_an_end(full + nearest + capped, s, margin):
+            continue
+        every = hit_distances(curve, full, s)
+        kept = hit_distances(curve, nearest, s)
+        t.check(len(kept) == (1 if every else 0),
+                f"--nearest at t = {s}: {len(kept)} points kept of {len(every)} hits")
+        if every and len(kept) == 1:
+            worst = max(worst, abs(kept[0][0] - min(d for d, _ in every)))
+        within = sorted(d for d, _ in every if d <= 25 - tol)
+        got = sorted(d for d, _ in hit_distances(curve, capped, s))
+        t.check(len(got) == len(within) and all(abs(a - b) <= tol for a, b in zip(got, within))
+                and all(d <= 25 + tol for d in got),
+                f"--max-distance 25 at t = {s}: {got} kept, hits within 25: {within}")
+    t.check(worst <= tol, f"--nearest: kept points {worst:.3g} farther than the nearest hit")
+    for b, (surface, pcurve, _) in zip(runs["max"][1]["branches"], capped):
+        for kind, tt in ((b["start"], b["t_range"][0]), (b["end"], b["t_range"][1])):
+            if kind == "max_distance":
+                u, v, _ = pcurve.eval(tt)
+                d = curve.eval(tt)[2] - surface.eval(u, v)[2]
+                t.check(abs(d - 25) <= tol, f"--max-distance 25: a cut at distance {d}")
+    t.check(any("max_distance" in (b["start"], b["end"]) for b in runs["max"][1]["branches"]),
+            "--max-distance 25: no branch cut at the distance")
+    for value in ("0", "-1", "x", "1e400"):
+        proc = t.run(base + ["--max-distance", value], 2, f"--max-distance {value}")
+        t.check("--max-distance wants a positive distance" in proc.stderr,
+                f"--max-distance {value}: {proc.stderr!r}")
+    t.run(base + ["--nearest", "--nearest"], 2, "--nearest twice")
+    # the eye sees the same fold: nearest keeps one point per ray there too
+    js = os.path.join(work, "hits_eye.json")
+    if t.run([t.exe, "project", case, "--eye", "30,0,100", "--nearest", "--json", js], 0,
+             "--eye --nearest").returncode == 0:
+        data = load_json(js, t.check, "--eye --nearest")
+        t.check(data and "occluded" in [b["end"] for b in data["branches"]],
+                "--eye --nearest: no branch ends occluded")

@@ -7,6 +7,7 @@
  * package returns for the same call, bit for bit.
  *
  * Usage: c_reference FILE dir DX DY DZ TOL
+ *        c_reference FILE eye EX EY EZ TOL (conical)
  *        c_reference FILE ortho TOL
  * Output lines: "branch I T0 T1 START END N_POINTS N_PIECES", "tuv I ...",
  * "piece I K DEGREE ctrl... weights... t0 t1 uv...", "compact_curve I
@@ -119,8 +120,10 @@ static int print_branch(projcurve_context *ctx, const projcurve_result *r, size_
 int main(int argc, char **argv)
 {
     int directional = argc == 7 && strcmp(argv[2], "dir") == 0;
-    if (!directional && !(argc == 4 && strcmp(argv[2], "ortho") == 0)) {
-        fprintf(stderr, "usage: c_reference FILE dir DX DY DZ TOL | FILE ortho TOL\n");
+    int conical = argc == 7 && strcmp(argv[2], "eye") == 0;
+    if (!directional && !conical && !(argc == 4 && strcmp(argv[2], "ortho") == 0)) {
+        fprintf(stderr, "usage: c_reference FILE dir DX DY DZ TOL | FILE eye EX EY EZ TOL"
+                        " | FILE ortho TOL\n");
         return 2;
     }
     projcurve_context *ctx = NULL;
@@ -137,17 +140,18 @@ int main(int argc, char **argv)
     }
     if ((st = projcurve_options_create(ctx, &o)) != PROJCURVE_OK ||
         (st = projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE,
-                                           strtod(argv[directional ? 6 : 3], NULL))) !=
+                                           strtod(argv[directional || conical ? 6 : 3], NULL))) !=
             PROJCURVE_OK) {
         rc = fail(ctx, "options", st);
         goto done;
     }
     const projcurve_surface *s = projcurve_model_surface(m, 0);
     const projcurve_curve *c = projcurve_model_curve(m, 0);
-    if (directional) {
-        const double dir[3] = {strtod(argv[3], NULL), strtod(argv[4], NULL),
-                               strtod(argv[5], NULL)};
-        st = projcurve_project_directional(ctx, s, c, dir, o, &r);
+    if (directional || conical) {
+        const double v[3] = {strtod(argv[3], NULL), strtod(argv[4], NULL),
+                             strtod(argv[5], NULL)};
+        st = directional ? projcurve_project_directional(ctx, s, c, v, o, &r)
+                         : projcurve_project_conical(ctx, s, c, v, o, &r);
     } else {
         st = projcurve_project_orthogonal(ctx, s, c, o, &r);
     }

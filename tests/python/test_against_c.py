@@ -17,6 +17,8 @@ CASES = [
     ("cases/bumpy_bicubic_8x8_down.igs", ("dir", "0", "0", "-1"), "0.001"),
     ("cases/nurbs_half_cylinder_down.igs", ("dir", "0", "0", "-1"), "0.001"),
     ("cases/ortho_bumpy_bicubic_hover.igs", ("ortho",), "0.001"),
+    # conical: an eye above the middle of the bumpy surface, the curve between
+    ("cases/bumpy_bicubic_8x8_down.igs", ("eye", "50", "40", "120"), "0.001"),
 ]
 
 
@@ -78,6 +80,9 @@ def project(pc, surface, curve, mode, tol):
     if mode[0] == "dir":
         return pc.project_directional(surface, curve, [float(x) for x in mode[1:]],
                                       tol_distance=float(tol))
+    if mode[0] == "eye":
+        return pc.project_conical(surface, curve, [float(x) for x in mode[1:]],
+                                  tol_distance=float(tol))
     return pc.project_orthogonal(surface, curve, tol_distance=float(tol))
 
 

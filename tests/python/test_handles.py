@@ -13,7 +13,7 @@ from conftest import data
 
 DESTROYS = ["projcurve_surface_destroy", "projcurve_curve_destroy", "projcurve_result_destroy",
             "projcurve_model_destroy", "projcurve_options_destroy", "projcurve_face_destroy",
-            "projcurve_iges_writer_destroy"]
+            "projcurve_iges_writer_destroy", "projcurve_step_writer_destroy"]
 
 
 @pytest.fixture
@@ -37,6 +37,7 @@ def make_all(pc, tmp_path):
     c = pc.Curve.from_nurbs(1, [[0.1, 0.2, 2], [0.9, 0.7, 2]], [0, 0, 1, 1])
     o = pc.Options(tol_distance=1e-6)
     r = pc.project_directional(s, c, (0, 0, -1), o)
+    cone = pc.project_conical(s, c, (0.5, 0.45, 20), o)
     b = r.branches[0]
     curves = [b.curve(), b.compact_curve(), b.compact_pcurve()]
     f = pc.Face.create(s)
@@ -45,10 +46,13 @@ def make_all(pc, tmp_path):
     w = pc.IgesWriter()
     w.add_result(s, r)
     w.write(tmp_path / "x.igs")
+    sw = pc.StepWriter()
+    sw.add_result(s, cone)
+    sw.write(tmp_path / "x.step")
     made = {"projcurve_surface_destroy": [s], "projcurve_curve_destroy": [c] + curves,
-            "projcurve_result_destroy": [r], "projcurve_options_destroy": [o],
+            "projcurve_result_destroy": [r, cone], "projcurve_options_destroy": [o],
             "projcurve_face_destroy": [f], "projcurve_model_destroy": [m],
-            "projcurve_iges_writer_destroy": [w]}
+            "projcurve_iges_writer_destroy": [w], "projcurve_step_writer_destroy": [sw]}
     ptrs = {k: [h._ptr for h in v] for k, v in made.items()}
     return made, ptrs, borrowed
 
