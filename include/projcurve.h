@@ -973,7 +973,10 @@ PROJCURVE_API projcurve_status projcurve_result_branch_compact_curve(
  * in the coordinate the collapsed edge runs along, e.g. du = +-1/2 of
  * the period through the pole of a sphere along a meridian). Where it
  * jumps:
- * - the traced points hold both sides: two vertices with the same t_k;
+ * - the traced points hold both sides: two vertices at t_k (the last of
+ *   the side before and the first of the side after, each where its own
+ *   trace reached the seam: their t agree to the tracer's resolution,
+ *   ~1e-10 of the curve's domain, not bit for bit; t_k is the second);
  * - each composed piece lies on one side (no piece spans a jump), in
  *   increasing t;
  * - the compact pcurve is one B-spline in unwrapped (u, v): continuous
