@@ -31,18 +31,29 @@ static projcurve_status select_faces(projcurve_context *ctx, const projcurve_sha
     *sel = malloc((n + 1) * sizeof **sel);
     if (*sel == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory selecting faces");
+    /* the box test of the kind; none (every face) for orthogonal and for
+     * a callback curve, which has no box */
     pc_swept_box sw;
-    const int bounded =
-        spec->kind == PROJCURVE_PROJECT_DIRECTIONAL && pc_curve_box(curve, sw.curve_box);
-    sw.dir = spec->vec;
+    pc_cone_box cone;
+    pc_box_test test = NULL;
+    const void *user = NULL;
+    if (spec->kind == PROJCURVE_PROJECT_DIRECTIONAL && pc_curve_box(curve, sw.curve_box)) {
+        sw.dir = spec->vec;
+        test = pc_swept_box_test;
+        user = &sw;
+    } else if (spec->kind == PROJCURVE_PROJECT_CONICAL && pc_curve_box(curve, cone.curve_box)) {
+        cone.eye = spec->vec;
+        test = pc_cone_box_test;
+        user = &cone;
+    }
     *n_sel = 0;
-    if (bounded && shape != NULL) {
-        *n_sel = pc_face_bvh_query(&shape->bvh, pc_swept_box_test, &sw, *sel);
+    if (test != NULL && shape != NULL) {
+        *n_sel = pc_face_bvh_query(&shape->bvh, test, user, *sel);
         return PROJCURVE_OK;
     }
     for (size_t i = 0; i < n; ++i) {
         const double *box = shape ? shape->boxes + 6 * i : face->box;
-        if (!bounded || pc_swept_box_test(&sw, box))
+        if (test == NULL || test(user, box))
             (*sel)[(*n_sel)++] = i;
     }
     return PROJCURVE_OK;

@@ -10,6 +10,10 @@
  *     size), no gap;
  *   - the same orthogonally (a smooth sheet: the foot points run across
  *     the edges): one connected curve of four pieces;
+ *   - the same seen from an eye above the sheet (conical; the image of
+ *     the U, scaled about 1.3 times about the eye's foot, stays on the
+ *     sheet): one connected curve of four pieces, all four faces selected
+ *     by the cone test;
  *   - one face's inner edge moved by 1e-6 (a gap between faces, beyond the
  *     chaining tolerance of 1e-9 of the size): two connected curves, the
  *     two ends at the gap counted as open;
@@ -216,6 +220,14 @@ int main(void)
     check_four(sh.shape, sr);
     projcurve_shape_result_destroy(sr);
     check_closed(sh.shape, dir);
+
+    const double eye[3] = {10, 10, 40};
+    sr = NULL;
+    CHECK_OK(projcurve_project_shape(NULL, sh.shape, c, PROJCURVE_PROJECT_CONICAL, eye, NULL,
+                                     &sr));
+    CHECK(projcurve_shape_result_face_count(sr) == 4);
+    check_four(sh.shape, sr);
+    projcurve_shape_result_destroy(sr);
 
     projcurve_curve *near = u_curve(3.0);
     sr = NULL;
