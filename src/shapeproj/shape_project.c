@@ -15,6 +15,7 @@
 #include "faceproj/loop_crossing.h"
 #include "shapeproj/chain.h"
 #include "shapeproj/face_select.h"
+#include "shapeproj/shape_hits.h"
 
 static const projcurve_face *face_of(const projcurve_shape *shape, const projcurve_face *face,
                                      size_t i)
@@ -127,26 +128,35 @@ projcurve_status pc_shape_project(projcurve_context *ctx, const projcurve_shape 
         r->parts[i].face = sel[i];
         r->parts[i].f = face_of(shape, face, sel[i]);
     }
+    /* nearest hits are chosen across the clipped faces (shape_hits.h): each
+     * face keeps every hit of its surface, MAX_DISTANCE stays per face */
+    const int nearest = p->hits == PROJCURVE_HITS_NEAREST;
+    pc_params face_params = *p;
+    if (nearest)
+        face_params.hits = PROJCURVE_HITS_ALL;
+    const pc_params *fp = &face_params;
     projcurve_status kept = PROJCURVE_OK; /* OK, or the partial status */
     for (size_t i = 0; st == PROJCURVE_OK && i < n_sel; ++i) {
         pc_face_part *part = &r->parts[i];
         if (shape == NULL) {
             /* a lone face: its status is the call's */
             size_t unrefined = 0;
-            part->status = pc_face_project(ctx, part->f, curve, spec, p, &part->result,
+            part->status = pc_face_project(ctx, part->f, curve, spec, fp, &part->result,
                                            &part->trims, &unrefined);
             if (!pc_status_keeps_result(part->status))
                 st = part->status;
             else
                 st = set_ok_message(ctx, part, unrefined);
         } else {
-            st = project_part(ctx, part, curve, spec, p);
+            st = project_part(ctx, part, curve, spec, fp);
         }
         if (st == PROJCURVE_OK && part->status != PROJCURVE_OK &&
             pc_status_keeps_result(part->status))
             kept = part->status;
     }
     free(sel);
+    if (st == PROJCURVE_OK && nearest)
+        st = pc_shape_hits_select(ctx, r, curve, spec, p, model_size);
     if (st == PROJCURVE_OK) {
         r->chain_tol = chain_tolerance(shape, r, model_size);
         st = pc_chain_pieces(ctx, r, shape, curve, spec);
