@@ -1288,6 +1288,12 @@ PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
  * connected curve is closed (projcurve_shape_result_curve_info). Connected
  * curves come in increasing order of their first curve parameter, then of
  * the distance of their first point along Dir (orthogonal: from the curve).
+ * With PROJCURVE_OPT_HITS nearest the nearest hit is chosen across all the
+ * projected faces after clipping (a part of a face's surface outside its
+ * loops hides nothing; a piece hidden by another face's piece ends with
+ * PROJCURVE_END_OCCLUDED / starts with PROJCURVE_START_VISIBLE there, and
+ * is not chained at that end); projcurve_project_face does the same among
+ * its branches. PROJCURVE_OPT_MAX_DISTANCE applies to each face.
  * A face whose projection fails is kept with its status and message
  * (projcurve_shape_result_face) and the others are still projected and
  * chained; a piece that ends on an edge with no continuation (the other
