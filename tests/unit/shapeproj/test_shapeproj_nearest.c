@@ -11,7 +11,8 @@
  *     there; from the eye (-5, 0, 0.2) the same with the cuts where the
  *     ray through P(t) meets the front's edge (mu = 3/2: y(t) = -+1/3);
  *     with the front as wide as the back, nearest keeps the front only (one
- *     connected curve); MAX_DISTANCE 3 keeps the front alone too;
+ *     connected curve); MAX_DISTANCE 3 keeps the front alone too; an eye
+ *     on the curve is SINGULAR for the whole shape;
  *   - one face on a U-shaped surface trimmed to its back wall: the
  *     untrimmed front wall is no hit and does not occlude (nearest keeps
  *     the back wall's piece whole);
@@ -240,6 +241,18 @@ static void check_walls(int conical)
     free_pieces(v, n);
     projcurve_shape_result_destroy(sr);
 
+    if (conical) {
+        /* an eye on the curve (P(1/2)): refused once for the shape */
+        const double on[3] = {-1, 0, 0.2};
+        projcurve_context *ctx = NULL;
+        CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+        sr = NULL;
+        CHECK_STATUS(projcurve_project_shape(ctx, shape, c, kind, on, near, &sr),
+                     PROJCURVE_ERR_SINGULAR);
+        CHECK(sr == NULL);
+        CHECK(projcurve_context_message(ctx)[0] != '\0');
+        projcurve_context_destroy(ctx);
+    }
     projcurve_options_destroy(close);
     projcurve_options_destroy(all);
     projcurve_options_destroy(near);
