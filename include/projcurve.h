@@ -1234,7 +1234,7 @@ PROJCURVE_API projcurve_status projcurve_shape_edge_use(projcurve_context *ctx,
 /* The kind of a projection onto faces and shapes, and the vector it takes. */
 typedef enum projcurve_projection_kind {
     PROJCURVE_PROJECT_DIRECTIONAL = 0, /* vec: the direction Dir (as projcurve_project_directional) */
-    PROJCURVE_PROJECT_CONICAL = 1,     /* vec: the eye point; not available yet: UNSUPPORTED */
+    PROJCURVE_PROJECT_CONICAL = 1,     /* vec: the eye point (as projcurve_project_conical) */
     PROJCURVE_PROJECT_ORTHOGONAL = 2   /* vec: unused (may be NULL) */
 } projcurve_projection_kind;
 
@@ -1246,8 +1246,8 @@ typedef enum projcurve_projection_kind {
 typedef struct projcurve_shape_result projcurve_shape_result;
 
 /* Projects curve onto face: the projection onto the face's untrimmed
- * surface (projcurve_project_directional / _orthogonal with opts, NULL for
- * defaults), clipped to the face's loops. Where a branch crosses a loop the
+ * surface (projcurve_project_directional / _conical / _orthogonal with
+ * opts, NULL for defaults), clipped to the face's loops. Where a branch crosses a loop the
  * crossing is located on the exact projection (Newton on q(t) = c(tau), the
  * loop's 2D curve, to 1e-10 of the model size in 3D) and the branch is cut
  * there: it ends with PROJCURVE_END_TRIM or starts with PROJCURVE_START_TRIM
@@ -1257,10 +1257,11 @@ typedef struct projcurve_shape_result projcurve_shape_result;
  * restricted to the kept t range by knot insertion; the parts outside are
  * dropped. The result has one face (index 0) and its connected curves are
  * its branches, chained as projcurve_project_shape chains (across a seam
- * edge of the face, and the end of a closed curve into its start). kind
- * CONICAL gives UNSUPPORTED.
- * Statuses: OK, NULL_ARGUMENT (face, curve, out; vec for DIRECTIONAL),
- * INVALID_ARGUMENT (kind), UNSUPPORTED (CONICAL), and those of the
+ * edge of the face, and the end of a closed curve into its start).
+ * Statuses: OK, NULL_ARGUMENT (face, curve, out; vec for DIRECTIONAL and
+ * CONICAL), NOT_FINITE (vec), ZERO_DIRECTION, INVALID_ARGUMENT (kind),
+ * SINGULAR (CONICAL: the curve passes through the eye to the model's
+ * precision, as projcurve_project_conical), and those of the
  * projection onto the surface (LIMIT_REACHED and CANCELLED with the
  * partial result set in *out). The progress callback of opts is not
  * called by this function and projcurve_project_shape; TIME_LIMIT and
@@ -1275,7 +1276,8 @@ PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
 
 /* Projects curve onto every face of shape that it can reach (directional:
  * the faces whose 3D boxes meet the curve's box swept along +Dir;
- * orthogonal: every face), each as projcurve_project_face, with one eps_D
+ * conical: those whose boxes meet the cone from the eye over the curve's
+ * box, beyond the curve; orthogonal: every face), each as projcurve_project_face, with one eps_D
  * for all (unset: 1e-4 of the diagonal of the shape's box), then chains
  * the face pieces into connected curves: a piece ending with
  * PROJCURVE_END_TRIM on an edge continues with the piece starting with
@@ -1289,6 +1291,12 @@ PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
  * connected curve is closed (projcurve_shape_result_curve_info). Connected
  * curves come in increasing order of their first curve parameter, then of
  * the distance of their first point along Dir (orthogonal: from the curve).
+ * With PROJCURVE_OPT_HITS nearest the nearest hit is chosen across all the
+ * projected faces after clipping (a part of a face's surface outside its
+ * loops hides nothing; a piece hidden by another face's piece ends with
+ * PROJCURVE_END_OCCLUDED / starts with PROJCURVE_START_VISIBLE there, and
+ * is not chained at that end); projcurve_project_face does the same among
+ * its branches. PROJCURVE_OPT_MAX_DISTANCE applies to each face.
  * A face whose projection fails is kept with its status and message
  * (projcurve_shape_result_face) and the others are still projected and
  * chained; a piece that ends on an edge with no continuation (the other

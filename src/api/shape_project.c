@@ -9,10 +9,11 @@
 #include "api/project.h"
 #include "brep/shape.h"
 #include "common/error.h"
+#include "conical/conical_project.h"
 #include "shapeproj/shape_project.h"
 
-/* The spec of a call: kind checked, Dir made unit (statuses NULL_ARGUMENT,
- * NOT_FINITE, ZERO_DIRECTION, INVALID_ARGUMENT, UNSUPPORTED). */
+/* The spec of a call: kind checked, Dir made unit, the eye finite
+ * (statuses NULL_ARGUMENT, NOT_FINITE, ZERO_DIRECTION, INVALID_ARGUMENT). */
 static projcurve_status make_spec(projcurve_context *ctx, projcurve_projection_kind kind,
                                   const double vec[3], pc_projection_spec *spec)
 {
@@ -22,8 +23,12 @@ static projcurve_status make_spec(projcurve_context *ctx, projcurve_projection_k
     case PROJCURVE_PROJECT_ORTHOGONAL:
         return PROJCURVE_OK;
     case PROJCURVE_PROJECT_CONICAL:
-        return pc_fail(ctx, PROJCURVE_ERR_UNSUPPORTED,
-                       "conical projection onto faces and shapes is not available yet");
+        PC_REQUIRE(ctx, vec, "eye");
+        spec->vec = vec3_load(vec);
+        if (!vec3_is_finite(spec->vec))
+            return pc_fail(ctx, PROJCURVE_ERR_NOT_FINITE, "eye point (%g, %g, %g) is not finite",
+                           spec->vec.x, spec->vec.y, spec->vec.z);
+        return PROJCURVE_OK;
     case PROJCURVE_PROJECT_DIRECTIONAL:
         break;
     default:
@@ -70,6 +75,10 @@ static projcurve_status project(projcurve_context *ctx, const projcurve_shape *s
      * stages would report 1 after the first face) */
     budget.progress = NULL;
     st = pc_curve_refuse_point(ctx, curve, pc_params_precision(&p) * size);
+    /* once for the call, as projcurve_project_conical would for each face */
+    if (st == PROJCURVE_OK && kind == PROJCURVE_PROJECT_CONICAL)
+        st = pc_conical_refuse_eye_on_curve(ctx, curve, spec.vec,
+                                            pc_params_precision(&p) * size);
     if (st != PROJCURVE_OK)
         return st;
     return pc_shape_project(ctx, shape, face, curve, &spec, &p, size, out);

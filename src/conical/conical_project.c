@@ -20,10 +20,9 @@
 #include "trace/trace.h"
 #include "verify/verify.h"
 
-/* SINGULAR when the curve passes through the eye to tol: the ray of that
- * point has no direction. */
-static projcurve_status refuse_eye_on_curve(projcurve_context *ctx, const projcurve_curve *curve,
-                                            pc_vec3 eye, double tol)
+projcurve_status pc_conical_refuse_eye_on_curve(projcurve_context *ctx,
+                                                const projcurve_curve *curve, pc_vec3 eye,
+                                                double tol)
 {
     double t = 0.0, dist = 0.0;
     pc_vec3 q;
@@ -46,7 +45,7 @@ projcurve_status pc_conical_project(projcurve_context *ctx, const projcurve_surf
     const double precision = pc_params_precision(p) * surface->size;
     projcurve_status st = pc_curve_refuse_point(ctx, curve, precision);
     if (st == PROJCURVE_OK)
-        st = refuse_eye_on_curve(ctx, curve, eye, precision);
+        st = pc_conical_refuse_eye_on_curve(ctx, curve, eye, precision);
     if (st != PROJCURVE_OK)
         return st;
     pc_budget *const budget = p->budget;

@@ -25,4 +25,11 @@ projcurve_status pc_conical_project(projcurve_context *ctx, const projcurve_surf
                                     const projcurve_curve *curve, pc_vec3 eye,
                                     const pc_params *p, projcurve_result **out);
 
+/* SINGULAR (with a message) when curve passes within tol of eye (its
+ * closest point to the eye, pc_curve_closest): the ray of that point has
+ * no direction. Statuses: OK, SINGULAR, those of pc_curve_closest. */
+projcurve_status pc_conical_refuse_eye_on_curve(projcurve_context *ctx,
+                                                const projcurve_curve *curve, pc_vec3 eye,
+                                                double tol);
+
 #endif /* PC_CONICAL_CONICAL_PROJECT_H */

@@ -99,6 +99,25 @@ double pc_piece_cut_parameter(const pc_piece *piece, const pc_loop_samples *s, s
     return guess;
 }
 
+double pc_piece_point_parameter(const pc_piece *piece, double t_cut, const double target[2])
+{
+    const double span = piece->t1 - piece->t0;
+    double x = span != 0.0 ? fmin(1.0, fmax(0.0, (t_cut - piece->t0) / span)) : 0.5;
+    for (int it = 0; it < PC_CUT_MAX_ITER; ++it) {
+        double uv[2], duv[2];
+        pcurve_eval(piece, x, uv, duv);
+        const double n2 = duv[0] * duv[0] + duv[1] * duv[1];
+        if (!(n2 > 0.0))
+            break;
+        const double dx = ((target[0] - uv[0]) * duv[0] + (target[1] - uv[1]) * duv[1]) / n2;
+        const double nx = fmin(1.0, fmax(0.0, x + dx));
+        if (fabs(nx - x) <= 1e-15)
+            return nx;
+        x = nx;
+    }
+    return x;
+}
+
 projcurve_status pc_piece_append_part(projcurve_context *ctx, pc_branch *b, const pc_piece *piece,
                                       double s0, double s1, double t0, double t1)
 {

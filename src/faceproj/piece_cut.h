@@ -21,6 +21,13 @@
 double pc_piece_cut_parameter(const pc_piece *piece, const pc_loop_samples *s, size_t which,
                               double t_cut, double tau);
 
+/* The s in [0, 1] where the pcurve of piece passes nearest the point uv
+ * (a cut not on a loop, e.g. where another face becomes nearer): Gauss-
+ * Newton on (uv(s) - uv) . uv'(s) = 0 from the s of t_cut, at most
+ * PC_CUT_MAX_ITER steps (the last iterate at the bound; the pcurve is a
+ * Bezier curve of degree <= 3 near uv, so it converges in a few). */
+double pc_piece_point_parameter(const pc_piece *piece, double t_cut, const double uv[2]);
+
 /* Appends to b the part s in [s0, s1] of piece (0 <= s0 < s1 <= 1) over
  * the curve parameters [t0, t1]. Statuses: OK, NO_MEMORY. */
 projcurve_status pc_piece_append_part(projcurve_context *ctx, pc_branch *b, const pc_piece *piece,

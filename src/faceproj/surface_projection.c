@@ -5,6 +5,7 @@
 #include "faceproj/surface_projection.h"
 
 #include "common/error.h"
+#include "conical/conical_project.h"
 #include "directional/directional_project.h"
 #include "ortho/ortho_project.h"
 
@@ -23,6 +24,23 @@ static void directional_projector(pc_projector *proj, pc_projector_storage *st,
 {
     pc_directional_init(proj, &st->dir_data, &st->dir_cache, surface, curve, spec->vec,
                         p->newton_tol, (int)p->newton_max_iter);
+}
+
+/* spec->vec is the eye point */
+static projcurve_status conical_project(projcurve_context *ctx, const projcurve_surface *surface,
+                                        const projcurve_curve *curve,
+                                        const pc_projection_spec *spec, const pc_params *p,
+                                        projcurve_result **out)
+{
+    return pc_conical_project(ctx, surface, curve, spec->vec, p, out);
+}
+
+static void conical_projector(pc_projector *proj, pc_projector_storage *st,
+                              const projcurve_surface *surface, const projcurve_curve *curve,
+                              const pc_projection_spec *spec, const pc_params *p)
+{
+    pc_conical_init(proj, &st->cone_data, &st->cone_cache, surface, curve, spec->vec,
+                    p->newton_tol, (int)p->newton_max_iter);
 }
 
 static projcurve_status ortho_project(projcurve_context *ctx, const projcurve_surface *surface,
@@ -46,7 +64,7 @@ static void ortho_projector(pc_projector *proj, pc_projector_storage *st,
 /* Indexed by projcurve_projection_kind; {NULL, NULL}: not wired yet. */
 static const pc_surface_projection table[] = {
     [PROJCURVE_PROJECT_DIRECTIONAL] = {directional_project, directional_projector},
-    [PROJCURVE_PROJECT_CONICAL] = {NULL, NULL},
+    [PROJCURVE_PROJECT_CONICAL] = {conical_project, conical_projector},
     [PROJCURVE_PROJECT_ORTHOGONAL] = {ortho_project, ortho_projector},
 };
 
@@ -59,7 +77,7 @@ projcurve_status pc_surface_projection_get(projcurve_context *ctx, projcurve_pro
                        (int)kind);
     if (table[k].project == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_UNSUPPORTED,
-                       "projection kind %d (conical) is not available onto faces and shapes yet",
+                       "projection kind %d is not available onto faces and shapes",
                        (int)kind);
     *out = &table[k];
     return PROJCURVE_OK;

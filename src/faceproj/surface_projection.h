@@ -4,8 +4,8 @@
  * and composes it, and its equations as a pc_projector, which the face
  * clipping uses to locate loop crossings on the exact projection.
  *
- * One table entry per projcurve_projection_kind. A kind whose entry is not
- * filled (conical, until its driver exists) is refused with
+ * One table entry per projcurve_projection_kind (directional, conical,
+ * orthogonal). A kind whose entry is not filled is refused with
  * PROJCURVE_ERR_UNSUPPORTED by pc_surface_projection_get. Adding a kind is
  * an entry here: a project function of the shape of
  * pc_directional_project, and an init of its projector whose state fits
@@ -16,6 +16,7 @@
 
 #include "common/params.h"
 #include "common/vec.h"
+#include "conical/conical.h"
 #include "directional/directional.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
@@ -34,6 +35,8 @@ typedef struct pc_projection_spec {
 typedef struct pc_projector_storage {
     pc_directional_data dir_data;
     pc_directional_cache dir_cache;
+    pc_conical_data cone_data;
+    pc_conical_cache cone_cache;
     pc_ortho_cache ortho_cache;
 } pc_projector_storage;
 

@@ -11,6 +11,16 @@
  * so every face is a candidate. The shape's face BVH (brep/shape_bvh.h)
  * prunes the faces: the test holds for a node's box whenever it holds for
  * a box inside it.
+ * Conical from the eye E: the faces whose box meets the cone from E over
+ * the curve's box beyond the curve, {E + mu (b - E) : b in box(P), mu >=
+ * 1}, which holds every ray from E through P(t) beyond P(t). For one mu
+ * that set is a box whose sides are linear in mu, so per axis the face
+ * box overlaps it for mu on an intersection of two half-lines; the face is
+ * a candidate when the three meet [1, inf). The test is exact for the
+ * cone over the box (conservative for the curve: the box holds the
+ * curve), needs no bound on the shape's extent, and holds for a BVH node
+ * whenever it holds for a box inside it. An eye inside the curve's box
+ * makes every face a candidate (the cone is all of space).
  * Orthogonal: every face (a foot point may lie on any face).
  */
 #ifndef PC_SHAPEPROJ_FACE_SELECT_H
@@ -27,6 +37,17 @@ typedef struct pc_swept_box {
     pc_vec3 dir;
 } pc_swept_box;
 int pc_swept_box_test(const void *user, const double box[6]);
+
+/* 1 when the face box may hold a conical projection from eye of the curve
+ * box (the cone test above). */
+int pc_cone_box_meets(const double curve_box[6], pc_vec3 eye, const double face_box[6]);
+
+/* A pc_box_test of the BVH for the cone, user a pc_cone_box. */
+typedef struct pc_cone_box {
+    double curve_box[6];
+    pc_vec3 eye;
+} pc_cone_box;
+int pc_cone_box_test(const void *user, const double box[6]);
 
 /* The curve's box from its control points: 1, or 0 for a callback curve. */
 int pc_curve_box(const projcurve_curve *curve, double box[6]);

@@ -15,6 +15,7 @@
 #include "faceproj/loop_crossing.h"
 #include "shapeproj/chain.h"
 #include "shapeproj/face_select.h"
+#include "shapeproj/shape_hits.h"
 
 static const projcurve_face *face_of(const projcurve_shape *shape, const projcurve_face *face,
                                      size_t i)
@@ -31,18 +32,29 @@ static projcurve_status select_faces(projcurve_context *ctx, const projcurve_sha
     *sel = malloc((n + 1) * sizeof **sel);
     if (*sel == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory selecting faces");
+    /* the box test of the kind; none (every face) for orthogonal and for
+     * a callback curve, which has no box */
     pc_swept_box sw;
-    const int bounded =
-        spec->kind == PROJCURVE_PROJECT_DIRECTIONAL && pc_curve_box(curve, sw.curve_box);
-    sw.dir = spec->vec;
+    pc_cone_box cone;
+    pc_box_test test = NULL;
+    const void *user = NULL;
+    if (spec->kind == PROJCURVE_PROJECT_DIRECTIONAL && pc_curve_box(curve, sw.curve_box)) {
+        sw.dir = spec->vec;
+        test = pc_swept_box_test;
+        user = &sw;
+    } else if (spec->kind == PROJCURVE_PROJECT_CONICAL && pc_curve_box(curve, cone.curve_box)) {
+        cone.eye = spec->vec;
+        test = pc_cone_box_test;
+        user = &cone;
+    }
     *n_sel = 0;
-    if (bounded && shape != NULL) {
-        *n_sel = pc_face_bvh_query(&shape->bvh, pc_swept_box_test, &sw, *sel);
+    if (test != NULL && shape != NULL) {
+        *n_sel = pc_face_bvh_query(&shape->bvh, test, user, *sel);
         return PROJCURVE_OK;
     }
     for (size_t i = 0; i < n; ++i) {
         const double *box = shape ? shape->boxes + 6 * i : face->box;
-        if (!bounded || pc_swept_box_test(&sw, box))
+        if (test == NULL || test(user, box))
             (*sel)[(*n_sel)++] = i;
     }
     return PROJCURVE_OK;
@@ -116,26 +128,35 @@ projcurve_status pc_shape_project(projcurve_context *ctx, const projcurve_shape 
         r->parts[i].face = sel[i];
         r->parts[i].f = face_of(shape, face, sel[i]);
     }
+    /* nearest hits are chosen across the clipped faces (shape_hits.h): each
+     * face keeps every hit of its surface, MAX_DISTANCE stays per face */
+    const int nearest = p->hits == PROJCURVE_HITS_NEAREST;
+    pc_params face_params = *p;
+    if (nearest)
+        face_params.hits = PROJCURVE_HITS_ALL;
+    const pc_params *fp = &face_params;
     projcurve_status kept = PROJCURVE_OK; /* OK, or the partial status */
     for (size_t i = 0; st == PROJCURVE_OK && i < n_sel; ++i) {
         pc_face_part *part = &r->parts[i];
         if (shape == NULL) {
             /* a lone face: its status is the call's */
             size_t unrefined = 0;
-            part->status = pc_face_project(ctx, part->f, curve, spec, p, &part->result,
+            part->status = pc_face_project(ctx, part->f, curve, spec, fp, &part->result,
                                            &part->trims, &unrefined);
             if (!pc_status_keeps_result(part->status))
                 st = part->status;
             else
                 st = set_ok_message(ctx, part, unrefined);
         } else {
-            st = project_part(ctx, part, curve, spec, p);
+            st = project_part(ctx, part, curve, spec, fp);
         }
         if (st == PROJCURVE_OK && part->status != PROJCURVE_OK &&
             pc_status_keeps_result(part->status))
             kept = part->status;
     }
     free(sel);
+    if (st == PROJCURVE_OK && nearest)
+        st = pc_shape_hits_select(ctx, r, curve, spec, p, model_size);
     if (st == PROJCURVE_OK) {
         r->chain_tol = chain_tolerance(shape, r, model_size);
         st = pc_chain_pieces(ctx, r, shape, curve, spec);

@@ -317,12 +317,20 @@ static outcome call_conical(void) { return project(PROJECT_CONICAL); }
 /* onto a face: the whole domain with a square hole in its middle */
 static projcurve_face *face;
 
-static outcome call_project_face(void)
+static projcurve_options *nearest_opts;
+
+/* kind DIRECTIONAL along down, or (conical) from an eye high above the
+ * face with the nearest hits chosen across its branches */
+static outcome project_face(int conical)
 {
+    static const double high_eye[3] = {50.0, 50.0, 400.0};
     projcurve_shape_result *r = SENTINEL;
     armed = 1;
-    const projcurve_status st = projcurve_project_face(ctx, face, curve,
-                                                       PROJCURVE_PROJECT_DIRECTIONAL, down, NULL, &r);
+    const projcurve_status st =
+        conical ? projcurve_project_face(ctx, face, curve, PROJCURVE_PROJECT_CONICAL, high_eye,
+                                         nearest_opts, &r)
+                : projcurve_project_face(ctx, face, curve, PROJCURVE_PROJECT_DIRECTIONAL, down,
+                                         NULL, &r);
     armed = 0;
     outcome o = {st, 0, r == SENTINEL};
     if (st == PROJCURVE_OK) {
@@ -339,6 +347,9 @@ static outcome call_project_face(void)
     }
     return o;
 }
+
+static outcome call_project_face(void) { return project_face(0); }
+static outcome call_project_face_nearest(void) { return project_face(1); }
 static outcome call_orthogonal(void) { return project(PROJECT_ORTHOGONAL); }
 
 /* Result access that allocates: every branch as one curve. */
@@ -510,8 +521,12 @@ int main(void)
                                             &surface));
     CHECK_OK(projcurve_curve_create_nurbs(ctx, 3, 4, curve_pts, NULL, curve_knots, &curve));
     CHECK_OK(projcurve_options_create(ctx, &ortho_opts));
+    CHECK_OK(projcurve_options_create(ctx, &nearest_opts));
+    CHECK_OK(projcurve_options_set_int(ctx, nearest_opts, PROJCURVE_OPT_HITS,
+                                       PROJCURVE_HITS_NEAREST));
     CHECK_OK(projcurve_project_directional(ctx, surface, curve, down, NULL, &result));
-    if (surface == NULL || curve == NULL || result == NULL || ortho_opts == NULL)
+    if (surface == NULL || curve == NULL || result == NULL || ortho_opts == NULL ||
+        nearest_opts == NULL)
         return pc_test_finish("test_api_alloc_failures");
     CHECK(projcurve_result_branch_count(result) > 0);
     {
@@ -527,6 +542,7 @@ int main(void)
     }
     static const entry entries[] = {
         {"project_face", call_project_face},
+        {"project_face (conical, nearest)", call_project_face_nearest},
         {"surface_create_nurbs", call_surface_create},
         {"curve_create_nurbs", call_curve_create},
         {"model_read (IGES)", call_read_iges},
@@ -546,6 +562,7 @@ int main(void)
     projcurve_result_destroy(result);
     projcurve_face_destroy(face);
     projcurve_options_destroy(ortho_opts);
+    projcurve_options_destroy(nearest_opts);
     projcurve_curve_destroy(curve);
     projcurve_surface_destroy(surface);
     projcurve_context_destroy(ctx);

@@ -835,8 +835,11 @@ void test_faces_and_shapes(pc::context &ctx)
     pc::shape_result one = pc::project_face(ctx, m.face(0), c, PROJCURVE_PROJECT_DIRECTIONAL, d);
     CHECK(one.face_count() == 1 && one.curve_count() == 1);
     CHECK(pc::project_face(ctx, m.face(0), c, PROJCURVE_PROJECT_ORTHOGONAL).face_count() == 1);
-    CHECK_THROWS(pc::project_face(ctx, m.face(0), c, PROJCURVE_PROJECT_CONICAL, {0, 0, 50}),
-                 PROJCURVE_ERR_UNSUPPORTED, nullptr);
+    // conical: an eye on the curve gives no ray and is refused
+    const std::array<double, 3> on_curve = c.point(ctx, 0.5 * (c.domain(ctx)[0] + c.domain(ctx)[1]));
+    CHECK_THROWS(pc::project_face(ctx, m.face(0), c, PROJCURVE_PROJECT_CONICAL,
+                                  {on_curve[0], on_curve[1], on_curve[2]}),
+                 PROJCURVE_ERR_SINGULAR, nullptr);
     CHECK_THROWS(pc::project_shape(ctx, m.shape(0), c, PROJCURVE_PROJECT_DIRECTIONAL, {0, 0, 0}),
                  PROJCURVE_ERR_ZERO_DIRECTION, nullptr);
     pc::shape_result moved(std::move(one));

@@ -5,8 +5,12 @@
  * (-0.9 + 1.8 t, 0.1, 1). Along -z and orthogonally alike the projection
  * is (x(t), 0.1, 0); the face keeps t in [0, t1] and [t2, 1] where
  * x(t) = -+sqrt(1/4 - 0.01): two face pieces, the first ending and the
- * second starting with a TRIM on the hole (the analytic oracle). Then the
- * calls' bad arguments.
+ * second starting with a TRIM on the hole (the analytic oracle). Seen from
+ * the eye E = (0.1, 0.3, 20) (conical), the ray of P(t) meets z = 0 at
+ * E + mu (P - E), mu = 20 / 19: the image is the line (0.1 + mu (x(t) -
+ * 0.1), 0.3 + mu (0.1 - 0.3), 0), inside the square, and the cuts are where it meets the
+ * circle, x = -+sqrt(1/4 - y^2), solved for t in closed form. Then the
+ * calls' bad arguments (an eye on the curve among them).
  */
 #include <math.h>
 #include <stdio.h>
@@ -81,13 +85,18 @@ static void check_piece_end_on_hole(const projcurve_result *r, size_t branch, in
     CHECK_NEAR(p[2], 0.0, 1e-12);
 }
 
+/* The image of the line on z = 0: (x0 + xs t, yi, 0). */
+typedef struct image {
+    double x0, xs, yi;
+} image;
+
 static void check_projection(const projcurve_face *f, const projcurve_curve *c,
-                             projcurve_projection_kind kind, const double *dir)
+                             projcurve_projection_kind kind, const double *dir, image im)
 {
     projcurve_shape_result *sr = NULL;
     CHECK_OK(projcurve_project_face(NULL, f, c, kind, dir, NULL, &sr));
-    const double xc = sqrt(R * R - Y * Y);
-    const double t1 = (-xc + 0.9) / 1.8, t2 = (xc + 0.9) / 1.8;
+    const double xc = sqrt(R * R - im.yi * im.yi);
+    const double t1 = (-xc - im.x0) / im.xs, t2 = (xc - im.x0) / im.xs;
     CHECK(projcurve_shape_result_curve_count(sr) == 2);
     if (projcurve_shape_result_curve_count(sr) != 2) {
         projcurve_shape_result_destroy(sr);
@@ -128,8 +137,8 @@ static void check_projection(const projcurve_face *f, const projcurve_curve *c,
         CHECK_OK(projcurve_result_branch_points(NULL, r, branch, 4096, pts, &count));
         CHECK(count >= 2);
         for (size_t i = 0; i < count && i < 4096; ++i) {
-            CHECK_NEAR(pts[3 * i + 1], -0.9 + 1.8 * pts[3 * i], 1e-10);
-            CHECK_NEAR(pts[3 * i + 2], Y, 1e-10);
+            CHECK_NEAR(pts[3 * i + 1], im.x0 + im.xs * pts[3 * i], 1e-10);
+            CHECK_NEAR(pts[3 * i + 2], im.yi, 1e-10);
             projcurve_where w;
             CHECK_OK(projcurve_face_classify(NULL, f, pts[3 * i + 1], pts[3 * i + 2], &w));
             CHECK(w != PROJCURVE_OUT);
@@ -144,8 +153,8 @@ static void check_projection(const projcurve_face *f, const projcurve_curve *c,
         CHECK_NEAR(d1, tr[1], 1e-14);
         CHECK_OK(projcurve_curve_eval(NULL, cc, 0.5 * (d0 + d1), 0, q));
         /* within eps_D (1e-4 of the size) of the projection */
-        CHECK_NEAR(q[0], -0.9 + 0.9 * (d0 + d1), 3e-4);
-        CHECK_NEAR(q[1], Y, 3e-4);
+        CHECK_NEAR(q[0], im.x0 + 0.5 * im.xs * (d0 + d1), 3e-4);
+        CHECK_NEAR(q[1], im.yi, 3e-4);
         projcurve_curve_destroy(cc);
     }
     projcurve_shape_result_destroy(sr);
@@ -157,9 +166,16 @@ static void check_bad_input(const projcurve_face *f, const projcurve_curve *c)
     projcurve_shape_result *sr = NULL;
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    CHECK_STATUS(projcurve_project_face(ctx, f, c, PROJCURVE_PROJECT_CONICAL, dir, NULL, &sr),
-                 PROJCURVE_ERR_UNSUPPORTED);
+    /* an eye on the curve: the ray of that point has no direction */
+    const double on_curve[3] = {0.3, Y, 1}, nan_eye[3] = {0, NAN, 5};
+    CHECK_STATUS(projcurve_project_face(ctx, f, c, PROJCURVE_PROJECT_CONICAL, on_curve, NULL,
+                                        &sr),
+                 PROJCURVE_ERR_SINGULAR);
     CHECK(projcurve_context_message(ctx)[0] != '\0');
+    CHECK_STATUS(projcurve_project_face(ctx, f, c, PROJCURVE_PROJECT_CONICAL, nan_eye, NULL, &sr),
+                 PROJCURVE_ERR_NOT_FINITE);
+    CHECK_STATUS(projcurve_project_face(ctx, f, c, PROJCURVE_PROJECT_CONICAL, NULL, NULL, &sr),
+                 PROJCURVE_ERR_NULL_ARGUMENT);
     CHECK_STATUS(projcurve_project_face(ctx, f, c, (projcurve_projection_kind)7, dir, NULL, &sr),
                  PROJCURVE_ERR_INVALID_ARGUMENT);
     CHECK_STATUS(projcurve_project_face(ctx, f, c, PROJCURVE_PROJECT_DIRECTIONAL, zero, NULL, &sr),
@@ -196,8 +212,12 @@ int main(void)
     projcurve_face *f = face_with_hole(s);
     projcurve_curve *c = line();
     const double down[3] = {0, 0, -1};
-    check_projection(f, c, PROJCURVE_PROJECT_DIRECTIONAL, down);
-    check_projection(f, c, PROJCURVE_PROJECT_ORTHOGONAL, NULL);
+    const image straight = {-0.9, 1.8, Y};
+    check_projection(f, c, PROJCURVE_PROJECT_DIRECTIONAL, down, straight);
+    check_projection(f, c, PROJCURVE_PROJECT_ORTHOGONAL, NULL, straight);
+    const double eye[3] = {0.1, 0.3, 20}, mu = 20.0 / 19.0;
+    const image seen = {0.1 + mu * (-0.9 - 0.1), mu * 1.8, 0.3 + mu * (Y - 0.3)};
+    check_projection(f, c, PROJCURVE_PROJECT_CONICAL, eye, seen);
     check_bad_input(f, c);
     projcurve_curve_destroy(c);
     projcurve_face_destroy(f);

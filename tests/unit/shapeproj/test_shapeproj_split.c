@@ -10,6 +10,12 @@
  *     size), no gap;
  *   - the same orthogonally (a smooth sheet: the foot points run across
  *     the edges): one connected curve of four pieces;
+ *   - the same with nearest hits (the pieces meet on the shared edges with
+ *     equal distances: not cut there);
+ *   - the same seen from an eye above the sheet (conical; the image of
+ *     the U, scaled about 1.3 times about the eye's foot, stays on the
+ *     sheet): one connected curve of four pieces, all four faces selected
+ *     by the cone test;
  *   - one face's inner edge moved by 1e-6 (a gap between faces, beyond the
  *     chaining tolerance of 1e-9 of the size): two connected curves, the
  *     two ends at the gap counted as open;
@@ -216,6 +222,27 @@ int main(void)
     check_four(sh.shape, sr);
     projcurve_shape_result_destroy(sr);
     check_closed(sh.shape, dir);
+
+    /* nearest hits: one hit per ray, and the pieces meeting on the shared
+     * edges (equal distances there) are not cut: still one curve of four */
+    projcurve_options *nearest = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &nearest));
+    CHECK_OK(projcurve_options_set_int(NULL, nearest, PROJCURVE_OPT_HITS,
+                                       PROJCURVE_HITS_NEAREST));
+    sr = NULL;
+    CHECK_OK(projcurve_project_shape(NULL, sh.shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir,
+                                     nearest, &sr));
+    check_four(sh.shape, sr);
+    projcurve_shape_result_destroy(sr);
+    projcurve_options_destroy(nearest);
+
+    const double eye[3] = {10, 10, 40};
+    sr = NULL;
+    CHECK_OK(projcurve_project_shape(NULL, sh.shape, c, PROJCURVE_PROJECT_CONICAL, eye, NULL,
+                                     &sr));
+    CHECK(projcurve_shape_result_face_count(sr) == 4);
+    check_four(sh.shape, sr);
+    projcurve_shape_result_destroy(sr);
 
     projcurve_curve *near = u_curve(3.0);
     sr = NULL;
