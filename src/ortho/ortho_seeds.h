@@ -47,8 +47,11 @@ typedef struct pc_ortho_finder_state {
 
 /* Number of full foot-point searches per curve domain in the mid-curve
  * sweep (the brief's "at intervals"): a branch born between two searches
- * is found at the next one and traced back to where it was born. */
-#define PC_ORTHO_JUMP_CHECKS 16
+ * is found at the next one and traced back to where it was born; one born
+ * and gone between two is missed. 16 missed such branches on the teapot
+ * (lid and spout, under 1/16 of the domain long); 32 cost ~40 % more
+ * orthogonal time on the real files (docs/orthogonal.md, Seeds). */
+#define PC_ORTHO_JUMP_CHECKS 32
 
 /* Sets up finder over state for surface and curve; minima_of (may be NULL:
  * every foot point is a seed) as in pc_ortho_finder_state. Release with
