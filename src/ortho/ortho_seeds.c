@@ -108,7 +108,10 @@ void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
     state->surface = surface;
     state->curve = curve;
     state->minima_of = minima_of;
-    state->interval = (curve->t1 - curve->t0) / PC_ORTHO_JUMP_CHECKS;
+    const int cheap = surface->nurbs.deg_u <= PC_ORTHO_DENSE_CHECKS_DEGREE &&
+                      surface->nurbs.deg_v <= PC_ORTHO_DENSE_CHECKS_DEGREE;
+    state->interval = (curve->t1 - curve->t0) /
+                      (cheap ? PC_ORTHO_DENSE_JUMP_CHECKS : PC_ORTHO_JUMP_CHECKS);
     state->uv = NULL;
     state->capacity = 0;
     state->budget = NULL;

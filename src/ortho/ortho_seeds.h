@@ -47,8 +47,16 @@ typedef struct pc_ortho_finder_state {
 
 /* Number of full foot-point searches per curve domain in the mid-curve
  * sweep (the brief's "at intervals"): a branch born between two searches
- * is found at the next one and traced back to where it was born. */
+ * is found at the next one and traced back to where it was born; one born
+ * and gone between two is missed. 16 missed such branches on the teapot
+ * (lid and spout, under 1/16 of the domain long), so surfaces of degree
+ * at most PC_ORTHO_DENSE_CHECKS_DEGREE in both directions, where a search
+ * costs ~0.1 ms, get PC_ORTHO_DENSE_JUMP_CHECKS. On higher degrees a search
+ * costs up to 25 ms (linkrods.step, rational 6 x 10), and 32 searches
+ * there took a call past 1 s (docs/orthogonal.md, Seeds). */
 #define PC_ORTHO_JUMP_CHECKS 16
+#define PC_ORTHO_DENSE_JUMP_CHECKS 32
+#define PC_ORTHO_DENSE_CHECKS_DEGREE 3
 
 /* Sets up finder over state for surface and curve; minima_of (may be NULL:
  * every foot point is a seed) as in pc_ortho_finder_state. Release with

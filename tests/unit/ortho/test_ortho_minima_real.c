@@ -13,14 +13,20 @@
  *   of the patch that also holds a saddle. Newton from the quarter's centre
  *   reached the saddle and the search stopped there; every foot-point
  *   search missed the minimum (projcurve_surface_foot_points, checked
- *   directly), and so did the projection (checked on patch 0; on patch 12
- *   the branch lives between two searches of the sweep, still open).
+ *   directly), and so did the projection. On patch 12 the branch lives
+ *   between two of 16 foot-point searches per curve (missed then); 32
+ *   find it.
  * - linkrods.step surface 1 (degree 6 x 10, every knot in v of
  *   multiplicity 10: C0, and not quite G1), curve 3: the foot point runs
  *   onto the crease at v = -0.1647 at t = 0.0915, where the corrector
  *   cannot converge; the knot-line crossing search gave up and the whole
  *   traced segment [0.080, 0.109] became a gap, dropping the minimum at
  *   t = 0.098 that lies beyond. One branch, no FAILED end.
+ * - teapot lid patch 18, the sweep's lifted diagonal: a branch of minima
+ *   enters through the boundary at t = 0.068 and ends at a centre of
+ *   curvature at t = 0.116, shorter than 1/16 of the domain; with 16
+ *   foot-point searches per curve it lay between two of them and was
+ *   missed (3 oracle samples, at t = 0.073, 0.094, 0.115).
  */
 #include <math.h>
 #include <stdio.h>
@@ -278,11 +284,66 @@ static void test_teapot(void)
 
     const projcurve_surface *spout = projcurve_model_surface(m, 12);
     c = curve_on(spout, &oc);
-    /* the search; the projection misses the branch, born and gone between
-     * two of the sweep's searches (docs/orthogonal.md, open) */
+    /* the search, and the projection: the branch is born and gone between
+     * two of 16 searches per curve (docs/orthogonal.md, Seeds) */
     check_search(spout, c, 0.984375, spout_min);
+    check_case("teapot patch 12, curve on S", spout, c, 0);
     projcurve_curve_destroy(c);
 
+    projcurve_model_destroy(m);
+}
+
+/* The sweep's lifted diagonal (test_realdata_sweep.c): a cubic B-spline
+ * with 12 uniform poles, the image of the domain's diagonal from 2 % to
+ * 98 %, moved by 3 % of the size along the average unit normal of a 5 x 5
+ * grid (patch 18's normals do not cancel). */
+#define LIFT_POLES 12
+static projcurve_curve *lifted_diagonal(const projcurve_surface *s)
+{
+    double dom[4], n[3] = {0, 0, 0};
+    projcurve_surface_domain(NULL, s, dom);
+    const double size = surface_size(s);
+    for (int i = 0; i < 5; ++i)
+        for (int j = 0; j < 5; ++j) {
+            double f[9];
+            CHECK_OK(projcurve_surface_eval(NULL, s, dom[0] + (dom[1] - dom[0]) * (0.1 + 0.2 * i),
+                                            dom[2] + (dom[3] - dom[2]) * (0.1 + 0.2 * j), 1, f));
+            const double c[3] = {f[4] * f[8] - f[5] * f[7], f[5] * f[6] - f[3] * f[8],
+                                 f[3] * f[7] - f[4] * f[6]};
+            const double l = sqrt(dot3(c, c));
+            for (int k = 0; k < 3 && l > 0.0; ++k)
+                n[k] += c[k] / l;
+        }
+    const double nl = sqrt(dot3(n, n));
+    double poles[3 * LIFT_POLES], knots[LIFT_POLES + 4];
+    for (int k = 0; k < LIFT_POLES; ++k) {
+        const double a = 0.02 + 0.96 * k / (LIFT_POLES - 1);
+        double p[3];
+        CHECK_OK(projcurve_surface_eval(NULL, s, dom[0] + a * (dom[1] - dom[0]),
+                                        dom[2] + a * (dom[3] - dom[2]), 0, p));
+        for (int c = 0; c < 3; ++c)
+            poles[3 * k + c] = p[c] + 0.03 * size * n[c] / nl;
+    }
+    for (int k = 0; k < LIFT_POLES + 4; ++k) {
+        const int inner = k - 3;
+        knots[k] = inner <= 0 ? 0.0
+                   : inner >= LIFT_POLES - 3 ? 1.0
+                                             : (double)inner / (LIFT_POLES - 3);
+    }
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_nurbs(NULL, 3, LIFT_POLES, poles, NULL, knots, &c));
+    return c;
+}
+
+static void test_teapot_lid(void)
+{
+    projcurve_model *m = read_model("real/teapot_newell_spd.txt");
+    if (m == NULL)
+        return;
+    const projcurve_surface *lid = projcurve_model_surface(m, 18);
+    projcurve_curve *c = lifted_diagonal(lid);
+    check_case("teapot patch 18, lifted diagonal", lid, c, 0);
+    projcurve_curve_destroy(c);
     projcurve_model_destroy(m);
 }
 
@@ -312,5 +373,6 @@ int main(void)
 {
     test_teapot();
     test_linkrods_crease();
+    test_teapot_lid();
     return pc_test_finish("test_ortho_minima_real");
 }
