@@ -107,7 +107,11 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     tr->dir = cfg->dir;
     tr->lambda_tol = proj->newton_tol;
     tr->behind_tol = opts->tol_distance;
-    pc_curve_breaks_init(&tr->breaks, c, PC_BREAK_ORDER_PREDICTOR);
+    /* Land on the corners of P only: at a C1 knot q' is continuous and the
+     * predictor just loses order for one step, while a step cut short to
+     * land there beside a fold let the corrector reach the other sheet
+     * (linkrods.step surface 9, curve 100: a stretch missed). */
+    pc_curve_breaks_init(&tr->breaks, c, PC_BREAK_ORDER_CORNER);
 }
 
 static projcurve_branch_start start_reason(projcurve_branch_end backward_end)

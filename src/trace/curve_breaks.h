@@ -4,8 +4,8 @@
  * less smooth than a given order (a polyline's vertices, the C0 knots of
  * a B-spline wire, the double knots of a cubic). The projection is
  * continuous there but its derivatives jump, so the tracer lands exactly
- * on each break and continues with the derivatives of the side it goes to,
- * and the refinement keeps a vertex there (docs/tracing.md, "Curves with
+ * on each corner (order 1) and continues with the derivatives of the side
+ * it goes to, and the refinement keeps a vertex there (docs/tracing.md, "Curves with
  * corners"). A callback curve has no known breaks.
  */
 #ifndef PC_TRACE_CURVE_BREAKS_H
@@ -14,8 +14,9 @@
 #include "geom/curve.h"
 
 /* P is C^order at a knot of multiplicity m of a degree-p curve when
- * p - m >= order. The tracer's predictor uses q'' (from P''): order 2. The
- * pieces of the refinement need a vertex where P has a corner: order 1. */
+ * p - m >= order. The tracer and the refinement use order 1 (corners; see
+ * trace/branches.c for why the tracer does not land on C1 knots); order 2
+ * names the knots where q'' jumps. */
 #define PC_BREAK_ORDER_PREDICTOR 2
 #define PC_BREAK_ORDER_CORNER 1
 
