@@ -4,13 +4,13 @@
  * across records, sequence numbers per section, and the terminate record
  * with the section counts.
  */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "common/array.h"
 #include "common/error.h"
+#include "io/io_file.h"
 #include "io/iges.h"
 #include "io/iges_write.h"
 
@@ -203,15 +203,7 @@ projcurve_status pc_iges_out_write(projcurve_context *ctx, const pc_iges_out *ou
     projcurve_status st = pc_iges_out_text(ctx, out, &text, &len);
     if (st != PROJCURVE_OK)
         return st;
-    FILE *fp = fopen(path, "wb");
-    if (fp == NULL) {
-        st = pc_fail(ctx, PROJCURVE_ERR_IO, "cannot create %s: %s", path, strerror(errno));
-    } else {
-        const size_t written = fwrite(text, 1, len, fp);
-        const int closed = fclose(fp);
-        if (written != len || closed != 0)
-            st = pc_fail(ctx, PROJCURVE_ERR_IO, "error writing %s", path);
-    }
+    st = pc_write_file(ctx, path, text, len);
     free(text);
     return st;
 }

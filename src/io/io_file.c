@@ -67,3 +67,16 @@ projcurve_status pc_read_file(projcurve_context *ctx, const char *path, size_t m
     *len = bytes.count;
     return PROJCURVE_OK;
 }
+
+projcurve_status pc_write_file(projcurve_context *ctx, const char *path, const char *text,
+                               size_t len)
+{
+    FILE *fp = fopen(path, "wb");
+    if (fp == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_IO, "cannot create %s: %s", path, strerror(errno));
+    const size_t written = fwrite(text, 1, len, fp);
+    const int closed = fclose(fp);
+    if (written != len || closed != 0)
+        return pc_fail(ctx, PROJCURVE_ERR_IO, "error writing %s", path);
+    return PROJCURVE_OK;
+}

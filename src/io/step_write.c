@@ -5,13 +5,13 @@
  * context instances; and the bookkeeping of a pc_step_out (marks, the
  * GEOMETRIC_SET, the written surfaces).
  */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "common/array.h"
 #include "common/error.h"
+#include "io/io_file.h"
 #include "io/step_write.h"
 
 /* The uncertainty of a writer told no other, in model units: 1e-7 mm is
@@ -118,15 +118,7 @@ projcurve_status pc_step_out_write(projcurve_context *ctx, const pc_step_out *ou
     projcurve_status st = pc_step_out_text(ctx, out, &text, &len);
     if (st != PROJCURVE_OK)
         return st;
-    FILE *fp = fopen(path, "wb");
-    if (fp == NULL) {
-        st = pc_fail(ctx, PROJCURVE_ERR_IO, "cannot create %s: %s", path, strerror(errno));
-    } else {
-        const size_t written = fwrite(text, 1, len, fp);
-        const int closed = fclose(fp);
-        if (written != len || closed != 0)
-            st = pc_fail(ctx, PROJCURVE_ERR_IO, "error writing %s", path);
-    }
+    st = pc_write_file(ctx, path, text, len);
     free(text);
     return st;
 }
