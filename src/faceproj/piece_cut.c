@@ -122,7 +122,8 @@ projcurve_status pc_piece_append_part(projcurve_context *ctx, pc_branch *b, cons
                                       double s0, double s1, double t0, double t1)
 {
     const int n = piece->degree;
-    double hw[4 * PROJCURVE_MAX_PIECE_POINTS], part[4 * PROJCURVE_MAX_PIECE_POINTS];
+    /* zeroed: gcc -O1 cannot see that n >= 0 fills what bezier_part reads */
+    double hw[4 * PROJCURVE_MAX_PIECE_POINTS] = {0}, part[4 * PROJCURVE_MAX_PIECE_POINTS];
     for (int i = 0; i <= n; ++i) {
         const double w = piece->weights[i];
         for (int d = 0; d < 3; ++d)

@@ -510,7 +510,7 @@ static void check_entry(const entry *e)
 
 int main(void)
 {
-    alarm(HANG_GUARD_SECONDS);
+    pc_test_hang_guard(HANG_GUARD_SECONDS);
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     make_net();
     snprintf(write_path, sizeof write_path, "test_api_alloc_failures.%ld.igs", (long)getpid());

@@ -156,7 +156,7 @@ static void test_model(void)
 
 int main(void)
 {
-    alarm(HANG_GUARD_SECONDS);
+    pc_test_hang_guard(HANG_GUARD_SECONDS);
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     test_setter();
     test_boundary();

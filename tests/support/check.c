@@ -4,6 +4,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 int pc_test_failures = 0;
 int pc_test_checks = 0;
@@ -37,6 +38,11 @@ void pc_test_missing_data(const char *what)
                     "$PROJCURVE_TEST_DATA_DIR, if set, must name a copy of it)\n",
             what);
     exit(EXIT_FAILURE);
+}
+
+void pc_test_hang_guard(unsigned seconds)
+{
+    alarm(seconds * (unsigned)PC_TEST_SLOWDOWN);
 }
 
 const char *pc_test_data_path(const char *relative)

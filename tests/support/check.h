@@ -61,6 +61,12 @@ void pc_test_skip(const char *why);
  * missing: the data is part of the repository, so its absence is an error. */
 void pc_test_missing_data(const char *what);
 
+/* Ends the program (SIGALRM, a test failure) if it runs longer than
+ * seconds times PC_TEST_SLOWDOWN: a guard against hangs, not a timing.
+ * PC_TEST_SLOWDOWN is 1 in plain builds and larger in the sanitizer and
+ * coverage builds, which run the same work several times slower. */
+void pc_test_hang_guard(unsigned seconds);
+
 /* Path of a file under tests/data (e.g. "cases/MANIFEST.tsv",
  * "real/horn.xml"), in a static buffer. The root is
  * $PROJCURVE_TEST_DATA_DIR if set, else the source tree's tests/data. */

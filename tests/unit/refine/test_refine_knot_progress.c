@@ -14,7 +14,6 @@
  */
 #include <math.h>
 #include <stdio.h>
-#include <unistd.h>
 
 #include "check.h"
 
@@ -79,7 +78,7 @@ static projcurve_curve *lifted_diagonal(const projcurve_surface *s)
 
 int main(void)
 {
-    alarm(HANG_GUARD_SECONDS);
+    pc_test_hang_guard(HANG_GUARD_SECONDS);
     projcurve_model *m = NULL;
     if (projcurve_model_read_file(NULL, pc_test_data_path("real/linkrods.step"), &m) !=
         PROJCURVE_OK)

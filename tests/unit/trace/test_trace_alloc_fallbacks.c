@@ -15,7 +15,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "check.h"
 #include "projcurve.h"
@@ -144,7 +143,7 @@ static run_result run(long fail)
 
 int main(void)
 {
-    alarm(HANG_GUARD_SECONDS);
+    pc_test_hang_guard(HANG_GUARD_SECONDS);
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     make_net();
     run_result ref = run(0);

@@ -19,10 +19,8 @@
  * timed.
  */
 #include <math.h>
-#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <unistd.h>
 
 #include "check.h"
 #include "trace_oracle.h"
@@ -202,7 +200,7 @@ static void point_image_reported(void)
 
 int main(void)
 {
-    alarm(HANG_GUARD_SECONDS);
+    pc_test_hang_guard(HANG_GUARD_SECONDS);
     line_along_dir();
     tangent_along_dir();
     plane_edge_on();
