@@ -1015,6 +1015,32 @@ PROJCURVE_API projcurve_status projcurve_result_branch_compact_info(
     projcurve_context *ctx, const projcurve_result *result, size_t branch,
     int *pcurve_fitted, double *pcurve_error, double *curve_error);
 
+/* The exact composition of a branch's compact pcurve with the surface it
+ * was projected onto, S o q, as a new NURBS curve handle (release with
+ * projcurve_curve_destroy), over the branch's t range: on S to rounding,
+ * where the compact 3D curve is only within eps_D of it, at the cost of
+ * its degree. q is cut at its knots, at its seam jumps (the unwrapped
+ * pcurve moved back into the domain, see Seams above: one curve across
+ * them) and where it crosses a knot line of S; each cubic piece composed
+ * with its Bezier patch is a Bezier curve of degree 3 (p + q) (rational
+ * when S is), and the pieces are joined with knots of multiplicity that
+ * degree (C0 in form; the curve is as smooth as S o q is). Of degree 18
+ * on a bicubic surface, 6 on a plane of degrees (1, 1), 12 on the
+ * quadratic rational cylinder and sphere; degrees above 25 (surfaces with
+ * p + q > 8) are given but cannot be read by Open CASCADE
+ * (Geom_BSplineCurve's limit). surface must be the one the result was
+ * projected onto (for a face result, the face's surface): its start is
+ * checked against the branch's pieces. Computed on each call (no cache).
+ * Statuses: OK, NULL_ARGUMENT, INDEX, INVALID_ARGUMENT (no compact forms,
+ * as projcurve_result_branch_compact_pcurve; or another surface),
+ * UNSUPPORTED (the compact pcurve is in the curve's own space, rational
+ * or above cubic: read projcurve_result_branch_curve; or the degree
+ * 3 (p + q) is above PROJCURVE_MAX_DEGREE), NO_MEMORY, OVERFLOW.
+ * Thread-safe (the result and the surface are only read). */
+PROJCURVE_API projcurve_status projcurve_result_branch_compact_exact(
+    projcurve_context *ctx, const projcurve_result *result, const projcurve_surface *surface,
+    size_t branch, projcurve_curve **out);
+
 /* ======================================================================== */
 /* Files: IGES, STEP and G+Smo XML                                           */
 /* ======================================================================== */
