@@ -612,7 +612,14 @@ typedef struct projcurve_result projcurve_result;
  * for MAX_PIECES at that point; stopped while tracing, no branch is
  * composed (none has pieces), the branch being traced ends with
  * PROJCURVE_END_LIMIT (unless it had a single point, which is dropped) and
- * the branches born later in the curve are missing.
+ * the branches born later in the curve are missing; stopped while fitting
+ * the compact forms (after verification), every branch has all its
+ * pieces, the branches before the one being fitted keep their compact
+ * forms, and from that one on each has the pieces' pcurves joined as its
+ * compact pcurve (projcurve_result_branch_compact_info: not fitted) and
+ * no compact 3D curve (projcurve_result_branch_compact_curve:
+ * LIMIT_REACHED), except where the branch being fitted had its 3D curve
+ * checked without new exact points (then it is kept, within eps_D).
  * A curve that misses the surface gives OK and a result with no branches.
  * The projection holds in front of the curve, (q - p).Dir >= 0: a branch
  * ends where the curve meets S (PROJCURVE_END_CURVE_CROSSING) and one
