@@ -618,8 +618,7 @@ typedef struct projcurve_result projcurve_result;
  * forms, and from that one on each has the pieces' pcurves joined as its
  * compact pcurve (projcurve_result_branch_compact_info: not fitted) and
  * no compact 3D curve (projcurve_result_branch_compact_curve:
- * LIMIT_REACHED), except where the branch being fitted had its 3D curve
- * checked without new exact points (then it is kept, within eps_D).
+ * LIMIT_REACHED).
  * A curve that misses the surface gives OK and a result with no branches.
  * The projection holds in front of the curve, (q - p).Dir >= 0: a branch
  * ends where the curve meets S (PROJCURVE_END_CURVE_CROSSING) and one
