@@ -612,7 +612,13 @@ typedef struct projcurve_result projcurve_result;
  * for MAX_PIECES at that point; stopped while tracing, no branch is
  * composed (none has pieces), the branch being traced ends with
  * PROJCURVE_END_LIMIT (unless it had a single point, which is dropped) and
- * the branches born later in the curve are missing.
+ * the branches born later in the curve are missing; stopped while fitting
+ * the compact forms (after verification), every branch has all its
+ * pieces, the branches before the one being fitted keep their compact
+ * forms, and from that one on each has the pieces' pcurves joined as its
+ * compact pcurve (projcurve_result_branch_compact_info: not fitted) and
+ * no compact 3D curve (projcurve_result_branch_compact_curve:
+ * LIMIT_REACHED).
  * A curve that misses the surface gives OK and a result with no branches.
  * The projection holds in front of the curve, (q - p).Dir >= 0: a branch
  * ends where the curve meets S (PROJCURVE_END_CURVE_CROSSING) and one
@@ -939,6 +945,10 @@ PROJCURVE_API projcurve_status projcurve_result_branch_curve(projcurve_context *
  * are at most 16 such places, e.g. a cubic curve's knots). In P's space too where exact (as above,
  * when P's degree is at most PROJCURVE_OPT_CURVE_DEGREE).
  *
+ * On request, projcurve_result_branch_compact_exact composes the compact
+ * pcurve with S exactly: one NURBS curve on S to rounding, of degree
+ * 3 (p + q).
+ *
  * Fitting happens in the projection call, after verification, under its
  * budget; results stay read-only afterwards (thread-safe). */
 
@@ -1014,6 +1024,34 @@ PROJCURVE_API projcurve_status projcurve_result_branch_seam(projcurve_context *c
 PROJCURVE_API projcurve_status projcurve_result_branch_compact_info(
     projcurve_context *ctx, const projcurve_result *result, size_t branch,
     int *pcurve_fitted, double *pcurve_error, double *curve_error);
+
+/* The exact composition of a branch's compact pcurve with the surface it
+ * was projected onto, S o q, as a new NURBS curve handle (release with
+ * projcurve_curve_destroy), over the branch's t range: on S to rounding,
+ * where the compact 3D curve is only within eps_D of it, at the cost of
+ * its degree. q is cut at its knots, at its seam jumps (the unwrapped
+ * pcurve moved back into the domain, see Seams above: one curve across
+ * them) and where it crosses a knot line of S; each piece of degree d
+ * composed with its Bezier patch is a Bezier curve of degree d (p + q)
+ * (rational when S is), and the pieces are joined with knots of
+ * multiplicity that degree (C0 in form; the curve is as smooth as S o q
+ * is). For the fitted cubic (d = 3): degree 18 on a bicubic surface, 6 on
+ * a plane of degrees (1, 1), 9 on the rational cylinder (2, 1), 12 on the
+ * sphere (2, 2); degrees above 25 (surfaces with p + q > 8) are given but
+ * cannot be read by Open CASCADE (Geom_BSplineCurve's limit). surface must be the one the result was
+ * projected onto (for a face result, the face's surface): its start is
+ * checked against the branch's pieces. Computed on each call (no cache).
+ * Statuses: OK, NULL_ARGUMENT, INDEX, INVALID_ARGUMENT (no compact forms,
+ * as projcurve_result_branch_compact_pcurve; or another surface),
+ * UNSUPPORTED (the compact pcurve is in the curve's own space, rational
+ * or above cubic: read projcurve_result_branch_curve; or the degree
+ * d (p + q) is above PROJCURVE_MAX_DEGREE), NO_MEMORY, OVERFLOW,
+ * NOT_CONVERGED (a piece crossing one knot line more often than a cubic
+ * can: not expected). Thread-safe (the result and the surface are only
+ * read). */
+PROJCURVE_API projcurve_status projcurve_result_branch_compact_exact(
+    projcurve_context *ctx, const projcurve_result *result, const projcurve_surface *surface,
+    size_t branch, projcurve_curve **out);
 
 /* ======================================================================== */
 /* Files: IGES, STEP and G+Smo XML                                           */

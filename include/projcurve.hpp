@@ -1166,6 +1166,16 @@ public:
         ctx.check(projcurve_result_branch_compact_curve(ctx.get(), handle_, b, &raw));
         return curve(raw);
     }
+    /** \brief Branch b's compact pcurve composed exactly with s, the
+     *  surface the result was projected onto
+     *  (projcurve_result_branch_compact_exact): on s to rounding, degree
+     *  3 (p + q) for the cubic pcurve. */
+    curve compact_exact(context &ctx, surface_view s, std::size_t b) const
+    {
+        projcurve_curve *raw = nullptr;
+        ctx.check(projcurve_result_branch_compact_exact(ctx.get(), handle_, s.get(), b, &raw));
+        return curve(raw);
+    }
     /** \brief What the fit of branch b's compact forms measured. */
     compact_info compact(context &ctx, std::size_t b) const
     {

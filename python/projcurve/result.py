@@ -151,6 +151,18 @@ class Branch:
         """The compact 3D Curve (within eps_D of the projection)."""
         return self._curve("projcurve_result_branch_compact_curve")
 
+    def compact_exact(self, surface=None):
+        """The compact pcurve composed with the surface exactly: a NURBS
+        Curve on the surface to rounding, of degree 3 (p + q) for the
+        cubic pcurve (above 25 on surfaces with p + q > 8, which Open
+        CASCADE cannot read). surface: the one the result was projected
+        onto (the default)."""
+        s = self.result.surface if surface is None else surface
+        out = ctypes.c_void_p()
+        call("projcurve_result_branch_compact_exact", self.result._ptr, s._ptr, self.index,
+             ctypes.byref(out))
+        return Curve(out.value)
+
     def compact_info(self):
         fitted, pe, ce = ctypes.c_int(), ctypes.c_double(), ctypes.c_double()
         call("projcurve_result_branch_compact_info", self.result._ptr, self.index,

@@ -1,12 +1,15 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * The compact forms of a branch (fit/) as curve handles: the pcurve as
- * points (u, v, 0), the 3D curve as it is; and what the fit measured.
+ * points (u, v, 0), the 3D curve as it is, the pcurve composed with S
+ * exactly (exact/); and what the fit measured.
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 
 #include "common/error.h"
+#include "exact/exact.h"
 #include "trace/result.h"
 
 static projcurve_status compact_branch(projcurve_context *ctx, const projcurve_result *r,
@@ -98,4 +101,66 @@ projcurve_status projcurve_result_branch_compact_info(projcurve_context *ctx,
     if (curve_error)
         *curve_error = b->compact_curve_error;
     return PROJCURVE_OK;
+}
+
+/* The point of b's pieces at t (an end of the first or last piece), or 0
+ * when no piece ends there. */
+static int piece_point_at(const pc_branch *b, double t, double x[3])
+{
+    for (size_t k = 0; k < 2 && b->n_pieces > 0; ++k) {
+        const pc_piece *p = &b->pieces[k == 0 ? 0 : b->n_pieces - 1];
+        const int at = p->t0 == t ? 0 : (p->t1 == t ? p->degree : -1);
+        if (at >= 0) {
+            for (int c = 0; c < 3; ++c)
+                x[c] = p->ctrl[3 * at + c];
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* The surface passed must be the one projected onto: S(q(t)) at the
+ * start of the branch, the exact curve's first pole, is then within the
+ * pcurve's fit of the pieces' start (both within eps_D of one exact
+ * point; 4 eps_D leaves room for the rounding of a loose fit), and on
+ * another surface it is as far as the surfaces are apart. */
+static projcurve_status check_surface(projcurve_context *ctx, const projcurve_result *r,
+                                      const projcurve_surface *s, const pc_branch *b,
+                                      size_t branch, const pc_bspline *exact)
+{
+    double x[3];
+    if (!piece_point_at(b, exact->knots[0], x))
+        return PROJCURVE_OK;
+    const double tol = 4.0 * r->stats.tol_distance + 1e-9 * s->size;
+    double d2 = 0.0;
+    for (int c = 0; c < 3; ++c)
+        d2 += (exact->poles[c] - x[c]) * (exact->poles[c] - x[c]);
+    if (!(sqrt(d2) <= tol))
+        return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                       "branch %zu was not projected onto this surface: its start is %g "
+                       "from S(q(t)) there (more than %g)",
+                       branch, sqrt(d2), tol);
+    return PROJCURVE_OK;
+}
+
+projcurve_status projcurve_result_branch_compact_exact(projcurve_context *ctx,
+                                                       const projcurve_result *result,
+                                                       const projcurve_surface *surface,
+                                                       size_t branch, projcurve_curve **out)
+{
+    const pc_branch *b = NULL;
+    projcurve_status st = compact_branch(ctx, result, branch, &b);
+    if (st != PROJCURVE_OK)
+        return st;
+    PC_REQUIRE(ctx, surface, "surface");
+    PC_REQUIRE(ctx, out, "out");
+    pc_bspline exact = {0};
+    st = pc_exact_compose(ctx, surface, b, &exact);
+    if (st == PROJCURVE_OK)
+        st = check_surface(ctx, result, surface, b, branch, &exact);
+    if (st == PROJCURVE_OK)
+        st = projcurve_curve_create_nurbs(ctx, exact.degree, exact.n_poles, exact.poles,
+                                          exact.weights, exact.knots, out);
+    pc_bspline_free(&exact);
+    return st;
 }

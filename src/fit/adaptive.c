@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "common/array.h"
+#include "common/budget.h"
 #include "common/error.h"
 #include "fit/lsq.h"
 
@@ -441,6 +442,11 @@ projcurve_status pc_fit_adaptive(projcurve_context *ctx, pc_fit_branch *fb,
     double worst = INFINITY;
     for (int round = 0; st == PROJCURVE_OK && going && round < PC_FIT_MAX_ROUNDS; ++round) {
         if (f.n_poles > goal->max_poles)
+            break;
+        /* A round is a unit of the budget too: a fit whose samples and
+         * check points exist already (the 3D fit after the pcurve's)
+         * makes no exact point, and its solves must stop with the call. */
+        if (pc_budget_check(fb->budget, fb->progress) != PROJCURVE_OK)
             break;
         st = fill_spans(&f, &going);
         if (st != PROJCURVE_OK || !going)

@@ -20,7 +20,8 @@
  * pcurves joined when the fit hits its bound) and compact 3D curve of
  * degree p->curve_degree (none when that fit hits its bound), kept in
  * the branch (pc_branch.compact*). p->budget (may be NULL) is polled
- * once per exact point; once it stops, the branches left get the joined
+ * once per exact point and once per round of an adaptive fit; once it
+ * stops, the branches left get the joined
  * pcurve and no 3D curve. Statuses: OK, NO_MEMORY, and the budget's
  * LIMIT_REACHED or CANCELLED (recorded in ctx). */
 projcurve_status pc_fit_result(projcurve_context *ctx, const pc_projector *proj,

@@ -4,7 +4,8 @@
  * built with PROJCURVE_ALLOC_HOOK: its allocations go through
  * src/common/alloc_hook.h, and pc_alloc_hook_fail below decides). For each
  * entry point exercised here (surface and curve creation, model reading,
- * directional, conical and orthogonal projection, result access, IGES and
+ * directional, conical and orthogonal projection, result access (the
+ * branches joined, the exact composition of the compact pcurve), IGES and
  * STEP writing) the
  * call is run once to count its allocations and note the first allocation
  * of each call site, then once per allocation with that one failing (every
@@ -373,6 +374,28 @@ static outcome call_branch_curves(void)
     return o;
 }
 
+/* The exact composition of every branch's compact pcurve with S (its
+ * cuts at the knot lines of the 5 x 5 patches, its parts, its poles). */
+static outcome call_compact_exact(void)
+{
+    outcome o = {PROJCURVE_OK, 1469598103934665603ull, 1};
+    for (size_t b = 0; b < projcurve_result_branch_count(result) && o.st == PROJCURVE_OK; ++b) {
+        projcurve_curve *c = SENTINEL;
+        armed = 1;
+        o.st = projcurve_result_branch_compact_exact(ctx, result, surface, b, &c);
+        armed = 0;
+        if (o.st == PROJCURVE_OK) {
+            const hash h = curve_hash(ctx, c);
+            o.out = mix(o.out, &h, sizeof h);
+            projcurve_curve_destroy(c);
+        } else {
+            o.out = 0;
+            o.out_untouched = c == SENTINEL;
+        }
+    }
+    return o;
+}
+
 /* A writer filled step by step; a failed step must leave the writer as it
  * was (what it writes afterwards, with the hook off, is unchanged). */
 static outcome call_iges_write(void)
@@ -553,6 +576,7 @@ int main(void)
         {"project_orthogonal", call_orthogonal},
         {"project_conical", call_conical},
         {"result_branch_curve", call_branch_curves},
+        {"result_branch_compact_exact", call_compact_exact},
         {"iges_writer", call_iges_write},
         {"step_writer", call_step_write},
     };

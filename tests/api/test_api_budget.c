@@ -14,8 +14,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/project.h"
 #include "check.h"
 #include "common/budget.h"
+#include "directional/directional_project.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
 #include "point/point.h"
@@ -566,6 +568,143 @@ static void test_real_calls(void)
     projcurve_model_destroy(m);
 }
 
+/* ---- a cut inside the fitting stage ------------------------------------ */
+
+/* A wave whose crests leave the unit square (y > 1): over the bumpy graph
+ * four branches, each composed and fitted. */
+static int tall_wave_fn(void *user, double t, double out[9])
+{
+    (void)user;
+    const double w = 3.0 * 3.14159265358979323846;
+    out[0] = 0.1 + 0.8 * t;
+    out[1] = 0.4 + 0.7 * sin(w * t);
+    out[2] = 1.0;
+    out[3] = 0.8;
+    out[4] = 0.7 * w * cos(w * t);
+    out[5] = 0.0;
+    out[6] = 0.0;
+    out[7] = -0.7 * w * w * sin(w * t);
+    out[8] = 0.0;
+    return 0;
+}
+
+/* The work units of the directional call with opts, the compact fits on
+ * or off (white box: pc_params.compact, the benchmark's switch). The
+ * public call runs exactly this (api/project.c). */
+static unsigned long long work_units(const projcurve_surface *s, const projcurve_curve *c,
+                                     const projcurve_options *o, int compact)
+{
+    pc_params p;
+    pc_budget b;
+    CHECK_OK(pc_projection_params(NULL, o, s->size, &b, &p));
+    p.compact = compact;
+    const pc_vec3 down = {0.0, 0.0, -1.0};
+    projcurve_result *r = NULL;
+    CHECK_OK(pc_directional_project(NULL, s, c, down, &p, &r));
+    projcurve_result_destroy(r);
+    return b.work;
+}
+
+/* MAX_WORK halfway through the fitting stage (after the W0 units of
+ * tracing, composing and verifying, before the W1 of the whole call):
+ * LIMIT_REACHED with the message of the work limit; every branch with
+ * all its pieces (the same as the complete call's); the branches fitted
+ * before the cut come first, with the complete call's compact forms, and
+ * from the one being fitted on none has a compact 3D curve
+ * (LIMIT_REACHED) and each whose pcurve fit was cut has the pieces'
+ * pcurves joined (compact_info fitted 0, error -1); the exact
+ * composition of that joined pcurve is the pieces (to rounding). The
+ * result is destroyed like any other (ASan checks for leaks). */
+static void test_cut_in_fit(const projcurve_surface *s)
+{
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_callback(NULL, tall_wave_fn, NULL, 0.0, 1.0, &c));
+    projcurve_options *o = base_options(CALL_DIRECTIONAL);
+    const unsigned long long w0 = work_units(s, c, o, 0), w1 = work_units(s, c, o, 1);
+    printf("cut in the fit: %llu units without the fits, %llu with\n", w0, w1);
+    CHECK(w1 > w0 + 10);
+    projcurve_result *full = NULL, *r = NULL;
+    CHECK_OK(projcurve_project_directional(NULL, s, c, (const double[3]){0, 0, -1}, o, &full));
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK,
+                                       (long long)(w0 + (w1 - w0) / 2)));
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, (const double[3]){0, 0, -1}, o, &r),
+                 PROJCURVE_ERR_LIMIT_REACHED);
+    printf("  %s\n", projcurve_context_message(ctx));
+    CHECK(strstr(projcurve_context_message(ctx), "work limit") != NULL);
+    CHECK(r != NULL);
+    if (r == NULL || full == NULL)
+        goto done;
+    const size_t n = projcurve_result_branch_count(r);
+    CHECK(n >= 2 && n == projcurve_result_branch_count(full));
+    CHECK(same_result(r, full));
+    int fitted_before = 1, cut_seen = 0;
+    size_t unfitted = 0;
+    for (size_t b = 0; b < n; ++b) {
+        int fitted = -1;
+        double qe = 0, ce = 0;
+        CHECK_OK(projcurve_result_branch_compact_info(NULL, r, b, &fitted, &qe, &ce));
+        int full_fitted = -1;
+        double fqe = 0, fce = 0;
+        CHECK_OK(projcurve_result_branch_compact_info(NULL, full, b, &full_fitted, &fqe, &fce));
+        printf("  branch %zu: fitted %d, errors %.3g %.3g (complete call: %d, %.3g %.3g)\n", b,
+               fitted, qe, ce, full_fitted, fqe, fce);
+        CHECK(fitted <= fitted_before); /* fitted ones first, in branch order */
+        fitted_before = fitted;
+        projcurve_curve *q = NULL, *k = NULL, *e = NULL, *pieces = NULL;
+        CHECK_OK(projcurve_result_branch_compact_pcurve(NULL, r, b, &q));
+        /* the fitted forms are the complete call's; from the one cut on
+         * no branch has a 3D curve (each round of a fit polls the budget,
+         * also one that needs no new exact point); a cut in the 3D fit of
+         * a branch whose pcurve was fitted leaves it that pcurve alone */
+        if (fitted)
+            CHECK(qe == fqe && full_fitted == 1);
+        if (ce >= 0.0) {
+            CHECK(fitted && ce == fce && !cut_seen);
+            CHECK_OK(projcurve_result_branch_compact_curve(NULL, r, b, &k));
+        } else {
+            cut_seen = 1;
+            CHECK_STATUS(projcurve_result_branch_compact_curve(NULL, r, b, &k),
+                         PROJCURVE_ERR_LIMIT_REACHED);
+            CHECK(k == NULL);
+        }
+        if (!fitted) {
+            ++unfitted;
+            CHECK(qe == -1.0);
+            /* S o (the pieces' pcurves joined) is the pieces: both exact on S */
+            CHECK_OK(projcurve_result_branch_compact_exact(NULL, r, s, b, &e));
+            CHECK_OK(projcurve_result_branch_curve(NULL, r, b, &pieces));
+            double dom[2] = {0, 0}, worst = 0;
+            if (e)
+                CHECK_OK(projcurve_curve_domain(NULL, e, &dom[0], &dom[1]));
+            for (int i = 0; e && pieces && i <= 200; ++i) {
+                double x[9], y[9];
+                const double t = i == 200 ? dom[1] : dom[0] + (dom[1] - dom[0]) * i / 200.0;
+                CHECK_OK(projcurve_curve_eval(NULL, e, t, 0, x));
+                CHECK_OK(projcurve_curve_eval(NULL, pieces, t, 0, y));
+                worst = fmax(worst, sqrt((x[0] - y[0]) * (x[0] - y[0]) +
+                                         (x[1] - y[1]) * (x[1] - y[1]) +
+                                         (x[2] - y[2]) * (x[2] - y[2])));
+            }
+            /* two compositions of one pcurve: rounding, 1e-12 of the size */
+            CHECK(worst <= 1e-12 * s->size);
+        }
+        projcurve_curve_destroy(q);
+        projcurve_curve_destroy(k);
+        projcurve_curve_destroy(e);
+        projcurve_curve_destroy(pieces);
+    }
+    CHECK(unfitted >= 1);
+    printf("  %zu of %zu branches left with the joined pcurve\n", unfitted, n);
+done:
+    projcurve_context_destroy(ctx);
+    projcurve_result_destroy(r);
+    projcurve_result_destroy(full);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+}
+
 int main(void)
 {
     test_module_time_limit();
@@ -596,6 +735,7 @@ int main(void)
         check_time_limit(&f, (call_kind)kind);
     }
     test_implicit_piece_limit(&f);
+    test_cut_in_fit(f.surface);
     projcurve_curve_destroy(f.wave);
     projcurve_surface_destroy(f.surface);
     return pc_test_finish("test_api_budget");

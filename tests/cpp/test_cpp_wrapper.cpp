@@ -409,6 +409,21 @@ void test_projection(pc::context &ctx)
     const pc::curve line = pc::curve::nurbs(ctx, 1, line_ctrl, {}, unit_knots);
 
     check_vertical_result(ctx, pc::project_directional(ctx, s, line, {0, 0, -1}));
+    {
+        // The compact pcurve composed with S exactly: on the saddle z = u v
+        // to rounding, and here (q the line's own (u, v) line) the exact
+        // projection itself; another surface is refused.
+        const pc::result r = pc::project_directional(ctx, s, line, {0, 0, -1});
+        const pc::curve e = r.compact_exact(ctx, s, 0);
+        for (int i = 0; i <= 8; ++i) {
+            const std::array<double, 3> x = e.point(ctx, i / 8.0), p = line_at(i / 8.0);
+            CHECK(dist3(x, saddle(p[0], p[1])) <= 1e-13);
+        }
+        const double lifted[12] = {0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
+        const pc::surface other = pc::surface::nurbs(ctx, 1, 1, 2, 2, lifted, {}, unit_knots,
+                                                     unit_knots);
+        CHECK_THROWS(r.compact_exact(ctx, other, 0), PROJCURVE_ERR_INVALID_ARGUMENT, "surface");
+    }
     pc::options opts(ctx);
     std::vector<double> fractions;
     auto record = [&fractions](double f) {

@@ -121,6 +121,24 @@ def test_directional_result(pc, bilinear, segment):
     assert "Branch(0" in repr(b)
 
 
+def test_compact_exact(pc, bilinear, segment):
+    """S o q on the bilinear patch: q is the segment's own (u, v) line, so
+    the composition is (x, y, x y) of the segment exactly: degree
+    1 (1 + 1) = 2, to rounding (1e-13)."""
+    res = pc.project_directional(bilinear, segment, (0, 0, -1), tol_distance=1e-6)
+    (b,) = res.branches
+    e = b.compact_exact()
+    assert e.domain == b.t_range and e.degree == 2
+    for t in (0.0, 0.21, 0.5, 0.77, 1.0):
+        assert close(e.point(t), exact(t), 1e-13)
+    assert close(b.compact_exact(bilinear).point(0.4), exact(0.4), 1e-13)
+    lifted = pc.Surface.from_nurbs(degree=(1, 1), shape=(2, 2),
+                                   control_points=[[0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]],
+                                   knots=([0, 0, 1, 1], [0, 0, 1, 1]))
+    with pytest.raises(pc.InvalidArgumentError):
+        b.compact_exact(lifted)  # not the surface projected onto
+
+
 def test_orthogonal_onto_plane(pc):
     plane = pc.Surface.from_nurbs(degree=(1, 1), shape=(2, 2),
                                   control_points=[[0, 0, 0], [2, 0, 0], [0, 2, 0], [2, 2, 0]],

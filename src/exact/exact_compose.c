@@ -1,0 +1,323 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * The driver of the exact composition (exact.h): q's Bezier segments by
+ * blossoming, each cut at the seam jumps inside it and moved into the
+ * domain, then cut where it crosses a knot line of S (sign_changes.c),
+ * each part composed with the patch it lies in, the parts joined.
+ */
+#include "exact/exact.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/array.h"
+#include "common/error.h"
+#include "compose/compose.h"
+#include "seam/seam.h"
+
+#define PC_EXACT_ORDER (PC_COMPOSE_POLY_MAX_DEGREE + 1)
+/* Sign changes of one cubic against one knot line: three roots, and
+ * room for a root the halving reports twice (two neighbours at 2^-52). */
+#define PC_EXACT_ROOTS_PER_LINE 8
+
+/* One part of q to compose: over [t0, t1], in patch `patch`, with its
+ * (u, v) Bezier control points in the domain. */
+typedef struct exact_part {
+    double t0, t1;
+    size_t patch;
+    double uv[2 * PC_EXACT_ORDER];
+} exact_part;
+
+typedef struct exact_parts {
+    exact_part *items;
+    size_t count, capacity;
+} exact_parts;
+
+typedef struct exact_cuts {
+    double *items;
+    size_t count, capacity;
+} exact_cuts;
+
+/* The blossom of q at args (d values) on knot span `span` (de Boor with
+ * one argument per level: each step a convex combination while the
+ * arguments lie in the span). */
+static void blossom(const pc_bspline *q, size_t span, const double *args, double out[2])
+{
+    const int d = q->degree;
+    double w[2 * PC_EXACT_ORDER];
+    memcpy(w, q->poles + 2 * (span - (size_t)d), 2 * (size_t)(d + 1) * sizeof *w);
+    for (int r = 1; r <= d; ++r)
+        for (int i = d; i >= r; --i) {
+            const size_t idx = span - (size_t)d + (size_t)i;
+            const double kl = q->knots[idx], kr = q->knots[idx + (size_t)(d + 1 - r)];
+            const double a = (args[r - 1] - kl) / (kr - kl);
+            for (int c = 0; c < 2; ++c)
+                w[2 * i + c] = (1.0 - a) * w[2 * (i - 1) + c] + a * w[2 * i + c];
+        }
+    out[0] = w[2 * d];
+    out[1] = w[2 * d + 1];
+}
+
+/* The Bezier control points of q on span [knots[span], knots[span + 1]]:
+ * b_m = blossom(t0^(d - m), t1^m). */
+static void span_bezier(const pc_bspline *q, size_t span, double *uv)
+{
+    const int d = q->degree;
+    for (int m = 0; m <= d; ++m) {
+        double args[PC_EXACT_ORDER];
+        for (int r = 0; r < d; ++r)
+            args[r] = r < d - m ? q->knots[span] : q->knots[span + 1];
+        blossom(q, span, args, uv + 2 * m);
+    }
+}
+
+/* de Casteljau at s: the part on [0, s] (keep_right 0) or [s, 1] of the
+ * Bezier curve uv (d + 1 points of dim 2), in place. */
+static void bezier_split(int d, double *uv, double s, int keep_right)
+{
+    double w[2 * PC_EXACT_ORDER], out[2 * PC_EXACT_ORDER];
+    memcpy(w, uv, 2 * (size_t)(d + 1) * sizeof *w);
+    for (int k = 0; k <= d; ++k) {
+        const int at = keep_right ? d - k : k, from = keep_right ? d - k : 0;
+        out[2 * at] = w[2 * from];
+        out[2 * at + 1] = w[2 * from + 1];
+        for (int i = 0; i < d - k; ++i)
+            for (int c = 0; c < 2; ++c)
+                w[2 * i + c] = (1.0 - s) * w[2 * i + c] + s * w[2 * (i + 1) + c];
+    }
+    memcpy(uv, out, 2 * (size_t)(d + 1) * sizeof *uv);
+}
+
+/* The part of uv on [a, b] (0 <= a < b <= 1) into out. */
+static void bezier_part(int d, const double *uv, double a, double b, double *out)
+{
+    memcpy(out, uv, 2 * (size_t)(d + 1) * sizeof *out);
+    if (b < 1.0)
+        bezier_split(d, out, b, 0);
+    if (a > 0.0)
+        bezier_split(d, out, a / b, 1);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Sorts the cuts, keeps those in (gap, 1 - gap) at least gap apart, and
+ * closes them with 0 and 1. Statuses: OK, NO_MEMORY. */
+static projcurve_status close_cuts(projcurve_context *ctx, exact_cuts *c)
+{
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, ctx, c, c->count + 2, 8, "the cuts of an exact composition");
+    if (st != PROJCURVE_OK)
+        return st;
+    qsort(c->items, c->count, sizeof *c->items, cmp_double);
+    size_t n = 0;
+    double last = 0.0;
+    for (size_t i = 0; i < c->count; ++i) {
+        const double s = c->items[i];
+        if (s - last > PC_EXACT_MIN_GAP && s < 1.0 - PC_EXACT_MIN_GAP)
+            c->items[n++] = last = s;
+    }
+    memmove(c->items + 1, c->items, n * sizeof *c->items);
+    c->items[0] = 0.0;
+    c->items[n + 1] = 1.0;
+    c->count = n + 2;
+    return PROJCURVE_OK;
+}
+
+static projcurve_status add_cut(projcurve_context *ctx, exact_cuts *c, double s)
+{
+    projcurve_status st;
+    PC_ARRAY_RESERVE(st, ctx, c, c->count + 1, 8, "the cuts of an exact composition");
+    if (st == PROJCURVE_OK)
+        c->items[c->count++] = s;
+    return st;
+}
+
+/* The crossings of the Bezier uv with the interior knot lines of one
+ * direction (coordinate c, breaks[1 .. spans - 1]). Only lines strictly
+ * between the extreme control coordinates can be crossed. */
+static projcurve_status line_cuts(projcurve_context *ctx, int d, const double *uv, int c,
+                                  const double *breaks, size_t spans, exact_cuts *cuts)
+{
+    double lo = uv[c], hi = uv[c];
+    for (int i = 1; i <= d; ++i) {
+        lo = uv[2 * i + c] < lo ? uv[2 * i + c] : lo;
+        hi = uv[2 * i + c] > hi ? uv[2 * i + c] : hi;
+    }
+    size_t k = 1, top = spans; /* first interior break above lo: binary search */
+    while (k < top) {
+        const size_t m = k + (top - k) / 2;
+        if (breaks[m] <= lo)
+            k = m + 1;
+        else
+            top = m;
+    }
+    projcurve_status st = PROJCURVE_OK;
+    for (; st == PROJCURVE_OK && k < spans && breaks[k] < hi; ++k) {
+        double f[PC_EXACT_ORDER], roots[PC_EXACT_ROOTS_PER_LINE];
+        for (int i = 0; i <= d; ++i)
+            f[i] = uv[2 * i + c] - breaks[k];
+        const size_t n = pc_exact_sign_changes(d, f, roots, PC_EXACT_ROOTS_PER_LINE);
+        if (n == (size_t)-1)
+            return pc_fail(ctx, PROJCURVE_ERR_NOT_CONVERGED,
+                           "a pcurve piece crosses the knot line %s = %.17g more than %d "
+                           "times", c == 0 ? "u" : "v", breaks[k], PC_EXACT_ROOTS_PER_LINE);
+        for (size_t j = 0; st == PROJCURVE_OK && j < n; ++j)
+            st = add_cut(ctx, cuts, roots[j]);
+    }
+    return st;
+}
+
+/* Moves uv by shift and clamps it to the domain: after the shift a pole
+ * lies outside only by rounding (the fit keeps its poles in the domain,
+ * docs/fit.md; the seam joins keep them there, docs/seams.md). */
+static void into_domain(int d, double *uv, const double shift[2], const double dom[4])
+{
+    for (int i = 0; i <= d; ++i)
+        for (int c = 0; c < 2; ++c) {
+            const double x = uv[2 * i + c] + shift[c];
+            const double lo = dom[2 * c], hi = dom[2 * c + 1];
+            uv[2 * i + c] = x < lo ? lo : (x > hi ? hi : x);
+        }
+}
+
+/* The parts of one domain-side stretch uv over [t0, t1]: cut at the knot
+ * lines it crosses, each in the patch holding its middle. */
+static projcurve_status side_parts(projcurve_context *ctx, const pc_patch_grid *g, int d,
+                                   const double *uv, double t0, double t1, exact_parts *parts)
+{
+    exact_cuts cuts = {NULL, 0, 0};
+    projcurve_status st = line_cuts(ctx, d, uv, 0, g->breaks_u, g->spans_u, &cuts);
+    if (st == PROJCURVE_OK)
+        st = line_cuts(ctx, d, uv, 1, g->breaks_v, g->spans_v, &cuts);
+    if (st == PROJCURVE_OK)
+        st = close_cuts(ctx, &cuts);
+    if (st == PROJCURVE_OK)
+        PC_ARRAY_RESERVE(st, ctx, parts, parts->count + cuts.count, 16,
+                         "the parts of an exact composition");
+    for (size_t i = 0; st == PROJCURVE_OK && i + 1 < cuts.count; ++i) {
+        const double a = cuts.items[i], b = cuts.items[i + 1];
+        exact_part *p = &parts->items[parts->count++];
+        bezier_part(d, uv, a, b, p->uv);
+        p->t0 = a == 0.0 ? t0 : t0 + a * (t1 - t0);
+        p->t1 = b == 1.0 ? t1 : t0 + b * (t1 - t0);
+        double mid[2 * PC_EXACT_ORDER];
+        memcpy(mid, p->uv, sizeof mid);
+        bezier_split(d, mid, 0.5, 0);
+        p->patch = pc_patch_grid_locate(g, mid[2 * d], mid[2 * d + 1]);
+    }
+    PC_ARRAY_FREE(&cuts);
+    return st;
+}
+
+/* The parts of q's span `span`: cut at the jumps inside it, each side
+ * moved into the domain by the jumps before it. */
+static projcurve_status span_parts(projcurve_context *ctx, const projcurve_surface *s,
+                                   const pc_branch *b, size_t span, exact_parts *parts)
+{
+    const pc_bspline *q = &b->compact_pcurve;
+    const int d = q->degree;
+    const double t0 = q->knots[span], t1 = q->knots[span + 1];
+    double uv[2 * PC_EXACT_ORDER];
+    span_bezier(q, span, uv);
+    exact_cuts cuts = {NULL, 0, 0};
+    projcurve_status st = PROJCURVE_OK;
+    for (size_t k = 0; st == PROJCURVE_OK && k < b->n_seams; ++k)
+        if (b->seams[k].t > t0 && b->seams[k].t < t1)
+            st = add_cut(ctx, &cuts, (b->seams[k].t - t0) / (t1 - t0));
+    if (st == PROJCURVE_OK)
+        st = close_cuts(ctx, &cuts);
+    for (size_t i = 0; st == PROJCURVE_OK && i + 1 < cuts.count; ++i) {
+        const double a = cuts.items[i], c = cuts.items[i + 1];
+        const double ta = a == 0.0 ? t0 : t0 + a * (t1 - t0);
+        const double tc = c == 1.0 ? t1 : t0 + c * (t1 - t0);
+        double side[2 * PC_EXACT_ORDER], shift[2];
+        bezier_part(d, uv, a, c, side);
+        pc_seam_unwrap_shift(b, 0.5 * (ta + tc), shift);
+        into_domain(d, side, shift, s->nurbs.domain);
+        st = side_parts(ctx, &s->grid, d, side, ta, tc, parts);
+    }
+    PC_ARRAY_FREE(&cuts);
+    return st;
+}
+
+/* The parts composed and joined into out: a piece's homogeneous points
+ * are scaled (which leaves a rational Bezier curve unchanged) so that its
+ * first weight is the previous piece's last, whose pole it shares. */
+static projcurve_status join_parts(projcurve_context *ctx, const projcurve_surface *s, int d,
+                                   const exact_parts *parts, pc_bspline *out)
+{
+    const int n = d * (s->nurbs.deg_u + s->nurbs.deg_v);
+    const size_t nd = (size_t)n, np = parts->count;
+    if (np > (SIZE_MAX / (4 * sizeof(double)) - 2 * nd - 2) / nd)
+        return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "%zu parts of degree %d overflow", np, n);
+    const size_t n_poles = np * nd + 1;
+    out->degree = n;
+    out->dim = 3;
+    out->n_poles = n_poles;
+    out->knots = malloc((n_poles + nd + 1) * sizeof *out->knots);
+    out->poles = malloc(3 * n_poles * sizeof *out->poles);
+    out->weights = s->nurbs.rational ? malloc(n_poles * sizeof *out->weights) : NULL;
+    double *cw = malloc(4 * (nd + 1) * sizeof *cw);
+    if (!out->knots || !out->poles || (s->nurbs.rational && !out->weights) || !cw) {
+        free(cw);
+        pc_bspline_free(out);
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for an exact composition");
+    }
+    double w_join = 1.0;
+    for (size_t i = 0; i < np; ++i) {
+        const exact_part *p = &parts->items[i];
+        pc_compose_poly(&s->grid.patches[p->patch], d, p->uv, cw);
+        const double scale = w_join / cw[3];
+        for (size_t j = i == 0 ? 0 : 1; j <= nd; ++j) {
+            const size_t at = i * nd + j;
+            const double w = cw[4 * j + 3] * scale;
+            for (int c = 0; c < 3; ++c)
+                out->poles[3 * at + (size_t)c] = cw[4 * j + (size_t)c] / cw[4 * j + 3];
+            if (out->weights)
+                out->weights[at] = w;
+        }
+        w_join = cw[4 * nd + 3] * scale;
+        for (size_t j = 0; j < nd; ++j)
+            out->knots[1 + i * nd + j] = p->t0;
+    }
+    out->knots[0] = parts->items[0].t0;
+    for (size_t j = 0; j <= nd; ++j)
+        out->knots[np * nd + 1 + j] = parts->items[np - 1].t1;
+    free(cw);
+    return PROJCURVE_OK;
+}
+
+projcurve_status pc_exact_compose(projcurve_context *ctx, const projcurve_surface *s,
+                                  const pc_branch *b, pc_bspline *out)
+{
+    const pc_bspline *q = &b->compact_pcurve;
+    const int d = q->degree;
+    if (q->weights != NULL || d < 1 || d > PC_COMPOSE_POLY_MAX_DEGREE)
+        return pc_fail(ctx, PROJCURVE_ERR_UNSUPPORTED,
+                       "the compact pcurve is in the curve's own space (degree %d%s): its "
+                       "exact composition is not offered; the pieces joined "
+                       "(projcurve_result_branch_curve) are exact",
+                       d, q->weights != NULL ? ", rational" : "");
+    const int n = d * (s->nurbs.deg_u + s->nurbs.deg_v);
+    if (n > PROJCURVE_MAX_DEGREE)
+        return pc_fail(ctx, PROJCURVE_ERR_UNSUPPORTED,
+                       "the exact composition has degree %d (%d (%d + %d)), above the %d of "
+                       "a NURBS curve; read the pieces with projcurve_result_piece",
+                       n, d, s->nurbs.deg_u, s->nurbs.deg_v, PROJCURVE_MAX_DEGREE);
+    exact_parts parts = {NULL, 0, 0};
+    projcurve_status st = PROJCURVE_OK;
+    for (size_t span = (size_t)d; st == PROJCURVE_OK && span < q->n_poles; ++span)
+        if (q->knots[span] < q->knots[span + 1])
+            st = span_parts(ctx, s, b, span, &parts);
+    if (st == PROJCURVE_OK && parts.count == 0)
+        st = pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT, "the compact pcurve has no span");
+    if (st == PROJCURVE_OK)
+        st = join_parts(ctx, s, d, &parts, out);
+    PC_ARRAY_FREE(&parts);
+    return st;
+}
