@@ -566,6 +566,175 @@ static void test_real_calls(void)
     projcurve_model_destroy(m);
 }
 
+/* ---- stops inside the hits selection and the verification ------------- */
+
+/* Where a call stopped, read from its status and message (the steps after
+ * tracing name themselves there): a stop further into the call for a
+ * larger work limit or a later cancelling callback. */
+typedef enum stop_place { STOP_TRACING, STOP_HITS, STOP_VERIFYING, STOP_NONE } stop_place;
+
+/* The options of the stage tests: polylines only (COMPOSE 0), so that the
+ * cut result compares to the full one branch by branch; MAX_DISTANCE 1
+ * cuts the wave's projection (at distance 1 +- 0.05 from the bumpy graph)
+ * into parts, so the selection has work to do. */
+static projcurve_options *stage_options(void)
+{
+    projcurve_options *o = base_options(CALL_DIRECTIONAL);
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, 0));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_MAX_DISTANCE, 1.0));
+    return o;
+}
+
+/* Runs the stage call with MAX_WORK limit (when cancel_at is 0) or with a
+ * callback cancelling at its cancel_at-th call; *r gets the result. */
+static stop_place run_cut(const fixture *f, long long limit, int cancel_at, projcurve_result **r)
+{
+    projcurve_options *o = stage_options();
+    progress_log *log = calloc(1, sizeof *log);
+    log->cancel_at = cancel_at;
+    if (cancel_at > 0)
+        CHECK_OK(projcurve_options_set_progress(NULL, o, log_progress, log));
+    else
+        CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, limit));
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    const projcurve_status st = run(f, CALL_DIRECTIONAL, o, ctx, r);
+    const char *msg = projcurve_context_message(ctx);
+    stop_place place = STOP_TRACING;
+    if (st == PROJCURVE_OK)
+        place = STOP_NONE;
+    else if (strstr(msg, "while selecting the hits") != NULL)
+        place = STOP_HITS;
+    else if (strstr(msg, "while verifying the result") != NULL)
+        place = STOP_VERIFYING;
+    if (st != PROJCURVE_OK) {
+        CHECK_STATUS(st, cancel_at > 0 ? PROJCURVE_ERR_CANCELLED : PROJCURVE_ERR_LIMIT_REACHED);
+        CHECK(strstr(msg, cancel_at > 0 ? "progress callback" : "work limit") != NULL);
+        CHECK(strstr(msg, "partial result is kept") != NULL);
+    }
+    if (cancel_at > 0)
+        CHECK(log->calls == cancel_at || st == PROJCURVE_OK);
+    projcurve_context_destroy(ctx);
+    free(log);
+    projcurve_options_destroy(o);
+    return place;
+}
+
+static stop_place place_at(const fixture *f, long long limit, int cancel_at)
+{
+    projcurve_result *r = NULL;
+    const stop_place place = run_cut(f, limit, cancel_at, &r);
+    projcurve_result_destroy(r);
+    return place;
+}
+
+/* The smallest limit (or cancelling call) in [1, hi] whose stop is at or
+ * after `place` (hi when none): the stop moves forward with the limit. */
+static long long first_at(const fixture *f, stop_place place, int by_cancel, long long hi)
+{
+    long long lo = 1;
+    while (lo < hi) {
+        const long long mid = lo + (hi - lo) / 2;
+        const stop_place at = by_cancel ? place_at(f, 0, (int)mid) : place_at(f, mid, 0);
+        if (at >= place)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+/* The points (t, u, v) of branch i. */
+static double *points_of(const projcurve_result *r, size_t i, size_t *n, projcurve_branch_end *end)
+{
+    size_t n_pieces = 0;
+    CHECK_OK(projcurve_result_branch_info(NULL, r, i, NULL, NULL, end, n, &n_pieces));
+    double *p = malloc((*n + 1) * 3 * sizeof *p);
+    size_t count = 0;
+    CHECK_OK(projcurve_result_branch_points(NULL, r, i, *n, p, &count));
+    CHECK(count == *n);
+    return p;
+}
+
+/* The documented partial result of a stop in the hits selection or the
+ * verification: the branches of the full result before the stop, bit for
+ * bit; then the one it stopped in, its points a prefix of the full one's
+ * (all of them when the stop came after it), ending with END_LIMIT; no
+ * later branch. Returns the number of branches. */
+static size_t check_prefix(const projcurve_result *cut, const projcurve_result *full)
+{
+    CHECK(projcurve_result_point_dim(cut) == 3);
+    const size_t n = projcurve_result_branch_count(cut);
+    CHECK(n <= projcurve_result_branch_count(full));
+    check_readable(cut, 0.0, 1.0);
+    for (size_t i = 0; i < n && i < projcurve_result_branch_count(full); ++i) {
+        size_t nc = 0, nf = 0;
+        projcurve_branch_end ec, ef;
+        double *pc = points_of(cut, i, &nc, &ec), *pf = points_of(full, i, &nf, &ef);
+        if (i + 1 < n) {
+            CHECK(nc == nf && ec == ef);
+        } else {
+            CHECK(ec == PROJCURVE_END_LIMIT);
+            CHECK(nc >= 2 && nc <= nf);
+        }
+        CHECK(memcmp(pc, pf, (nc < nf ? nc : nf) * 3 * sizeof *pc) == 0);
+        free(pc);
+        free(pf);
+    }
+    return n;
+}
+
+/* A stop inside the hits selection and inside the verification, by
+ * MAX_WORK and by the callback, each found by bisection on the limit /
+ * the cancelling call (the place of the stop is in the message), each
+ * checked against the full result. */
+static void test_stops_after_tracing(const fixture *f)
+{
+    projcurve_options *o = stage_options();
+    projcurve_result *full = NULL;
+    progress_log *log = calloc(1, sizeof *log);
+    CHECK_OK(projcurve_options_set_progress(NULL, o, log_progress, log));
+    CHECK_OK(run(f, CALL_DIRECTIONAL, o, NULL, &full));
+    const int calls = log->calls; /* the last (1) cannot cancel */
+    free(log);
+    projcurve_options_destroy(o);
+    const size_t n_full = projcurve_result_branch_count(full);
+    printf("stage cuts: %zu parts within distance 1, %d progress calls\n", n_full, calls);
+    CHECK(n_full >= 2);
+    for (int by_cancel = 0; by_cancel <= 1; ++by_cancel) {
+        const long long most = by_cancel ? calls : 1LL << 40;
+        const long long done_from = first_at(f, STOP_NONE, by_cancel, most);
+        const long long hits_from = first_at(f, STOP_HITS, by_cancel, done_from);
+        const long long verify_from = first_at(f, STOP_VERIFYING, by_cancel, done_from);
+        printf("  %s: hits from %lld, verification from %lld, complete from %lld\n",
+               by_cancel ? "cancelling call" : "work limit", hits_from, verify_from, done_from);
+        CHECK(hits_from < verify_from && verify_from < done_from);
+        /* the first and the last stop in each stage */
+        const long long at[4] = {hits_from, verify_from - 1, verify_from, done_from - 1};
+        for (int k = 0; k < 4; ++k) {
+            projcurve_result *cut = NULL;
+            const stop_place place = by_cancel ? run_cut(f, 0, (int)at[k], &cut)
+                                               : run_cut(f, at[k], 0, &cut);
+            CHECK(place == (k < 2 ? STOP_HITS : STOP_VERIFYING));
+            CHECK(cut != NULL);
+            if (cut != NULL) {
+                const size_t n = check_prefix(cut, full);
+                /* a stop at a stage's last unit keeps every part but the
+                 * last one's end (the selection closes a part after its
+                 * last unit; the last verified branch may be one item);
+                 * a stop at its first unit keeps nothing: the selection
+                 * has made no part, the verification has verified none.
+                 * (The callback comes every 256 units: it lands anywhere
+                 * in them, and only the prefix holds.) */
+                if (!by_cancel)
+                    CHECK(k % 2 == 1 ? n + 1 >= n_full : n == 0);
+            }
+            projcurve_result_destroy(cut);
+        }
+    }
+    projcurve_result_destroy(full);
+}
+
 int main(void)
 {
     test_module_time_limit();
@@ -596,6 +765,7 @@ int main(void)
         check_time_limit(&f, (call_kind)kind);
     }
     test_implicit_piece_limit(&f);
+    test_stops_after_tracing(&f);
     projcurve_curve_destroy(f.wave);
     projcurve_surface_destroy(f.surface);
     return pc_test_finish("test_api_budget");
