@@ -612,7 +612,15 @@ typedef struct projcurve_result projcurve_result;
  * for MAX_PIECES at that point; stopped while tracing, no branch is
  * composed (none has pieces), the branch being traced ends with
  * PROJCURVE_END_LIMIT (unless it had a single point, which is dropped) and
- * the branches born later in the curve are missing.
+ * the branches born later in the curve are missing; stopped while
+ * selecting the hits (PROJCURVE_OPT_HITS, PROJCURVE_OPT_MAX_DISTANCE), no
+ * branch is composed, the parts kept so far remain, the last ending with
+ * PROJCURVE_END_LIMIT, and the branches not yet selected are missing;
+ * stopped while verifying, the branches verified so far remain, the one
+ * being verified keeps its verified part up to the stop, ending with
+ * PROJCURVE_END_LIMIT, and the later branches are missing. (The message
+ * then names the step: "... while selecting the hits", "... while
+ * verifying the result".)
  * A curve that misses the surface gives OK and a result with no branches.
  * The projection holds in front of the curve, (q - p).Dir >= 0: a branch
  * ends where the curve meets S (PROJCURVE_END_CURVE_CROSSING) and one
