@@ -1311,6 +1311,10 @@ PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
  * face is missing, e.g. not built by the reader, or lies beyond the
  * chaining tolerance) ends its connected curve, and is counted in
  * projcurve_shape_result_open_end_count (see there).
+ * With PROJCURVE_OPT_HITS nearest, a stop by TIME_LIMIT or MAX_WORK while
+ * selecting the nearest hits across the faces keeps the nearest parts of
+ * the face pieces selected so far and drops the others (LIMIT_REACHED, the
+ * message saying "... while selecting the nearest hits across faces").
  * Statuses: those of projcurve_project_face; a failed face alone does not
  * fail the call. Thread-safe for distinct contexts. */
 PROJCURVE_API projcurve_status projcurve_project_shape(projcurve_context *ctx,

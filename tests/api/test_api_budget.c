@@ -14,6 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "brep/face.h"
+#include "brep/shape.h"
 #include "check.h"
 #include "common/budget.h"
 #include "geom/curve.h"
@@ -735,6 +737,139 @@ static void test_stops_after_tracing(const fixture *f)
     projcurve_result_destroy(full);
 }
 
+/* ---- a stop inside the nearest selection across faces ----------------- */
+
+/* The plane O + u A + v B over [0, 1]^2 (bilinear: exact). */
+static projcurve_surface *plane(const double o[3], const double a[3], const double b[3])
+{
+    double net[12];
+    for (int i = 0; i < 3; ++i) {
+        net[i] = o[i];
+        net[3 + i] = o[i] + a[i];
+        net[6 + i] = o[i] + b[i];
+        net[9 + i] = o[i] + a[i] + b[i];
+    }
+    static const double knots[] = {0, 0, 1, 1};
+    projcurve_surface *s = NULL;
+    CHECK_OK(projcurve_surface_create_nurbs(NULL, 1, 1, 2, 2, net, NULL, knots, knots, &s));
+    return s;
+}
+
+/* The whole of s as a face, its sides' edge ids first_id.. */
+static projcurve_face *square_face(const projcurve_surface *s, long first_id)
+{
+    const double c[5][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+    double ctrl[4][4];
+    static const double knots[] = {0, 0, 1, 1};
+    pc_piece_input pieces[4];
+    for (int k = 0; k < 4; ++k) {
+        ctrl[k][0] = c[k][0];
+        ctrl[k][1] = c[k][1];
+        ctrl[k][2] = c[k + 1][0];
+        ctrl[k][3] = c[k + 1][1];
+        pieces[k] = (pc_piece_input){.degree = 1, .n_ctrl = 2, .ctrl = ctrl[k], .knots = knots,
+                                     .edge = first_id + k, .sense = 1, .edge_sense = 1};
+    }
+    const pc_loop_input loop = {.pieces = pieces, .n_pieces = 4, .outer = 1};
+    const pc_face_params params = {.tol_uv = 1e-9, .tol_model = 0.0, .close_tol = 1e-9,
+                                   .same_sense = 1, .id = -1, .kind = "plane", .what = "square"};
+    projcurve_face *f = NULL;
+    CHECK_OK(pc_face_build(NULL, s, &loop, 1, &params, &f));
+    return f;
+}
+
+/* Two walls seen along +x, a front one (x = 1, |y| <= 1/2) and a back one
+ * (x = 3, |y| <= 1), from the line (-1, -0.8 + 1.6 t, 0.1 + 0.2 t): the
+ * nearest hits are the front piece and the back one where the front is
+ * missing (test_shapeproj_nearest checks them). MAX_WORK cuts found by
+ * bisection on the message: at the selection's first unit nothing is
+ * kept; at its last, the front piece (selected first) is whole. */
+static void test_stop_in_shape_nearest(void)
+{
+    const double of[3] = {1, -0.5, -1}, ob[3] = {3, -1, -1};
+    const double y1[3] = {0, 1, 0}, y2[3] = {0, 2, 0}, z2[3] = {0, 0, 2};
+    projcurve_surface *sf = plane(of, y1, z2), *sb = plane(ob, y2, z2);
+    projcurve_face *faces[2] = {square_face(sf, 1), square_face(sb, 5)};
+    const size_t index[2] = {0, 1};
+    projcurve_shape *shape = NULL;
+    CHECK_OK(pc_shape_build(NULL, PROJCURVE_SHAPE_OPEN_SHELL, -1,
+                            (const projcurve_face *const *)faces, index, 2, &shape));
+    const double ctrl[6] = {-1, -0.8, 0.1, -1, 0.8, 0.3}, knots[4] = {0, 0, 1, 1};
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_nurbs(NULL, 1, 2, ctrl, NULL, knots, &c));
+    const double dir[3] = {1, 0, 0};
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_HITS, PROJCURVE_HITS_NEAREST));
+    projcurve_shape_result *full = NULL;
+    CHECK_OK(projcurve_project_shape(NULL, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, o, &full));
+    /* where the stop lands for a limit: 0 before the selection, 1 in it, 2 complete */
+    long long lo_sel = 1, lo_done = 1;
+    for (int pass = 0; pass < 2; ++pass) {
+        long long lo = 1, hi = 1LL << 40;
+        while (lo < hi) {
+            const long long mid = lo + (hi - lo) / 2;
+            CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, mid));
+            projcurve_context *ctx = NULL;
+            CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+            projcurve_shape_result *sr = NULL;
+            const projcurve_status st =
+                projcurve_project_shape(ctx, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, o, &sr);
+            const int at = st == PROJCURVE_OK ? 2
+                           : strstr(projcurve_context_message(ctx), "nearest hits") != NULL ? 1
+                                                                                            : 0;
+            if (at >= pass + 1)
+                hi = mid;
+            else
+                lo = mid + 1;
+            projcurve_shape_result_destroy(sr);
+            projcurve_context_destroy(ctx);
+        }
+        *(pass == 0 ? &lo_sel : &lo_done) = lo;
+    }
+    printf("shape nearest: selection from %lld units, complete from %lld\n", lo_sel, lo_done);
+    CHECK(lo_sel < lo_done);
+    const long long at[2] = {lo_sel, lo_done - 1};
+    for (int k = 0; k < 2; ++k) {
+        CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, at[k]));
+        projcurve_context *ctx = NULL;
+        CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+        projcurve_shape_result *sr = NULL;
+        CHECK_STATUS(projcurve_project_shape(ctx, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, o,
+                                             &sr),
+                     PROJCURVE_ERR_LIMIT_REACHED);
+        CHECK(strstr(projcurve_context_message(ctx),
+                     "work limit of") != NULL &&
+              strstr(projcurve_context_message(ctx),
+                     "while selecting the nearest hits across faces") != NULL);
+        CHECK(sr != NULL);
+        if (sr != NULL) {
+            const projcurve_result *cut_front = NULL, *full_front = NULL, *cut_back = NULL;
+            CHECK_OK(projcurve_shape_result_face(NULL, sr, 0, NULL, &cut_front, NULL, NULL));
+            CHECK_OK(projcurve_shape_result_face(NULL, sr, 1, NULL, &cut_back, NULL, NULL));
+            CHECK_OK(projcurve_shape_result_face(NULL, full, 0, NULL, &full_front, NULL, NULL));
+            const size_t n_front = projcurve_result_branch_count(cut_front);
+            const size_t n_back = projcurve_result_branch_count(cut_back);
+            if (k == 0) {
+                CHECK(n_front == 0 && n_back == 0);
+            } else {
+                CHECK(n_front == 1 && same_result(cut_front, full_front));
+                CHECK(n_back <= 2);
+            }
+        }
+        projcurve_shape_result_destroy(sr);
+        projcurve_context_destroy(ctx);
+    }
+    projcurve_shape_result_destroy(full);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+    pc_shape_free(shape);
+    pc_face_free(faces[0]);
+    pc_face_free(faces[1]);
+    projcurve_surface_destroy(sf);
+    projcurve_surface_destroy(sb);
+}
+
 int main(void)
 {
     test_module_time_limit();
@@ -766,6 +901,7 @@ int main(void)
     }
     test_implicit_piece_limit(&f);
     test_stops_after_tracing(&f);
+    test_stop_in_shape_nearest();
     projcurve_curve_destroy(f.wave);
     projcurve_surface_destroy(f.surface);
     return pc_test_finish("test_api_budget");
