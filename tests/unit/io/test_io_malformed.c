@@ -320,6 +320,34 @@ static void step_cases(void)
                    "twice", "duplicate instance");
     check_replaced(step_text, len, "('',1,1,((", "('',99,1,((", PROJCURVE_ERR_PARSE, "degree",
                    "absurd degree");
+    /* the lexer's syntax errors, each named in the message with its instance */
+    static const char *const p3 = "#3=CARTESIAN_POINT('',(0.,1.,0.));";
+    static const struct {
+        const char *to, *needle;
+    } syntax[] = {
+        {"#3=;", "empty instance"},
+        {"#3=1;", "expected an entity NAME(...)"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,0.)) X;", "text after the entity"},
+        {"#3=(CARTESIAN_POINT('',(0.,1.,0.));", "complex instance is not closed"},
+        {"#3=(1 CARTESIAN_POINT('',(0.,1.,0.)));", "expected a sub-entity NAME(...)"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,@));", "unexpected character"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,#));", "bad reference"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,.F));", "an enumeration is not closed by '.'"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,LENGTH_MEASURE));", "expected '(' after a type name"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,0.);", "a list is not closed"},
+    };
+    for (size_t i = 0; i < sizeof syntax / sizeof syntax[0]; ++i)
+        check_replaced(step_text, len, p3, syntax[i].to, PROJCURVE_ERR_PARSE, syntax[i].needle,
+                       syntax[i].needle);
+    /* a quote doubled inside a string is one quote, not its end */
+    size_t n = 0;
+    char *quoted = replaced(step_text, len, p3, "#3=CARTESIAN_POINT('it''s',(0.,1.,0.));", &n);
+    CHECK(quoted != NULL);
+    if (quoted != NULL) {
+        CHECK_OK(read_mem(quoted, n, &surfaces));
+        CHECK(surfaces == 1);
+    }
+    free(quoted);
 }
 
 static void teapot_cases(void)
