@@ -210,6 +210,37 @@ static void iges_cases(void)
     check_replaced_record(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,",
                    "128,5,1,5,1,0,0,1,0,0,0.00000000000abcdef0E+00,", PROJCURVE_ERR_PARSE,
                    "not a number", "non-numeric knot");
+    /* A real beyond the doubles (1e999) is no number either; a Fortran 'D'
+     * exponent is one, read as 'E'. */
+    check_replaced_record(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,",
+                          "128,5,1,5,1,0,0,1,0,0,1.0000000000000000E+999,", PROJCURVE_ERR_PARSE,
+                          "not a number", "overflowing knot");
+    {
+        size_t n = 0;
+        char *fortran = replaced(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,",
+                                 "128,5,1,5,1,0,0,1,0,0,0.0000000000000000D+00,", &n);
+        CHECK(fortran != NULL);
+        if (fortran != NULL) {
+            CHECK_OK(read_mem(fortran, n, &surfaces));
+            CHECK(surfaces == 1);
+        }
+        free(fortran);
+    }
+    /* Global section delimiters: "1Hx" fields that are unusable (a digit,
+     * '.') or the same for parameters and records. */
+    static const char g1[] = ",,31HOpen CASCADE IGES processor 7.6,22Hsong_yong_example1.igs,";
+    check_replaced_record(text, len, g1,
+                          "1H5,,31HOpen CASCADE IGES processor 7.6,22Hsong_yong_example1.igs,",
+                          PROJCURVE_ERR_PARSE,
+                          "unusable parameter delimiter", "digit as parameter delimiter");
+    check_replaced_record(text, len, g1,
+                          ",1H.,31HOpen CASCADE IGES processor 7.6,22Hsong_yong_example1.igs,",
+                          PROJCURVE_ERR_PARSE,
+                          "unusable record delimiter", "'.' as record delimiter");
+    check_replaced_record(text, len, g1,
+                          "1H;;1H;;31HOpen CASCADE IGES processor 7.6,22Hsong_yong_example1.igs,",
+                          PROJCURVE_ERR_PARSE,
+                          "are both ';'", "one delimiter for both");
     /* Non-numeric directory field. */
     check_replaced_record(text, len, "     128       1       0", "     1x8       1       0",
                    PROJCURVE_ERR_PARSE, "directory field 1", "non-numeric DE field");
