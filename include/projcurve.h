@@ -612,13 +612,20 @@ typedef struct projcurve_result projcurve_result;
  * for MAX_PIECES at that point; stopped while tracing, no branch is
  * composed (none has pieces), the branch being traced ends with
  * PROJCURVE_END_LIMIT (unless it had a single point, which is dropped) and
- * the branches born later in the curve are missing; stopped while fitting
- * the compact forms (after verification), every branch has all its
- * pieces, the branches before the one being fitted keep their compact
+ * the branches born later in the curve are missing; stopped while
+ * selecting the hits (PROJCURVE_OPT_HITS, PROJCURVE_OPT_MAX_DISTANCE), no
+ * branch is composed, the parts kept so far remain, the last ending with
+ * PROJCURVE_END_LIMIT, and the branches not yet selected are missing;
+ * stopped while verifying, the branches verified so far remain, the one
+ * being verified keeps its verified part up to the stop, ending with
+ * PROJCURVE_END_LIMIT, and the later branches are missing; stopped while
+ * fitting the compact forms (after verification), every branch has all
+ * its pieces, the branches before the one being fitted keep their compact
  * forms, and from that one on each has the pieces' pcurves joined as its
  * compact pcurve (projcurve_result_branch_compact_info: not fitted) and
  * no compact 3D curve (projcurve_result_branch_compact_curve:
- * LIMIT_REACHED).
+ * LIMIT_REACHED). (The message names the step: "... while selecting the
+ * hits", "... while verifying the result".)
  * A curve that misses the surface gives OK and a result with no branches.
  * The projection holds in front of the curve, (q - p).Dir >= 0: a branch
  * ends where the curve meets S (PROJCURVE_END_CURVE_CROSSING) and one
@@ -1341,6 +1348,10 @@ PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
  * face is missing, e.g. not built by the reader, or lies beyond the
  * chaining tolerance) ends its connected curve, and is counted in
  * projcurve_shape_result_open_end_count (see there).
+ * With PROJCURVE_OPT_HITS nearest, a stop by TIME_LIMIT or MAX_WORK while
+ * selecting the nearest hits across the faces keeps the nearest parts of
+ * the face pieces selected so far and drops the others (LIMIT_REACHED, the
+ * message saying "... while selecting the nearest hits across faces").
  * Statuses: those of projcurve_project_face; a failed face alone does not
  * fail the call. Thread-safe for distinct contexts. */
 PROJCURVE_API projcurve_status projcurve_project_shape(projcurve_context *ctx,

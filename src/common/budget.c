@@ -67,10 +67,17 @@ static double call_fraction(pc_budget *b, double stage_fraction)
     return b->reported;
 }
 
+void pc_budget_step(pc_budget *b, const char *step)
+{
+    if (b != NULL)
+        b->step = step;
+}
+
 static projcurve_status stop(pc_budget *b, projcurve_status status, int why)
 {
     b->status = status;
     b->stopped_by = why;
+    b->stopped_in = b->step;
     return status;
 }
 
@@ -97,20 +104,22 @@ projcurve_status pc_budget_fail(const pc_budget *b, projcurve_context *ctx)
 {
     if (b == NULL || b->status == PROJCURVE_OK)
         return PROJCURVE_OK;
+    const char *in = b->stopped_in != NULL ? " while " : "";
+    const char *step = b->stopped_in != NULL ? b->stopped_in : "";
     switch (b->stopped_by) {
     case PC_BUDGET_STOP_TIME:
         return pc_fail(ctx, b->status,
-                       "the time limit of %g s was reached; the partial result is kept",
-                       b->time_limit);
+                       "the time limit of %g s was reached%s%s; the partial result is kept",
+                       b->time_limit, in, step);
     case PC_BUDGET_STOP_WORK:
         return pc_fail(ctx, b->status,
-                       "the work limit of %llu units was reached; the partial result is kept",
-                       b->max_work);
+                       "the work limit of %llu units was reached%s%s; the partial result is kept",
+                       b->max_work, in, step);
     default:
         return pc_fail(ctx, b->status,
-                       "the progress callback asked to stop at %.3g of the work; "
+                       "the progress callback asked to stop at %.3g of the work%s%s; "
                        "the partial result is kept",
-                       b->reported);
+                       b->reported, in, step);
     }
 }
 

@@ -57,6 +57,8 @@ struct pc_budget {
     double reported;                /* the last fraction given to the callback */
     projcurve_status status;        /* OK, LIMIT_REACHED or CANCELLED; sticky */
     int stopped_by;                 /* what set status: a PC_BUDGET_STOP_* */
+    const char *step;               /* the named step polling now (NULL: none) */
+    const char *stopped_in;         /* step at the stop, for the message */
 };
 
 enum { PC_BUDGET_STOP_NONE, PC_BUDGET_STOP_TIME, PC_BUDGET_STOP_WORK, PC_BUDGET_STOP_CANCEL };
@@ -77,6 +79,19 @@ void pc_budget_init_clock(pc_budget *b, double time_limit, unsigned long long ma
 
 /* The next stage owns the fractions [lo, hi] of the call (0 <= lo <= hi <= 1). */
 void pc_budget_stage(pc_budget *b, double lo, double hi);
+
+/* The steps after tracing that poll the budget (selecting the hits,
+ * verifying) name themselves for the message of a stop inside them
+ * ("... was reached while <step>"); NULL when the step is over. */
+void pc_budget_step(pc_budget *b, const char *step);
+
+/* The budget b when it has not stopped yet, else NULL: a step that runs
+ * on a partial result (after a stop) runs to its end, bounded by that
+ * result's size, instead of stopping at its first poll. */
+static inline pc_budget *pc_budget_if_running(pc_budget *b)
+{
+    return b != NULL && b->status == PROJCURVE_OK ? b : NULL;
+}
 
 /* The full poll behind pc_budget_check: the status of a stopped budget,
  * else the work limit, the clock, the callback. */

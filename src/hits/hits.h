@@ -35,9 +35,12 @@ projcurve_status pc_hits_distance(const pc_projector *proj, const pc_branch *b, 
  * exact points at its cuts, PROJCURVE_END_OCCLUDED / START_VISIBLE where
  * another branch becomes nearer / stops being nearer, END / START
  * MAX_DISTANCE where its distance reaches D; the original reasons at the
- * original ends. Order: by original branch, then by t. Statuses: OK,
- * NO_MEMORY, CALLBACK; on failure r is left valid (every branch whole or
- * not yet cut). */
+ * original ends. Order: by original branch, then by t. Each exact
+ * distance is a unit of p->budget when it has not stopped on entry.
+ * Statuses: OK, NO_MEMORY, CALLBACK (on these r is left valid: every
+ * branch whole or not yet cut), LIMIT_REACHED and CANCELLED (the budget
+ * stopped the selection: r holds the parts kept so far, the last ending
+ * with PROJCURVE_END_LIMIT; the branches not yet selected are dropped). */
 projcurve_status pc_hits_select(projcurve_context *ctx, const pc_projector *proj,
                                 const pc_params *p, projcurve_result *r);
 

@@ -57,19 +57,30 @@ static projcurve_status push_cut(projcurve_context *ctx, pc_cut_list *l, double 
 static double t_first(const pc_branch *b) { return b->points[0]; }
 static double t_last(const pc_branch *b) { return b->points[3 * (b->n_points - 1)]; }
 
+/* pc_hits_distance as one unit of the call's budget (NULL: none): an
+ * exact point (a corrector call) and two evaluations, the cost of a
+ * traced step. Returns the budget's status once it has stopped. */
+static projcurve_status polled_distance(pc_budget *budget, const pc_projector *proj,
+                                        const pc_branch *b, double t, double uv[2], double *out)
+{
+    const projcurve_status st = pc_budget_check(budget, 0.0);
+    return st != PROJCURVE_OK ? st : pc_hits_distance(proj, b, t, uv, out);
+}
+
 /* g(t) = d_b(t) - d_j(t), or d_b(t) - D without j. */
 typedef struct pc_gap_fn {
     const pc_projector *proj;
     const pc_branch *b, *j;
     double max_distance;
+    pc_budget *budget; /* polled per distance; NULL: none */
 } pc_gap_fn;
 
 static projcurve_status gap_at(const pc_gap_fn *f, double t, double *g)
 {
     double uv[2], db, dj;
-    projcurve_status st = pc_hits_distance(f->proj, f->b, t, uv, &db);
+    projcurve_status st = polled_distance(f->budget, f->proj, f->b, t, uv, &db);
     if (st == PROJCURVE_OK && f->j != NULL)
-        st = pc_hits_distance(f->proj, f->j, t, uv, &dj);
+        st = polled_distance(f->budget, f->proj, f->j, t, uv, &dj);
     if (st == PROJCURVE_OK)
         *g = db - (f->j != NULL ? dj : f->max_distance);
     return st;
@@ -155,11 +166,11 @@ static projcurve_status push_crossings(projcurve_context *ctx, const pc_gap_fn *
  * first n0; the parts appended after them copy those). Ties within tol go
  * to the lower index. */
 static projcurve_status kept_at(const pc_projector *proj, const pc_params *p,
-                                const projcurve_result *r, size_t n0, size_t bi, double t,
-                                double tol, int *keep)
+                                pc_budget *budget, const projcurve_result *r, size_t n0,
+                                size_t bi, double t, double tol, int *keep)
 {
     double uv[2], db;
-    projcurve_status st = pc_hits_distance(proj, &r->branches[bi], t, uv, &db);
+    projcurve_status st = polled_distance(budget, proj, &r->branches[bi], t, uv, &db);
     *keep = st == PROJCURVE_OK && (p->max_distance <= 0.0 || db <= p->max_distance);
     if (p->hits != PROJCURVE_HITS_NEAREST)
         return st;
@@ -168,7 +179,7 @@ static projcurve_status kept_at(const pc_projector *proj, const pc_params *p,
         if (j == bi || o->n_points < 2 || t < t_first(o) || t > t_last(o))
             continue;
         double dj;
-        st = pc_hits_distance(proj, o, t, uv, &dj);
+        st = polled_distance(budget, proj, o, t, uv, &dj);
         if (st == PROJCURVE_OK && (dj < db - tol || (fabs(dj - db) <= tol && j < bi)))
             *keep = 0;
     }
@@ -183,8 +194,9 @@ static int cut_order(const void *x, const void *y)
 
 /* The candidate cuts of branch bi against the first n0 branches, sorted. */
 static projcurve_status gather_cuts(projcurve_context *ctx, const pc_projector *proj,
-                                    const pc_params *p, const projcurve_result *r, size_t n0,
-                                    size_t bi, double tol, pc_cut_list *cuts)
+                                    const pc_params *p, pc_budget *budget,
+                                    const projcurve_result *r, size_t n0, size_t bi, double tol,
+                                    pc_cut_list *cuts)
 {
     const pc_branch *b = &r->branches[bi];
     const double lo = t_first(b), hi = t_last(b);
@@ -193,7 +205,7 @@ static projcurve_status gather_cuts(projcurve_context *ctx, const pc_projector *
     if (st == PROJCURVE_OK)
         st = push_cut(ctx, cuts, hi, 0);
     if (st == PROJCURVE_OK && p->max_distance > 0.0) {
-        const pc_gap_fn f = {proj, b, NULL, p->max_distance};
+        const pc_gap_fn f = {proj, b, NULL, p->max_distance, budget};
         st = push_crossings(ctx, &f, lo, hi, tol, cuts);
     }
     for (size_t j = 0; p->hits == PROJCURVE_HITS_NEAREST && j < n0; ++j) {
@@ -206,7 +218,7 @@ static projcurve_status gather_cuts(projcurve_context *ctx, const pc_projector *
         st = push_cut(ctx, cuts, a, 0);
         if (st == PROJCURVE_OK)
             st = push_cut(ctx, cuts, c, 0);
-        const pc_gap_fn f = {proj, b, o, 0.0};
+        const pc_gap_fn f = {proj, b, o, 0.0, budget};
         if (st == PROJCURVE_OK)
             st = push_crossings(ctx, &f, a, c, tol, cuts);
     }
@@ -261,13 +273,14 @@ static projcurve_status add_part(projcurve_context *ctx, const pc_projector *pro
     return st;
 }
 
-/* The kept parts of branch bi (one of the first n0) appended to r. */
+/* The kept parts of branch bi (one of the first n0) appended to r. When
+ * the budget stops it, the parts appended so far are whole kept parts. */
 static projcurve_status split_branch(projcurve_context *ctx, const pc_projector *proj,
-                                     const pc_params *p, projcurve_result *r, size_t n0,
-                                     size_t bi, double tol)
+                                     const pc_params *p, pc_budget *budget, projcurve_result *r,
+                                     size_t n0, size_t bi, double tol)
 {
     pc_cut_list cuts = {0};
-    projcurve_status st = gather_cuts(ctx, proj, p, r, n0, bi, tol, &cuts);
+    projcurve_status st = gather_cuts(ctx, proj, p, budget, r, n0, bi, tol, &cuts);
     const double min_len = PC_HITS_MIN_PART * (proj->curve->t1 - proj->curve->t0);
     size_t run_start = cuts.count; /* index of the cut opening the current kept run */
     for (size_t k = 0; st == PROJCURVE_OK && k + 1 < cuts.count; ++k) {
@@ -275,7 +288,7 @@ static projcurve_status split_branch(projcurve_context *ctx, const pc_projector 
         if (!(c - a > min_len))
             continue; /* coincident candidates: no interval between */
         int keep = 0;
-        st = kept_at(proj, p, r, n0, bi, 0.5 * (a + c), tol, &keep);
+        st = kept_at(proj, p, budget, r, n0, bi, 0.5 * (a + c), tol, &keep);
         if (st != PROJCURVE_OK)
             break;
         if (keep && run_start == cuts.count)
@@ -298,15 +311,28 @@ projcurve_status pc_hits_select(projcurve_context *ctx, const pc_projector *proj
         return PROJCURVE_OK;
     const double tol = PC_HITS_ROOT_TOL * proj->model_size;
     const size_t n0 = r->n_branches;
+    /* polled only when the call still runs: after a stop in tracing the
+     * selection is made on the partial result, bounded by its size */
+    pc_budget *const budget = pc_budget_if_running(p->budget);
+    pc_budget_step(budget, "selecting the hits");
     projcurve_status st = PROJCURVE_OK;
     for (size_t i = 0; st == PROJCURVE_OK && i < n0; ++i)
         if (r->branches[i].n_points >= 2)
-            st = split_branch(ctx, proj, p, r, n0, i, tol);
-    if (st == PROJCURVE_ERR_CALLBACK)
+            st = split_branch(ctx, proj, p, budget, r, n0, i, tol);
+    pc_budget_step(budget, NULL);
+    const int stopped = st != PROJCURVE_OK && pc_budget_status(budget) == st;
+    if (stopped) {
+        /* the parts kept so far stay, the last ending where the budget
+         * stopped (END_LIMIT); the branches not yet selected go */
+        if (r->n_branches > n0)
+            r->branches[r->n_branches - 1].end = PROJCURVE_END_LIMIT;
+        st = pc_budget_fail(budget, ctx);
+    } else if (st == PROJCURVE_ERR_CALLBACK) {
         st = pc_fail(ctx, st, "the curve callback failed while selecting the hits");
-    /* on failure the parts made so far go, the originals stay */
-    const size_t drop_from = st == PROJCURVE_OK ? 0 : n0;
-    const size_t drop_to = st == PROJCURVE_OK ? n0 : r->n_branches;
+    }
+    /* on another failure the parts made so far go, the originals stay */
+    const size_t drop_from = st == PROJCURVE_OK || stopped ? 0 : n0;
+    const size_t drop_to = st == PROJCURVE_OK || stopped ? n0 : r->n_branches;
     for (size_t i = drop_to; i-- > drop_from;)
         pc_result_remove_branch(r, i);
     return st;

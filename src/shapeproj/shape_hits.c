@@ -27,21 +27,32 @@ static projcurve_status push_cut(projcurve_context *ctx, cut_list *l, double t)
     return st;
 }
 
+/* pc_track_distance as one unit of the call's budget (NULL: none), one
+ * corrector call. */
+static projcurve_status polled_distance(pc_budget *budget, const pc_track *k, double t,
+                                        double uv[2], double *out)
+{
+    const projcurve_status st = pc_budget_check(budget, 0.0);
+    return st != PROJCURVE_OK ? st : pc_track_distance(k, t, uv, out);
+}
+
 /* g(t) = d_a(t) - d_b(t) */
-static projcurve_status gap_at(const pc_track *a, const pc_track *b, double t, double *g)
+static projcurve_status gap_at(pc_budget *budget, const pc_track *a, const pc_track *b, double t,
+                               double *g)
 {
     double uv[2], da, db;
-    projcurve_status st = pc_track_distance(a, t, uv, &da);
+    projcurve_status st = polled_distance(budget, a, t, uv, &da);
     if (st == PROJCURVE_OK)
-        st = pc_track_distance(b, t, uv, &db);
+        st = polled_distance(budget, b, t, uv, &db);
     if (st == PROJCURVE_OK)
         *g = da - db;
     return st;
 }
 
 /* A root of g in [x0, x1] where g(x0) = g0 and g(x1) = g1 differ in sign. */
-static projcurve_status locate(const pc_track *a, const pc_track *b, double x0, double g0,
-                               double x1, double g1, double tol, double *out)
+static projcurve_status locate(pc_budget *budget, const pc_track *a, const pc_track *b,
+                               double x0, double g0, double x1, double g1, double tol,
+                               double *out)
 {
     double x = 0.5 * (x0 + x1);
     for (int it = 0; it < PC_SHAPE_HITS_MAX_ITER; ++it) {
@@ -49,7 +60,7 @@ static projcurve_status locate(const pc_track *a, const pc_track *b, double x0, 
         if (!(x > fmin(x0, x1) && x < fmax(x0, x1)))
             x = 0.5 * (x0 + x1);
         double gx;
-        const projcurve_status st = gap_at(a, b, x, &gx);
+        const projcurve_status st = gap_at(budget, a, b, x, &gx);
         if (st != PROJCURVE_OK)
             return st;
         if (fabs(gx) <= tol || fabs(x1 - x0) <= 1e-15 * (fabs(x0) + fabs(x1) + 1e-300))
@@ -82,9 +93,9 @@ static double next_vertex(const pc_track *a, size_t *ia, const pc_track *b, size
 /* The crossings of d_a - d_b over [lo, hi], sampled at the vertices of
  * both there (each vertex visited once: the loop is bounded by their
  * count), pushed as cuts. */
-static projcurve_status push_crossings(projcurve_context *ctx, const pc_track *a,
-                                       const pc_track *b, double lo, double hi, double tol,
-                                       cut_list *cuts)
+static projcurve_status push_crossings(projcurve_context *ctx, pc_budget *budget,
+                                       const pc_track *a, const pc_track *b, double lo, double hi,
+                                       double tol, cut_list *cuts)
 {
     size_t ia = 0, ib = 0;
     while (ia < a->b->n_points && a->b->points[3 * ia] <= lo)
@@ -92,7 +103,7 @@ static projcurve_status push_crossings(projcurve_context *ctx, const pc_track *a
     while (ib < b->b->n_points && b->b->points[3 * ib] <= lo)
         ++ib;
     double t_prev = lo, g_prev;
-    projcurve_status st = gap_at(a, b, lo, &g_prev);
+    projcurve_status st = gap_at(budget, a, b, lo, &g_prev);
     int done = 0;
     while (st == PROJCURVE_OK && !done) {
         double t = next_vertex(a, &ia, b, &ib);
@@ -103,10 +114,10 @@ static projcurve_status push_crossings(projcurve_context *ctx, const pc_track *a
         if (!(t > t_prev))
             continue;
         double g;
-        st = gap_at(a, b, t, &g);
+        st = gap_at(budget, a, b, t, &g);
         if (st == PROJCURVE_OK && (g < 0.0) != (g_prev < 0.0)) {
             double root;
-            st = locate(a, b, t_prev, g_prev, t, g, tol, &root);
+            st = locate(budget, a, b, t_prev, g_prev, t, g, tol, &root);
             if (st == PROJCURVE_OK)
                 st = push_cut(ctx, cuts, root);
         }
@@ -123,8 +134,9 @@ static int double_order(const void *x, const void *y)
 }
 
 /* The candidate cuts of track i, sorted. */
-static projcurve_status gather_cuts(projcurve_context *ctx, const pc_track *tracks, size_t n,
-                                    size_t i, double tol, double min_len, cut_list *cuts)
+static projcurve_status gather_cuts(projcurve_context *ctx, pc_budget *budget,
+                                    const pc_track *tracks, size_t n, size_t i, double tol,
+                                    double min_len, cut_list *cuts)
 {
     const pc_track *k = &tracks[i];
     projcurve_status st = push_cut(ctx, cuts, k->lo);
@@ -139,7 +151,7 @@ static projcurve_status gather_cuts(projcurve_context *ctx, const pc_track *trac
         if (st == PROJCURVE_OK)
             st = push_cut(ctx, cuts, c);
         if (st == PROJCURVE_OK)
-            st = push_crossings(ctx, k, o, a, c, tol, cuts);
+            st = push_crossings(ctx, budget, k, o, a, c, tol, cuts);
     }
     if (st == PROJCURVE_OK && cuts->count > 0)
         qsort(cuts->items, cuts->count, sizeof *cuts->items, double_order);
@@ -148,17 +160,17 @@ static projcurve_status gather_cuts(projcurve_context *ctx, const pc_track *trac
 
 /* Whether track i is the nearest at t; ties within tol go to the lower
  * index. */
-static projcurve_status nearest_at(const pc_track *tracks, size_t n, size_t i, double t,
-                                   double tol, int *keep)
+static projcurve_status nearest_at(pc_budget *budget, const pc_track *tracks, size_t n, size_t i,
+                                   double t, double tol, int *keep)
 {
     double uv[2], di, dj;
-    projcurve_status st = pc_track_distance(&tracks[i], t, uv, &di);
+    projcurve_status st = polled_distance(budget, &tracks[i], t, uv, &di);
     *keep = st == PROJCURVE_OK;
     for (size_t j = 0; st == PROJCURVE_OK && *keep && j < n; ++j) {
         const pc_track *o = &tracks[j];
         if (j == i || o->whole || t < o->lo || t > o->hi)
             continue;
-        st = pc_track_distance(o, t, uv, &dj);
+        st = polled_distance(budget, o, t, uv, &dj);
         if (st == PROJCURVE_OK && (dj < di - tol || (fabs(dj - di) <= tol && j < i)))
             *keep = 0;
     }
@@ -179,19 +191,21 @@ static projcurve_status push_run(projcurve_context *ctx, const pc_track *k, size
     return pc_span_push(ctx, spans, i, s, e, min_len);
 }
 
-/* The kept runs of track i appended to spans. */
-static projcurve_status kept_runs(projcurve_context *ctx, const pc_track *tracks, size_t n,
-                                  size_t i, double tol, double min_len, pc_span_list *spans)
+/* The kept runs of track i appended to spans (when the budget stops it,
+ * the runs appended so far are whole). */
+static projcurve_status kept_runs(projcurve_context *ctx, pc_budget *budget,
+                                  const pc_track *tracks, size_t n, size_t i, double tol,
+                                  double min_len, pc_span_list *spans)
 {
     cut_list cuts = {0};
-    projcurve_status st = gather_cuts(ctx, tracks, n, i, tol, min_len, &cuts);
+    projcurve_status st = gather_cuts(ctx, budget, tracks, n, i, tol, min_len, &cuts);
     size_t open = cuts.count; /* the cut opening the current run; count: none */
     for (size_t k = 0; st == PROJCURVE_OK && k + 1 < cuts.count; ++k) {
         const double a = cuts.items[k], c = cuts.items[k + 1];
         if (!(c - a > min_len))
             continue;
         int keep = 0;
-        st = nearest_at(tracks, n, i, 0.5 * (a + c), tol, &keep);
+        st = nearest_at(budget, tracks, n, i, 0.5 * (a + c), tol, &keep);
         if (st == PROJCURVE_OK && keep && open == cuts.count)
             open = k;
         if (st == PROJCURVE_OK && !keep && open != cuts.count) {
@@ -218,13 +232,23 @@ projcurve_status pc_shape_hits_select(projcurve_context *ctx, projcurve_shape_re
     const double tol = PC_SHAPE_HITS_ROOT_TOL * model_size;
     const double min_len = PC_SHAPE_HITS_MIN_PART * (curve->t1 - curve->t0);
     pc_span_list spans = {0};
+    /* polled only when the call still runs (a face stopped by a limit
+     * gives a partial result, selected without polling: bounded by it) */
+    pc_budget *const budget = pc_budget_if_running(p->budget);
+    pc_budget_step(budget, "selecting the nearest hits across faces");
     for (size_t i = 0; st == PROJCURVE_OK && i < set.n_tracks; ++i)
         st = set.tracks[i].whole ? pc_span_push(ctx, &spans, i, set.tracks[i].lo,
                                                 set.tracks[i].hi, -1.0)
-                                 : kept_runs(ctx, set.tracks, set.n_tracks, i, tol, min_len,
-                                             &spans);
-    if (st == PROJCURVE_OK)
-        st = pc_parts_rebuild(ctx, r, &set, &spans);
+                                 : kept_runs(ctx, budget, set.tracks, set.n_tracks, i, tol,
+                                             min_len, &spans);
+    pc_budget_step(budget, NULL);
+    /* stopped: the spans kept so far make the result, the pieces not yet
+     * selected are dropped */
+    const int stopped = st != PROJCURVE_OK && pc_budget_status(budget) == st;
+    if (st == PROJCURVE_OK || stopped) {
+        const projcurve_status rs = pc_parts_rebuild(ctx, r, &set, &spans);
+        st = rs != PROJCURVE_OK ? rs : stopped ? pc_budget_fail(budget, ctx) : st;
+    }
     if (st == PROJCURVE_ERR_CALLBACK)
         st = pc_fail(ctx, st, "the curve callback failed while selecting the nearest hits");
     PC_ARRAY_FREE(&spans);

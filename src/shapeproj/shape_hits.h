@@ -49,8 +49,11 @@
 
 /* Replaces the results and trims of r's parts (each face projected with
  * every hit and clipped) by the nearest parts across all of them.
- * model_size scales the tolerance. Statuses: OK, NO_MEMORY, CALLBACK (the
- * curve callback failed); on failure r is left as it was. */
+ * model_size scales the tolerance. Each exact distance is a unit of
+ * p->budget when it has not stopped on entry. Statuses: OK, NO_MEMORY,
+ * CALLBACK (the curve callback failed; on these r is left as it was),
+ * LIMIT_REACHED and CANCELLED (the budget stopped the selection: r holds
+ * the nearest parts of the pieces selected so far, the others dropped). */
 projcurve_status pc_shape_hits_select(projcurve_context *ctx, projcurve_shape_result *r,
                                       const projcurve_curve *curve,
                                       const pc_projection_spec *spec, const pc_params *p,

@@ -155,8 +155,13 @@ projcurve_status pc_shape_project(projcurve_context *ctx, const projcurve_shape 
             kept = part->status;
     }
     free(sel);
-    if (st == PROJCURVE_OK && nearest)
+    if (st == PROJCURVE_OK && nearest) {
         st = pc_shape_hits_select(ctx, r, curve, spec, p, model_size);
+        if (st != PROJCURVE_OK && st == pc_budget_status(p->budget)) {
+            kept = st; /* stopped by the budget: the parts selected so far */
+            st = PROJCURVE_OK;
+        }
+    }
     if (st == PROJCURVE_OK) {
         r->chain_tol = chain_tolerance(shape, r, model_size);
         st = pc_chain_pieces(ctx, r, shape, curve, spec);

@@ -57,9 +57,22 @@ static int is_noise(const pc_projector *proj, const pc_branch *b)
     return 1;
 }
 
+/* (a) for vertex k of b (of n items): the start of piece k (the end of
+ * the last one for k = n), or polyline point k. */
+static unsigned char vertex_ok(pc_verifier *v, const pc_branch *b, size_t k, size_t n)
+{
+    if (b->n_pieces == 0)
+        return (unsigned char)pc_verify_vertex(v, b->points[3 * k], b->points[3 * k + 1],
+                                               b->points[3 * k + 2]);
+    const pc_piece *p = &b->pieces[k < n ? k : n - 1];
+    return (unsigned char)(k < n ? pc_verify_vertex(v, p->t0, p->uv[0], p->uv[1])
+                                 : pc_verify_vertex(v, p->t1, p->uv[2], p->uv[3]));
+}
+
 /* Marks in keep[k] whether item k of b passes: piece k, with both its end
  * vertices, or polyline segment k with both its vertices. *n_items gets the
- * item count; returns 1 when every item passes. ok is scratch for the
+ * item count, or the count checked when the budget stopped the check (a
+ * unit per item); returns 1 when every item passes. ok is scratch for the
  * items + 1 vertices. */
 static int check_branch(pc_verifier *v, const pc_branch *b, unsigned char *keep,
                         unsigned char *ok, size_t *n_items)
@@ -67,22 +80,14 @@ static int check_branch(pc_verifier *v, const pc_branch *b, unsigned char *keep,
     const int pieces = b->n_pieces > 0;
     const size_t n = pieces ? b->n_pieces : b->n_points - 1;
     *n_items = n;
-    for (size_t k = 0; k <= n; ++k) {
-        double t, u, w;
-        if (pieces) {
-            const pc_piece *p = &b->pieces[k < n ? k : n - 1];
-            t = k < n ? p->t0 : p->t1;
-            u = p->uv[k < n ? 0 : 2];
-            w = p->uv[k < n ? 1 : 3];
-        } else {
-            t = b->points[3 * k];
-            u = b->points[3 * k + 1];
-            w = b->points[3 * k + 2];
-        }
-        ok[k] = (unsigned char)pc_verify_vertex(v, t, u, w);
-    }
+    ok[0] = vertex_ok(v, b, 0, n);
     int all = 1;
     for (size_t k = 0; k < n; ++k) {
+        if (pc_budget_check(v->budget, 0.0) != PROJCURVE_OK) {
+            *n_items = k;
+            return 0;
+        }
+        ok[k + 1] = vertex_ok(v, b, k + 1, n);
         keep[k] = ok[k] && ok[k + 1] &&
                   (!pieces || pc_verify_piece(v, &b->pieces[k], k > 0 ? &b->pieces[k - 1] : NULL));
         all &= keep[k];
@@ -176,14 +181,17 @@ static void kept_span(const pc_projector *proj, const pc_branch *b, const unsign
 
 /* Replaces branch i by its runs of kept items (appended to r), the cuts
  * ending FAILED and starting FAILED; a branch with no run is dropped and
- * counted as a failure. The original is removed. */
+ * counted as a failure. The original is removed. stopped: only the first
+ * n items were checked (the budget stopped the check): the last run ends
+ * with END_LIMIT, and a branch with no run is not a failure. */
 static projcurve_status cut_branch(projcurve_context *ctx, const pc_projector *proj, double radius,
                                    projcurve_result *r, size_t i, const unsigned char *keep,
-                                   size_t n)
+                                   size_t n, int stopped)
 {
     projcurve_status st = PROJCURVE_OK;
-    size_t runs = 0, first, last;
-    kept_span(proj, &r->branches[i], keep, n, radius, &first, &last);
+    size_t runs = 0, first = 0, last = 0;
+    if (n > 0) /* none when the budget stopped before the first item */
+        kept_span(proj, &r->branches[i], keep, n, radius, &first, &last);
     for (size_t lo = first; lo < last && st == PROJCURVE_OK;) {
         if (!keep[lo]) {
             ++lo;
@@ -194,12 +202,13 @@ static projcurve_status cut_branch(projcurve_context *ctx, const pc_projector *p
             ++hi;
         const projcurve_branch_start start =
             lo == first ? r->branches[i].start : PROJCURVE_START_FAILED;
-        const projcurve_branch_end end = hi + 1 == last ? r->branches[i].end : PROJCURVE_END_FAILED;
+        const projcurve_branch_end last_end = stopped ? PROJCURVE_END_LIMIT : r->branches[i].end;
+        const projcurve_branch_end end = hi + 1 == last ? last_end : PROJCURVE_END_FAILED;
         st = copy_run(ctx, r, i, lo, hi, start, end);
         ++runs;
         lo = hi + 1;
     }
-    if (st == PROJCURVE_OK && runs == 0)
+    if (st == PROJCURVE_OK && runs == 0 && !stopped)
         ++r->failures_dropped;
     pc_result_remove_branch(r, i);
     return st;
@@ -216,8 +225,11 @@ projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *pr
     const double diag = hypot(dom[1] - dom[0], dom[3] - dom[2]);
     /* the exact points measured against are placed to the corrector's
      * tolerance: the distance is known to that, and no better */
+    /* polled only when the call still runs: after a stop the partial
+     * result is verified whole, bounded by its size */
     pc_verifier v = {proj, o->tol_distance + proj->newton_tol, pc_verify_vertex_tolerance(proj),
-                     1e-10 * diag, 1e-13 * diag, 0, 0.0, 0.0};
+                     1e-10 * diag, 1e-13 * diag, 0, 0.0, 0.0, pc_budget_if_running(o->budget)};
+    pc_budget_step(v.budget, "verifying the result");
     unsigned char *keep = NULL, *ok = NULL;
     size_t cap_keep = 0, cap_ok = 0;
     projcurve_status st = PROJCURVE_OK;
@@ -247,9 +259,17 @@ projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *pr
             ++i;
             continue;
         }
-        st = cut_branch(ctx, proj, 0.5 * o->tol_distance, r, i, keep, n);
+        const int stopped = pc_budget_status(v.budget) != PROJCURVE_OK;
+        st = cut_branch(ctx, proj, 0.5 * o->tol_distance, r, i, keep, n, stopped);
         --n_checked;
+        if (st == PROJCURVE_OK && stopped) {
+            /* only verified branches are returned: those not yet checked go */
+            while (n_checked > i)
+                pc_result_remove_branch(r, --n_checked);
+            st = pc_budget_fail(v.budget, ctx);
+        }
     }
+    pc_budget_step(v.budget, NULL);
     free(keep);
     free(ok);
     if (o->compose) {

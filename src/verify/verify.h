@@ -30,7 +30,12 @@
  * drops branches that are shorter than the model's precision (noise of the
  * seeding, not a curve) and, while composing, branches left without pieces
  * (counted in r->failures_dropped, as failures), except those a size limit
- * stopped (END_LIMIT). Statuses: OK, NO_MEMORY. */
+ * stopped (END_LIMIT). Each item checked (a piece or a segment) is a unit
+ * of o->budget when it has not stopped on entry. Statuses: OK, NO_MEMORY,
+ * LIMIT_REACHED and CANCELLED (the budget stopped the pass: the branches
+ * verified so far stay, the one being checked keeps its verified runs
+ * before the stop, the last ending with PROJCURVE_END_LIMIT, and the
+ * branches not yet checked are dropped). */
 projcurve_status pc_verify_result(projcurve_context *ctx, const pc_projector *proj,
                                   const pc_params *o, projcurve_result *r);
 

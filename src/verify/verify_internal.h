@@ -5,6 +5,7 @@
 #ifndef PC_VERIFY_INTERNAL_H
 #define PC_VERIFY_INTERNAL_H
 
+#include "common/budget.h"
 #include "trace/projector.h"
 #include "trace/result.h"
 
@@ -16,6 +17,7 @@ typedef struct pc_verifier {
     double min_move;   /* (u, v) distance that counts as none */
     size_t samples;    /* interior samples of the piece just checked */
     double worst_vertex, worst_piece; /* largest residual and distance met */
+    pc_budget *budget; /* polled once per item checked; NULL: none */
 } pc_verifier;
 
 /* The vertex tolerance of (a) for the projector: see verify_piece.c. */

@@ -212,6 +212,25 @@ static void test_result(void)
                 PROJCURVE_ERR_NULL_ARGUMENT, "surface");
     CHECK_FAILS(projcurve_result_piece(ctx, traced_only, 0, 0, &degree, NULL, NULL, NULL, NULL),
                 PROJCURVE_ERR_INDEX, "piece 0 of 0");
+    /* the seam records: a line over a plane crosses no seam */
+    size_t seams = 99;
+    CHECK_FAILS(projcurve_result_branch_seam_count(ctx, NULL, 0, &seams),
+                PROJCURVE_ERR_NULL_ARGUMENT, "result");
+    CHECK_FAILS(projcurve_result_branch_seam_count(ctx, result, 0, NULL),
+                PROJCURVE_ERR_NULL_ARGUMENT, "count");
+    CHECK_FAILS(projcurve_result_branch_seam_count(ctx, result, n, &seams), PROJCURVE_ERR_INDEX,
+                "branch 1 of 1");
+    CHECK(seams == 99);
+    CHECK_OK(projcurve_result_branch_seam_count(ctx, result, 0, &seams));
+    CHECK(seams == 0);
+    double st = -1.0, du = -1.0, dv = -1.0;
+    CHECK_FAILS(projcurve_result_branch_seam(ctx, result, 0, 0, &st, &du, &dv),
+                PROJCURVE_ERR_INDEX, "seam 0 of 0 on branch 0");
+    CHECK_FAILS(projcurve_result_branch_seam(ctx, result, n, 0, &st, &du, &dv),
+                PROJCURVE_ERR_INDEX, "branch 1 of 1");
+    CHECK_FAILS(projcurve_result_branch_seam(ctx, NULL, 0, 0, &st, &du, &dv),
+                PROJCURVE_ERR_NULL_ARGUMENT, "result");
+    CHECK(st == -1.0 && du == -1.0 && dv == -1.0);
     CHECK(c == SENTINEL);
     projcurve_result_destroy(NULL);
 }

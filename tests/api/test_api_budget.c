@@ -15,6 +15,8 @@
 #include <string.h>
 
 #include "api/project.h"
+#include "brep/face.h"
+#include "brep/shape.h"
 #include "check.h"
 #include "common/budget.h"
 #include "directional/directional_project.h"
@@ -703,6 +705,306 @@ done:
     projcurve_result_destroy(full);
     projcurve_options_destroy(o);
     projcurve_curve_destroy(c);
+/* ---- stops inside the hits selection and the verification ------------- */
+
+/* Where a call stopped, read from its status and message (the steps after
+ * tracing name themselves there): a stop further into the call for a
+ * larger work limit or a later cancelling callback. */
+typedef enum stop_place { STOP_TRACING, STOP_HITS, STOP_VERIFYING, STOP_NONE } stop_place;
+
+/* The options of the stage tests: polylines only (COMPOSE 0), so that the
+ * cut result compares to the full one branch by branch; MAX_DISTANCE 1
+ * cuts the wave's projection (at distance 1 +- 0.05 from the bumpy graph)
+ * into parts, so the selection has work to do. */
+static projcurve_options *stage_options(void)
+{
+    projcurve_options *o = base_options(CALL_DIRECTIONAL);
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_COMPOSE, 0));
+    CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_MAX_DISTANCE, 1.0));
+    return o;
+}
+
+/* Runs the stage call with MAX_WORK limit (when cancel_at is 0) or with a
+ * callback cancelling at its cancel_at-th call; *r gets the result. */
+static stop_place run_cut(const fixture *f, long long limit, int cancel_at, projcurve_result **r)
+{
+    projcurve_options *o = stage_options();
+    progress_log *log = calloc(1, sizeof *log);
+    log->cancel_at = cancel_at;
+    if (cancel_at > 0)
+        CHECK_OK(projcurve_options_set_progress(NULL, o, log_progress, log));
+    else
+        CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, limit));
+    projcurve_context *ctx = NULL;
+    CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    const projcurve_status st = run(f, CALL_DIRECTIONAL, o, ctx, r);
+    const char *msg = projcurve_context_message(ctx);
+    stop_place place = STOP_TRACING;
+    if (st == PROJCURVE_OK)
+        place = STOP_NONE;
+    else if (strstr(msg, "while selecting the hits") != NULL)
+        place = STOP_HITS;
+    else if (strstr(msg, "while verifying the result") != NULL)
+        place = STOP_VERIFYING;
+    if (st != PROJCURVE_OK) {
+        CHECK_STATUS(st, cancel_at > 0 ? PROJCURVE_ERR_CANCELLED : PROJCURVE_ERR_LIMIT_REACHED);
+        CHECK(strstr(msg, cancel_at > 0 ? "progress callback" : "work limit") != NULL);
+        CHECK(strstr(msg, "partial result is kept") != NULL);
+    }
+    if (cancel_at > 0)
+        CHECK(log->calls == cancel_at || st == PROJCURVE_OK);
+    projcurve_context_destroy(ctx);
+    free(log);
+    projcurve_options_destroy(o);
+    return place;
+}
+
+static stop_place place_at(const fixture *f, long long limit, int cancel_at)
+{
+    projcurve_result *r = NULL;
+    const stop_place place = run_cut(f, limit, cancel_at, &r);
+    projcurve_result_destroy(r);
+    return place;
+}
+
+/* The smallest limit (or cancelling call) in [1, hi] whose stop is at or
+ * after `place` (hi when none): the stop moves forward with the limit. */
+static long long first_at(const fixture *f, stop_place place, int by_cancel, long long hi)
+{
+    long long lo = 1;
+    while (lo < hi) {
+        const long long mid = lo + (hi - lo) / 2;
+        const stop_place at = by_cancel ? place_at(f, 0, (int)mid) : place_at(f, mid, 0);
+        if (at >= place)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+/* The points (t, u, v) of branch i. */
+static double *points_of(const projcurve_result *r, size_t i, size_t *n, projcurve_branch_end *end)
+{
+    size_t n_pieces = 0;
+    CHECK_OK(projcurve_result_branch_info(NULL, r, i, NULL, NULL, end, n, &n_pieces));
+    double *p = malloc((*n + 1) * 3 * sizeof *p);
+    size_t count = 0;
+    CHECK_OK(projcurve_result_branch_points(NULL, r, i, *n, p, &count));
+    CHECK(count == *n);
+    return p;
+}
+
+/* The documented partial result of a stop in the hits selection or the
+ * verification: the branches of the full result before the stop, bit for
+ * bit; then the one it stopped in, its points a prefix of the full one's
+ * (all of them when the stop came after it), ending with END_LIMIT; no
+ * later branch. Returns the number of branches. */
+static size_t check_prefix(const projcurve_result *cut, const projcurve_result *full)
+{
+    CHECK(projcurve_result_point_dim(cut) == 3);
+    const size_t n = projcurve_result_branch_count(cut);
+    CHECK(n <= projcurve_result_branch_count(full));
+    check_readable(cut, 0.0, 1.0);
+    for (size_t i = 0; i < n && i < projcurve_result_branch_count(full); ++i) {
+        size_t nc = 0, nf = 0;
+        projcurve_branch_end ec, ef;
+        double *pc = points_of(cut, i, &nc, &ec), *pf = points_of(full, i, &nf, &ef);
+        if (i + 1 < n) {
+            CHECK(nc == nf && ec == ef);
+        } else {
+            CHECK(ec == PROJCURVE_END_LIMIT);
+            CHECK(nc >= 2 && nc <= nf);
+        }
+        CHECK(memcmp(pc, pf, (nc < nf ? nc : nf) * 3 * sizeof *pc) == 0);
+        free(pc);
+        free(pf);
+    }
+    return n;
+}
+
+/* A stop inside the hits selection and inside the verification, by
+ * MAX_WORK and by the callback, each found by bisection on the limit /
+ * the cancelling call (the place of the stop is in the message), each
+ * checked against the full result. */
+static void test_stops_after_tracing(const fixture *f)
+{
+    projcurve_options *o = stage_options();
+    projcurve_result *full = NULL;
+    progress_log *log = calloc(1, sizeof *log);
+    CHECK_OK(projcurve_options_set_progress(NULL, o, log_progress, log));
+    CHECK_OK(run(f, CALL_DIRECTIONAL, o, NULL, &full));
+    const int calls = log->calls; /* the last (1) cannot cancel */
+    free(log);
+    projcurve_options_destroy(o);
+    const size_t n_full = projcurve_result_branch_count(full);
+    printf("stage cuts: %zu parts within distance 1, %d progress calls\n", n_full, calls);
+    CHECK(n_full >= 2);
+    for (int by_cancel = 0; by_cancel <= 1; ++by_cancel) {
+        const long long most = by_cancel ? calls : 1LL << 40;
+        const long long done_from = first_at(f, STOP_NONE, by_cancel, most);
+        const long long hits_from = first_at(f, STOP_HITS, by_cancel, done_from);
+        const long long verify_from = first_at(f, STOP_VERIFYING, by_cancel, done_from);
+        printf("  %s: hits from %lld, verification from %lld, complete from %lld\n",
+               by_cancel ? "cancelling call" : "work limit", hits_from, verify_from, done_from);
+        CHECK(hits_from < verify_from && verify_from < done_from);
+        /* the first and the last stop in each stage */
+        const long long at[4] = {hits_from, verify_from - 1, verify_from, done_from - 1};
+        for (int k = 0; k < 4; ++k) {
+            projcurve_result *cut = NULL;
+            const stop_place place = by_cancel ? run_cut(f, 0, (int)at[k], &cut)
+                                               : run_cut(f, at[k], 0, &cut);
+            CHECK(place == (k < 2 ? STOP_HITS : STOP_VERIFYING));
+            CHECK(cut != NULL);
+            if (cut != NULL) {
+                const size_t n = check_prefix(cut, full);
+                /* a stop at a stage's last unit keeps every part but the
+                 * last one's end (the selection closes a part after its
+                 * last unit; the last verified branch may be one item);
+                 * a stop at its first unit keeps nothing: the selection
+                 * has made no part, the verification has verified none.
+                 * (The callback comes every 256 units: it lands anywhere
+                 * in them, and only the prefix holds.) */
+                if (!by_cancel)
+                    CHECK(k % 2 == 1 ? n + 1 >= n_full : n == 0);
+            }
+            projcurve_result_destroy(cut);
+        }
+    }
+    projcurve_result_destroy(full);
+}
+
+/* ---- a stop inside the nearest selection across faces ----------------- */
+
+/* The plane O + u A + v B over [0, 1]^2 (bilinear: exact). */
+static projcurve_surface *plane(const double o[3], const double a[3], const double b[3])
+{
+    double net[12];
+    for (int i = 0; i < 3; ++i) {
+        net[i] = o[i];
+        net[3 + i] = o[i] + a[i];
+        net[6 + i] = o[i] + b[i];
+        net[9 + i] = o[i] + a[i] + b[i];
+    }
+    static const double knots[] = {0, 0, 1, 1};
+    projcurve_surface *s = NULL;
+    CHECK_OK(projcurve_surface_create_nurbs(NULL, 1, 1, 2, 2, net, NULL, knots, knots, &s));
+    return s;
+}
+
+/* The whole of s as a face, its sides' edge ids first_id.. */
+static projcurve_face *square_face(const projcurve_surface *s, long first_id)
+{
+    const double c[5][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+    double ctrl[4][4];
+    static const double knots[] = {0, 0, 1, 1};
+    pc_piece_input pieces[4];
+    for (int k = 0; k < 4; ++k) {
+        ctrl[k][0] = c[k][0];
+        ctrl[k][1] = c[k][1];
+        ctrl[k][2] = c[k + 1][0];
+        ctrl[k][3] = c[k + 1][1];
+        pieces[k] = (pc_piece_input){.degree = 1, .n_ctrl = 2, .ctrl = ctrl[k], .knots = knots,
+                                     .edge = first_id + k, .sense = 1, .edge_sense = 1};
+    }
+    const pc_loop_input loop = {.pieces = pieces, .n_pieces = 4, .outer = 1};
+    const pc_face_params params = {.tol_uv = 1e-9, .tol_model = 0.0, .close_tol = 1e-9,
+                                   .same_sense = 1, .id = -1, .kind = "plane", .what = "square"};
+    projcurve_face *f = NULL;
+    CHECK_OK(pc_face_build(NULL, s, &loop, 1, &params, &f));
+    return f;
+}
+
+/* Two walls seen along +x, a front one (x = 1, |y| <= 1/2) and a back one
+ * (x = 3, |y| <= 1), from the line (-1, -0.8 + 1.6 t, 0.1 + 0.2 t): the
+ * nearest hits are the front piece and the back one where the front is
+ * missing (test_shapeproj_nearest checks them). MAX_WORK cuts found by
+ * bisection on the message: at the selection's first unit nothing is
+ * kept; at its last, the front piece (selected first) is whole. */
+static void test_stop_in_shape_nearest(void)
+{
+    const double of[3] = {1, -0.5, -1}, ob[3] = {3, -1, -1};
+    const double y1[3] = {0, 1, 0}, y2[3] = {0, 2, 0}, z2[3] = {0, 0, 2};
+    projcurve_surface *sf = plane(of, y1, z2), *sb = plane(ob, y2, z2);
+    projcurve_face *faces[2] = {square_face(sf, 1), square_face(sb, 5)};
+    const size_t index[2] = {0, 1};
+    projcurve_shape *shape = NULL;
+    CHECK_OK(pc_shape_build(NULL, PROJCURVE_SHAPE_OPEN_SHELL, -1,
+                            (const projcurve_face *const *)faces, index, 2, &shape));
+    const double ctrl[6] = {-1, -0.8, 0.1, -1, 0.8, 0.3}, knots[4] = {0, 0, 1, 1};
+    projcurve_curve *c = NULL;
+    CHECK_OK(projcurve_curve_create_nurbs(NULL, 1, 2, ctrl, NULL, knots, &c));
+    const double dir[3] = {1, 0, 0};
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_HITS, PROJCURVE_HITS_NEAREST));
+    projcurve_shape_result *full = NULL;
+    CHECK_OK(projcurve_project_shape(NULL, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, o, &full));
+    /* where the stop lands for a limit: 0 before the selection, 1 in it, 2 complete */
+    long long lo_sel = 1, lo_done = 1;
+    for (int pass = 0; pass < 2; ++pass) {
+        long long lo = 1, hi = 1LL << 40;
+        while (lo < hi) {
+            const long long mid = lo + (hi - lo) / 2;
+            CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, mid));
+            projcurve_context *ctx = NULL;
+            CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+            projcurve_shape_result *sr = NULL;
+            const projcurve_status st =
+                projcurve_project_shape(ctx, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, o, &sr);
+            const int at = st == PROJCURVE_OK ? 2
+                           : strstr(projcurve_context_message(ctx), "nearest hits") != NULL ? 1
+                                                                                            : 0;
+            if (at >= pass + 1)
+                hi = mid;
+            else
+                lo = mid + 1;
+            projcurve_shape_result_destroy(sr);
+            projcurve_context_destroy(ctx);
+        }
+        *(pass == 0 ? &lo_sel : &lo_done) = lo;
+    }
+    printf("shape nearest: selection from %lld units, complete from %lld\n", lo_sel, lo_done);
+    CHECK(lo_sel < lo_done);
+    const long long at[2] = {lo_sel, lo_done - 1};
+    for (int k = 0; k < 2; ++k) {
+        CHECK_OK(projcurve_options_set_int(NULL, o, PROJCURVE_OPT_MAX_WORK, at[k]));
+        projcurve_context *ctx = NULL;
+        CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+        projcurve_shape_result *sr = NULL;
+        CHECK_STATUS(projcurve_project_shape(ctx, shape, c, PROJCURVE_PROJECT_DIRECTIONAL, dir, o,
+                                             &sr),
+                     PROJCURVE_ERR_LIMIT_REACHED);
+        CHECK(strstr(projcurve_context_message(ctx),
+                     "work limit of") != NULL &&
+              strstr(projcurve_context_message(ctx),
+                     "while selecting the nearest hits across faces") != NULL);
+        CHECK(sr != NULL);
+        if (sr != NULL) {
+            const projcurve_result *cut_front = NULL, *full_front = NULL, *cut_back = NULL;
+            CHECK_OK(projcurve_shape_result_face(NULL, sr, 0, NULL, &cut_front, NULL, NULL));
+            CHECK_OK(projcurve_shape_result_face(NULL, sr, 1, NULL, &cut_back, NULL, NULL));
+            CHECK_OK(projcurve_shape_result_face(NULL, full, 0, NULL, &full_front, NULL, NULL));
+            const size_t n_front = projcurve_result_branch_count(cut_front);
+            const size_t n_back = projcurve_result_branch_count(cut_back);
+            if (k == 0) {
+                CHECK(n_front == 0 && n_back == 0);
+            } else {
+                CHECK(n_front == 1 && same_result(cut_front, full_front));
+                CHECK(n_back <= 2);
+            }
+        }
+        projcurve_shape_result_destroy(sr);
+        projcurve_context_destroy(ctx);
+    }
+    projcurve_shape_result_destroy(full);
+    projcurve_options_destroy(o);
+    projcurve_curve_destroy(c);
+    pc_shape_free(shape);
+    pc_face_free(faces[0]);
+    pc_face_free(faces[1]);
+    projcurve_surface_destroy(sf);
+    projcurve_surface_destroy(sb);
 }
 
 int main(void)
@@ -736,6 +1038,8 @@ int main(void)
     }
     test_implicit_piece_limit(&f);
     test_cut_in_fit(f.surface);
+    test_stops_after_tracing(&f);
+    test_stop_in_shape_nearest();
     projcurve_curve_destroy(f.wave);
     projcurve_surface_destroy(f.surface);
     return pc_test_finish("test_api_budget");

@@ -210,6 +210,37 @@ static void iges_cases(void)
     check_replaced_record(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,",
                    "128,5,1,5,1,0,0,1,0,0,0.00000000000abcdef0E+00,", PROJCURVE_ERR_PARSE,
                    "not a number", "non-numeric knot");
+    /* A real beyond the doubles (1e999) is no number either; a Fortran 'D'
+     * exponent is one, read as 'E'. */
+    check_replaced_record(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,",
+                          "128,5,1,5,1,0,0,1,0,0,1.0000000000000000E+999,", PROJCURVE_ERR_PARSE,
+                          "not a number", "overflowing knot");
+    {
+        size_t n = 0;
+        char *fortran = replaced(text, len, "128,5,1,5,1,0,0,1,0,0,0.0000000000000000E+00,",
+                                 "128,5,1,5,1,0,0,1,0,0,0.0000000000000000D+00,", &n);
+        CHECK(fortran != NULL);
+        if (fortran != NULL) {
+            CHECK_OK(read_mem(fortran, n, &surfaces));
+            CHECK(surfaces == 1);
+        }
+        free(fortran);
+    }
+    /* Global section delimiters: "1Hx" fields that are unusable (a digit,
+     * '.') or the same for parameters and records. */
+    static const char g1[] = ",,31HOpen CASCADE IGES processor 7.6,22Hsong_yong_example1.igs,";
+    check_replaced_record(text, len, g1,
+                          "1H5,,31HOpen CASCADE IGES processor 7.6,22Hsong_yong_example1.igs,",
+                          PROJCURVE_ERR_PARSE,
+                          "unusable parameter delimiter", "digit as parameter delimiter");
+    check_replaced_record(text, len, g1,
+                          ",1H.,31HOpen CASCADE IGES processor 7.6,22Hsong_yong_example1.igs,",
+                          PROJCURVE_ERR_PARSE,
+                          "unusable record delimiter", "'.' as record delimiter");
+    check_replaced_record(text, len, g1,
+                          "1H;;1H;;31HOpen CASCADE IGES processor 7.6,22Hsong_yong_example1.igs,",
+                          PROJCURVE_ERR_PARSE,
+                          "are both ';'", "one delimiter for both");
     /* Non-numeric directory field. */
     check_replaced_record(text, len, "     128       1       0", "     1x8       1       0",
                    PROJCURVE_ERR_PARSE, "directory field 1", "non-numeric DE field");
@@ -320,6 +351,34 @@ static void step_cases(void)
                    "twice", "duplicate instance");
     check_replaced(step_text, len, "('',1,1,((", "('',99,1,((", PROJCURVE_ERR_PARSE, "degree",
                    "absurd degree");
+    /* the lexer's syntax errors, each named in the message with its instance */
+    static const char *const p3 = "#3=CARTESIAN_POINT('',(0.,1.,0.));";
+    static const struct {
+        const char *to, *needle;
+    } syntax[] = {
+        {"#3=;", "empty instance"},
+        {"#3=1;", "expected an entity NAME(...)"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,0.)) X;", "text after the entity"},
+        {"#3=(CARTESIAN_POINT('',(0.,1.,0.));", "complex instance is not closed"},
+        {"#3=(1 CARTESIAN_POINT('',(0.,1.,0.)));", "expected a sub-entity NAME(...)"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,@));", "unexpected character"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,#));", "bad reference"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,.F));", "an enumeration is not closed by '.'"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,LENGTH_MEASURE));", "expected '(' after a type name"},
+        {"#3=CARTESIAN_POINT('',(0.,1.,0.);", "a list is not closed"},
+    };
+    for (size_t i = 0; i < sizeof syntax / sizeof syntax[0]; ++i)
+        check_replaced(step_text, len, p3, syntax[i].to, PROJCURVE_ERR_PARSE, syntax[i].needle,
+                       syntax[i].needle);
+    /* a quote doubled inside a string is one quote, not its end */
+    size_t n = 0;
+    char *quoted = replaced(step_text, len, p3, "#3=CARTESIAN_POINT('it''s',(0.,1.,0.));", &n);
+    CHECK(quoted != NULL);
+    if (quoted != NULL) {
+        CHECK_OK(read_mem(quoted, n, &surfaces));
+        CHECK(surfaces == 1);
+    }
+    free(quoted);
 }
 
 static void teapot_cases(void)
