@@ -705,6 +705,8 @@ done:
     projcurve_result_destroy(full);
     projcurve_options_destroy(o);
     projcurve_curve_destroy(c);
+}
+
 /* ---- stops inside the hits selection and the verification ------------- */
 
 /* Where a call stopped, read from its status and message (the steps after
