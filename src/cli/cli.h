@@ -52,7 +52,7 @@ typedef struct cli_inputs {
 } cli_inputs;
 
 /* Reads the files; on failure prints why and returns CLI_EXIT_USAGE. */
-int cli_inputs_load(projcurve_context *ctx, char **paths, size_t n, cli_inputs *in);
+int cli_inputs_load(projcurve_context *ctx, const char *const *paths, size_t n, cli_inputs *in);
 void cli_inputs_free(cli_inputs *in);
 
 /* ---- projection runs (run.c) ---- */

@@ -12,6 +12,7 @@
 #include "curve_input.h"
 #include "progress.h"
 #include "project_args.h"
+#include "shape_job.h"
 
 /* Options from the arguments; a rejected value is a usage error. */
 static int make_options(projcurve_context *ctx, const project_args *a, projcurve_options **opts)
@@ -75,19 +76,33 @@ static int given_curves(projcurve_context *ctx, const project_args *a, project_p
     return cli_curve_from_line(ctx, a->line, &pk->given[0]);
 }
 
+/* The shapes of the files (--faces). */
+static size_t shape_count(const cli_inputs *in)
+{
+    size_t n = 0;
+    for (size_t m = 0; m < in->n_models; ++m)
+        n += projcurve_model_shape_count(in->models[m]);
+    return n;
+}
+
+/* cin holds the curves: in, or the inputs of --curves FILE. */
 static int pick(projcurve_context *ctx, const project_args *a, const cli_inputs *in,
-                project_pick *pk, cli_job *job)
+                const cli_inputs *cin, project_pick *pk, cli_job *job)
 {
     if (a->have_surface && a->surface >= in->n_surfaces)
         return out_of_range("--surface", "surface", a->surface, in->n_surfaces);
-    if (a->have_curve && a->curve >= in->n_curves)
-        return out_of_range("--curve", "curve", a->curve, in->n_curves);
+    if (a->have_curve && a->curve >= cin->n_curves)
+        return out_of_range("--curve", "curve", a->curve, cin->n_curves);
+    if (a->faces && shape_count(in) == 0)
+        return cli_usage_error("--faces: the files hold no face or shape to project onto");
     if (in->n_surfaces == 0)
         return cli_usage_error("the files hold no surface to project onto");
     const int code = given_curves(ctx, a, pk);
     if (code != CLI_EXIT_OK)
         return code;
-    if (pk->given == NULL && in->n_curves == 0)
+    if (pk->given == NULL && cin->n_curves == 0 && a->curves_path)
+        return cli_usage_error("--curves %s holds no curve", a->curves_path);
+    if (pk->given == NULL && cin->n_curves == 0)
         return cli_usage_error("the files hold %zu surface(s) and no curve; give one with "
                                "--line or --points",
                                in->n_surfaces);
@@ -99,14 +114,14 @@ static int pick(projcurve_context *ctx, const project_args *a, const cli_inputs 
         job->n_surfaces = 1;
         job->surface_numbers = &pk->surface_number;
     }
-    job->curves = in->curves;
-    job->n_curves = in->n_curves;
+    job->curves = cin->curves;
+    job->n_curves = cin->n_curves;
     if (pk->given) {
         /* the segments of --points are numbered 0, 1, ...: no map */
         job->curves = (const projcurve_curve *const *)pk->given;
         job->n_curves = pk->n_given;
     } else if (a->have_curve) {
-        pk->curve_one = in->curves[a->curve];
+        pk->curve_one = cin->curves[a->curve];
         pk->curve_number = a->curve;
         job->curves = &pk->curve_one;
         job->n_curves = 1;
@@ -158,6 +173,52 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
     return exit_code(job, unmeasured);
 }
 
+/* --faces: each curve of the job onto each shape of the files; the
+ * outputs are written from the connected curves (JSON) and from the face
+ * results (IGES, STEP, SVG: each face piece on its face's surface). */
+static int run_faces_and_write(projcurve_context *ctx, const cli_job *job, const cli_inputs *in,
+                               const project_args *a, const char *title)
+{
+    cli_shape_job sj;
+    memset(&sj, 0, sizeof sj);
+    sj.models = (const projcurve_model *const *)in->models;
+    sj.n_models = in->n_models;
+    sj.curves = job->curves;
+    sj.n_curves = job->n_curves;
+    sj.curve_numbers = job->curve_numbers;
+    sj.kind = a->orthogonal ? PROJCURVE_PROJECT_ORTHOGONAL
+              : a->have_eye ? PROJCURVE_PROJECT_CONICAL
+                            : PROJCURVE_PROJECT_DIRECTIONAL;
+    memcpy(sj.vec, a->have_eye ? a->eye : a->dir, sizeof sj.vec);
+    sj.opts = job->opts;
+    if (!cli_shape_run_all(ctx, &sj)) {
+        cli_shape_job_free(&sj);
+        return cli_usage_error("out of memory");
+    }
+    sj.view.metres_per_unit = job->metres_per_unit;
+    if (!a->quiet)
+        cli_print_shape_summary(&sj, stdout);
+    if (sj.timeouts)
+        fprintf(stderr,
+                "projcurve: %zu projection(s) stopped by --timeout %g s; what they made is "
+                "reported and written (their cut pieces end 'limit')\n",
+                sj.timeouts, a->timeout);
+    int ok = 1;
+    if (a->iges)
+        ok &= cli_is_step_path(a->iges) ? cli_write_step(ctx, &sj.view, a->iges)
+                                        : cli_write_iges(ctx, &sj.view, a->iges);
+    if (a->json)
+        ok &= cli_write_shape_json(ctx, &sj, a->json);
+    if (a->svg)
+        ok &= cli_write_svg(ctx, &sj.view, title, a->svg);
+    const int code = !ok                          ? CLI_EXIT_USAGE
+                     : sj.failures > sj.timeouts ? CLI_EXIT_PROJECTION
+                     : sj.timeouts               ? CLI_EXIT_TIMEOUT
+                                                 : CLI_EXIT_OK;
+    cli_shape_job_free(&sj);
+    return code;
+}
+
 /* The file name without its folders: titles stay short. */
 static const char *base_name(const char *path)
 {
@@ -204,8 +265,9 @@ int cli_cmd_project(int argc, char **argv)
     }
     projcurve_context *ctx = NULL;
     projcurve_options *opts = NULL;
-    cli_inputs in;
+    cli_inputs in, cin;
     memset(&in, 0, sizeof in);
+    memset(&cin, 0, sizeof cin);
     cli_job job;
     memset(&job, 0, sizeof job);
     project_pick pk;
@@ -213,11 +275,13 @@ int cli_cmd_project(int argc, char **argv)
     if (projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx) != PROJCURVE_OK)
         code = cli_usage_error("cannot create a context");
     if (code == CLI_EXIT_OK)
-        code = cli_inputs_load(ctx, a.files, a.n_files, &in);
+        code = cli_inputs_load(ctx, (const char *const *)a.files, a.n_files, &in);
+    if (code == CLI_EXIT_OK && a.curves_path)
+        code = cli_inputs_load(ctx, &a.curves_path, 1, &cin);
     if (code == CLI_EXIT_OK)
         code = make_options(ctx, &a, &opts);
     if (code == CLI_EXIT_OK)
-        code = pick(ctx, &a, &in, &pk, &job);
+        code = pick(ctx, &a, &in, a.curves_path ? &cin : &in, &pk, &job);
     if (code == CLI_EXIT_OK) {
         job.orthogonal = a.orthogonal;
         job.conical = a.have_eye;
@@ -230,11 +294,13 @@ int cli_cmd_project(int argc, char **argv)
         job.opts = opts;
         char title[512];
         make_title(&a, title, sizeof title);
-        code = run_and_write(ctx, &job, &a, opts, title);
+        code = a.faces ? run_faces_and_write(ctx, &job, &in, &a, title)
+                       : run_and_write(ctx, &job, &a, opts, title);
     }
     cli_job_free(&job);
     cli_curves_free(pk.given, pk.n_given);
     cli_inputs_free(&in);
+    cli_inputs_free(&cin);
     projcurve_options_destroy(opts);
     projcurve_context_destroy(ctx);
     free(a.files);

@@ -3,7 +3,7 @@
 
 #include "cli.h"
 
-int cli_inputs_load(projcurve_context *ctx, char **paths, size_t n, cli_inputs *in)
+int cli_inputs_load(projcurve_context *ctx, const char *const *paths, size_t n, cli_inputs *in)
 {
     in->models = calloc(n ? n : 1, sizeof *in->models);
     if (in->models == NULL)

@@ -124,6 +124,20 @@ static int set_interpolate(project_args *a, const project_option *o, const char 
     return CLI_EXIT_OK;
 }
 
+static int set_faces(project_args *a, const project_option *o, const char *v)
+{
+    (void)o, (void)v;
+    a->faces = 1;
+    return CLI_EXIT_OK;
+}
+
+static int set_curves(project_args *a, const project_option *o, const char *v)
+{
+    (void)o;
+    a->curves_path = v;
+    return CLI_EXIT_OK;
+}
+
 static int set_nearest(project_args *a, const project_option *o, const char *v)
 {
     (void)o, (void)v;
@@ -181,6 +195,13 @@ static const project_option options[] = {
     {"--interpolate", NULL, set_interpolate,
      "with --points: one interpolating cubic through the points\n"
      "(chord-length parameters) instead of the polyline"},
+    {"--faces", NULL, set_faces,
+     "project onto the shapes of the files (their trimmed\n"
+     "faces, chained across shared edges into connected\n"
+     "curves) instead of onto each surface"},
+    {"--curves", "FILE", set_curves,
+     "project the curves of FILE (numbered 0, 1, ... for\n"
+     "--curve) instead of those of the other files"},
     {"--nearest", NULL, set_nearest,
      "keep only the point nearest to the curve on each ray (the\n"
      "visible projection; orthogonally: the nearest foot point)"},
@@ -216,7 +237,8 @@ void project_args_usage(FILE *out)
           "                         [OPTION]...\n"
           "\n"
           "Projects every curve of the files (or the curve of --line / --points)\n"
-          "onto every surface of the files (or the ones --surface / --curve pick).\n"
+          "onto every surface of the files (or the ones --surface / --curve pick);\n"
+          "with --faces onto every shape (solid, shell, face set) of the files.\n"
           "\n",
           out);
     for (size_t i = 0; i < N_OPTIONS; ++i) {
@@ -261,6 +283,12 @@ static int check_combinations(const project_args *a)
     if (a->have_curve && (a->have_line || a->points_path))
         return cli_usage_error("--curve picks a curve of the files; --%s gives the curve "
                                "instead: use one of them",
+                               a->have_line ? "line" : "points");
+    if (a->faces && a->have_surface)
+        return cli_usage_error("--faces projects onto whole shapes; --surface picks one "
+                               "surface: use one of them");
+    if (a->curves_path && (a->have_line || a->points_path))
+        return cli_usage_error("give one of --curves and --%s, not both",
                                a->have_line ? "line" : "points");
     if (a->interpolate && !a->points_path)
         return cli_usage_error("--interpolate needs --points FILE");

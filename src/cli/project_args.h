@@ -32,6 +32,10 @@ typedef struct project_args {
     double line[6];
     const char *points_path;
     int interpolate;
+    /* whole-model mode: project onto the files' shapes (--faces), with the
+     * curves of --curves FILE instead of those of the files */
+    int faces;
+    const char *curves_path;
     /* what is printed */
     int quiet, progress;
     /* outputs */

@@ -3,7 +3,7 @@
 """End-to-end checks of the projcurve command.
 
 usage: check_cli.py PART PROJCURVE TEST_DATA_DIR WORK_DIR
-PART is one of: usage, info, demo, cases, svg, failures, flags.
+PART is one of: usage, info, demo, cases, svg, failures, flags, faces.
 Exit 0 = pass, 1 = fail, 77 = skip.
 """
 import json
@@ -14,6 +14,7 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ET
 
+import check_faces
 import check_flags
 import iges_geometry
 import model_summary
@@ -670,7 +671,8 @@ def main():
         print(f"FAIL: test data {shared}/cases not found")
         return 1
     parts = {"usage": part_usage, "info": part_info, "demo": part_demo, "cases": part_cases,
-             "svg": part_svg, "failures": part_failures, "flags": part_flags}
+             "svg": part_svg, "failures": part_failures, "flags": part_flags,
+             "faces": lambda e, s, w: check_faces.part_faces(e, s, w, run, check)}
     if parts[part](exe, shared, work) == 77:
         return 77
     for f in failures:

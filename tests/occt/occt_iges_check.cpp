@@ -17,6 +17,7 @@
 // torus: one 142 per seam segment, each pcurve inside OCCT's bounds of its
 // surface (to 1e-12 of the width) and OCCT's S(p(t)) within 2 eps_D of its
 // 3D curve (each compact form is within eps_D of the projection).
+#include <cstdlib>
 #include <BRep_Tool.hxx>
 #include <Geom_Curve.hxx>
 #include <Geom2d_Curve.hxx>
@@ -535,8 +536,32 @@ void check_seam_case(const std::string &dir_out, const char *name, pc_shape_surf
 
 } // namespace
 
+// occt_iges_check --file PATH N: a file written elsewhere (the command's
+// -o out.igs of tests/cli/check_faces.py): OCCT reads it, sees N curves on
+// surface (142) and transfers something.
+int check_given_file(const std::string &path, int n)
+{
+    IGESControl_Reader reader;
+    const IFSelect_ReturnStatus st = reader.ReadFile(path.c_str());
+    CHECK(st == IFSelect_RetDone);
+    if (st != IFSelect_RetDone)
+        return pc_test_finish("occt_iges_check --file");
+    const std::map<int, int> got = occt_entity_types(reader);
+    const auto it = got.find(142);
+    const int found = it == got.end() ? 0 : it->second;
+    if (found != n)
+        pc_test_fail_at(__FILE__, __LINE__, "%s: OCCT sees %d curves on surface (142), expected %d",
+                        path.c_str(), found, n);
+    ++pc_test_checks;
+    CHECK(reader.TransferRoots() >= 1);
+    std::printf("%s: %d curves on surface\n", path.c_str(), found);
+    return pc_test_finish("occt_iges_check --file");
+}
+
 int main(int argc, char **argv)
 {
+    if (argc == 4 && std::string(argv[1]) == "--file")
+        return check_given_file(argv[2], std::atoi(argv[3]));
     const std::string dir = argc > 1 ? argv[1] : ".";
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     projcurve_surface *s1 = plane(), *s2 = quarter_cylinder();

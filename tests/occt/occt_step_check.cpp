@@ -18,6 +18,7 @@
 // across the seams of a full cylinder and a torus give one SURFACE_CURVE
 // per seam segment, each PCURVE inside OCCT's bounds of its surface (to
 // 1e-12 of the width).
+#include <cstdlib>
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
@@ -483,10 +484,52 @@ void check_seam_case(const std::string &dir, const char *name, pc_shape_surface 
     projcurve_surface_destroy(s);
 }
 
+// occt_step_check --file PATH N TOL: a file written elsewhere (the
+// command's -o out.step of tests/cli/check_faces.py): OCCT reads it, finds
+// N SURFACE_CURVEs, and on each S(q(t)) lies within TOL of the 3D curve.
+int check_given_file(const std::string &path, size_t n, double tol)
+{
+    STEPControl_Reader reader;
+    const loaded l = load(reader, path);
+    const std::vector<occt_surface_curve> scs = surface_curves(l.model);
+    if (scs.size() != n)
+        pc_test_fail_at(__FILE__, __LINE__, "%s: OCCT finds %zu SURFACE_CURVEs, expected %zu",
+                        path.c_str(), scs.size(), n);
+    ++pc_test_checks;
+    for (size_t k = 0; k < scs.size(); ++k) {
+        const occt_surface_curve &o = scs[k];
+        CHECK(!o.curve.IsNull() && !o.pcurve.IsNull() && !o.surface.IsNull());
+        if (o.curve.IsNull() || o.pcurve.IsNull() || o.surface.IsNull())
+            continue;
+        const double t0 = o.pcurve->FirstParameter(), t1 = o.pcurve->LastParameter();
+        double gap = 0.0, u_lo = INFINITY, u_hi = -INFINITY;
+        for (int i = 0; i <= 100; ++i) {
+            const double t = t0 + (t1 - t0) * i / 100.0;
+            const gp_Pnt2d uv = o.pcurve->Value(t);
+            u_lo = std::min(u_lo, uv.X());
+            u_hi = std::max(u_hi, uv.X());
+            gap = std::max(gap, o.surface->Value(uv.X(), uv.Y()).Distance(o.curve->Value(t)));
+        }
+        double u1, u2, v1, v2;
+        o.surface->Bounds(u1, u2, v1, v2);
+        if (!(gap <= tol))
+            pc_test_fail_at(__FILE__, __LINE__,
+                            "%s: SURFACE_CURVE %zu over t [%g, %g] (3D curve [%g, %g]): forms "
+                            "%g apart (> %g); pcurve u in [%g, %g], surface u in [%g, %g]",
+                            path.c_str(), k, t0, t1, o.curve->FirstParameter(),
+                            o.curve->LastParameter(), gap, tol, u_lo, u_hi, u1, u2);
+        ++pc_test_checks;
+    }
+    return pc_test_finish("occt_step_check --file");
+}
+
 } // namespace
 
 int main(int argc, char **argv)
 {
+    if (argc == 5 && std::string(argv[1]) == "--file")
+        return check_given_file(argv[2], std::strtoul(argv[3], nullptr, 10),
+                                std::strtod(argv[4], nullptr));
     const std::string dir = argc > 1 ? argv[1] : ".";
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     geometry(dir);

@@ -1,0 +1,57 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+/*
+ * projcurve project --faces: every curve projected onto every shape of the
+ * files (projcurve_project_shape), the face pieces chained into connected
+ * curves. The per-face results are also seen as a cli_job (the view), so
+ * that the IGES, STEP and SVG writers of the surface mode write them.
+ */
+#ifndef PC_CLI_SHAPE_JOB_H
+#define PC_CLI_SHAPE_JOB_H
+
+#include <stdio.h>
+
+#include "cli.h"
+
+/* One call: curve onto shape. */
+typedef struct cli_shape_run {
+    size_t model, shape, curve;      /* indices into the inputs / job */
+    const projcurve_shape *target;
+    projcurve_status status;
+    projcurve_shape_result *result; /* NULL if the call failed without one */
+} cli_shape_run;
+
+typedef struct cli_shape_job {
+    const projcurve_model *const *models;
+    size_t n_models;
+    const projcurve_curve *const *curves;
+    size_t n_curves;
+    const size_t *curve_numbers; /* NULL: 0, 1, ... */
+    projcurve_projection_kind kind;
+    double vec[3];
+    const projcurve_options *opts;
+    cli_shape_run *runs; /* one per (shape, curve) after cli_shape_run_all */
+    size_t n_runs;
+    double time_ms;  /* time spent in projcurve_project_shape only */
+    size_t failures; /* failed calls, failed faces, and the failure places
+                        of the face results */
+    size_t timeouts; /* calls stopped by the time limit (also failures) */
+    cli_job view;    /* the face results as pairs (borrowed results) */
+} cli_shape_job;
+
+/* Runs every call and builds the view; failures are reported on stderr
+ * and counted. Returns 0 only when memory runs out; cli_shape_job_free is
+ * safe either way. */
+int cli_shape_run_all(projcurve_context *ctx, cli_shape_job *job);
+void cli_shape_job_free(cli_shape_job *job);
+
+/* The user's number of the job's curve c. */
+static inline size_t cli_shape_curve_number(const cli_shape_job *job, size_t c)
+{
+    return job->curve_numbers ? job->curve_numbers[c] : c;
+}
+
+/* The JSON report (report_shape_json.c) and the summary line. */
+int cli_write_shape_json(projcurve_context *ctx, const cli_shape_job *job, const char *path);
+void cli_print_shape_summary(const cli_shape_job *job, FILE *out);
+
+#endif /* PC_CLI_SHAPE_JOB_H */
