@@ -9,7 +9,10 @@
  * an eye point beyond that plane). Both outputs are measured the same way
  * (shape_accuracy.h); when Open CASCADE's is the more accurate, ours is run
  * again with eps_D below its measured error, so that the times compare at
- * equal or better measured accuracy.
+ * equal or better measured accuracy. --case TEXT runs only the cases whose
+ * name holds TEXT (e.g. "linkrods.step line dir"); with
+ * $PCB_PROFILE_SECONDS set, each case runs only our projection, over and
+ * over for that many CPU seconds (for perf record), and is not measured.
  */
 #include <math.h>
 #include <stdio.h>
@@ -322,9 +325,9 @@ static void print_row(const shape_row *r)
     printf("%-30s %9.3f %4zu %5zu %6zu %9.2e %9.2e", r->name, r->ours.ms, r->ours.curves,
            r->ours.pieces, r->ours.poles, r->ours.acc.face, r->ours.acc.ray);
     if (r->have_occt)
-        printf(" %10.2f %4d %5d %6ld %9.2e %9.2e %8.1f", r->occt_ms, r->occt_wires, r->occt_edges,
+        printf(" %10.2f %4d %5d %6ld %9.2e %9.2e %9.4f", r->occt_ms, r->occt_wires, r->occt_edges,
                r->occt_poles, r->occt_acc.face, r->occt_acc.ray,
-               r->ours.ms > 0 ? r->occt_ms / r->ours.ms : 0.0);
+               r->occt_ms > 0 ? r->ours.ms / r->occt_ms : 0.0);
     printf("\n");
 }
 
@@ -347,7 +350,7 @@ static void json_row(pcb_json *json, const shape_row *r)
         pcb_json_int(json, "occt_poles", r->occt_poles);
         pcb_json_number(json, "occt_face_error", r->occt_acc.face);
         pcb_json_number(json, "occt_ray_error", r->occt_acc.ray);
-        pcb_json_number(json, "occt_over_ours", r->ours.ms > 0 ? r->occt_ms / r->ours.ms : 0.0);
+        pcb_json_number(json, "ours_over_occt", r->occt_ms > 0 ? r->ours.ms / r->occt_ms : 0.0);
     } else {
         pcb_json_null(json, "occt_ms");
     }
@@ -430,6 +433,8 @@ static int bench_model(const pcb_args *args, const char *rel, const pcb_timing *
     shape_frame f;
     if (shape)
         frame_of(shape, &f);
+    const char *profile_env = getenv("PCB_PROFILE_SECONDS");
+    const double profile_s = profile_env ? atof(profile_env) : 0.0;
     for (int k = 0; shape && k < 2 * N_CURVES; ++k) {
         const int conical = k / N_CURVES, which = k % N_CURVES;
         if (args->quick && which != 0)
@@ -438,6 +443,8 @@ static int bench_model(const pcb_args *args, const char *rel, const pcb_timing *
         memset(&row, 0, sizeof row);
         snprintf(row.name, sizeof row.name, "%s %s %s", rel + 5, curve_names[which],
                  conical ? "conical" : "dir");
+        if (args->only_case != NULL && strstr(row.name, args->only_case) == NULL)
+            continue;
         projcurve_curve *curve = NULL;
         if (make_curve(&f, which, &curve) != PROJCURVE_OK) {
             failed = 1;
@@ -448,6 +455,17 @@ static int bench_model(const pcb_args *args, const char *rel, const pcb_timing *
         ours_work w = {shape, curve,
                        conical ? PROJCURVE_PROJECT_CONICAL : PROJCURVE_PROJECT_DIRECTIONAL, vec,
                        NULL};
+        if (profile_s > 0.0) {
+            /* a profiler's run: only our projection, over and over */
+            const double t0 = pcb_now_s();
+            size_t calls = 0;
+            while (pcb_now_s() - t0 < profile_s && work_ours(&w, 1) == 0)
+                ++calls;
+            printf("%-30s %zu calls, %.3f ms each\n", row.name, calls,
+                   1e3 * (pcb_now_s() - t0) / (double)(calls ? calls : 1));
+            projcurve_curve_destroy(curve);
+            continue;
+        }
         int rc = run_ours(timing, &w, 0.0, conical, &row.ours);
 #ifdef PCB_HAVE_OCCT_READ
         if (rc == 0 && om != NULL && run_occt(args, om, shape, curve, conical, vec, &row) != 0)
@@ -489,9 +507,9 @@ int pcb_cmd_shape(const pcb_args *args)
         return 2;
     pcb_json_object_begin(&json, NULL);
     pcb_json_array_begin(&json, "cases");
-    printf("%-30s %9s %4s %5s %6s %9s %9s %10s %4s %5s %6s %9s %9s %8s\n", "case", "ours ms",
+    printf("%-30s %9s %4s %5s %6s %9s %9s %10s %4s %5s %6s %9s %9s %9s\n", "case", "ours ms",
            "crv", "pcs", "poles", "face err", "ray err", "occt ms", "wire", "edges", "poles",
-           "face err", "ray err", "occt/us");
+           "face err", "ray err", "ours/occt");
     const pcb_timing timing = pcb_timing_for(args, SHAPE_REPS, SHAPE_MIN_RUN_S);
     int failed = 0;
     shape_plot times = {.n = 0};

@@ -88,6 +88,8 @@ void describe(const TopoDS_Shape &res, size_t per_edge, pcb_occt_shape_out *out,
 {
     out->wires = out->edges = 0;
     out->poles = 0;
+    if (res.IsNull())
+        return;
     for (TopExp_Explorer w(res, TopAbs_WIRE); w.More(); w.Next())
         ++out->wires;
     for (TopExp_Explorer e(res, TopAbs_EDGE); e.More(); e.Next()) {
@@ -153,8 +155,8 @@ extern "C" int pcb_occt_shape_project(const pcb_occt_model *m, const pcb_nurbs_d
             res = project_once(wire, m->shape, conical, vec, found);
             const double dt = pcb_now_s() - t0;
             if (!found) {
-                std::snprintf(out->note, sizeof out->note, "BRepProj_Projection: empty section");
-                return -1;
+                /* nothing hit: an empty result, as ours gives */
+                res = TopoDS_Shape();
             }
             if (i > 0)
                 t[i - 1] = dt;
