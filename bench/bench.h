@@ -33,6 +33,7 @@ int pcb_cmd_cases(const pcb_args *args);
 int pcb_cmd_scaling(const pcb_args *args);
 int pcb_cmd_brep(const pcb_args *args);
 int pcb_cmd_profile(const pcb_args *args);
+int pcb_cmd_shape(const pcb_args *args);
 #ifdef PCB_HAVE_OCCT
 int pcb_cmd_occt(const pcb_args *args);
 #endif

@@ -33,6 +33,7 @@ static const pcb_command commands[] = {
     {"table1", pcb_cmd_table1, "the paper's Table 1: RK4 vs second-order tracing on Example 1"},
     {"cases", pcb_cmd_cases, "every test case: time, branches, pieces, measured deviation"},
     {"scaling", pcb_cmd_scaling, "time against 1/eps_D, patches and curve length"},
+    {"shape", pcb_cmd_shape, "curves onto whole models, ours vs BRepProj_Projection"},
     {"profile", pcb_cmd_profile, "CPU time of each case by stage, at eps_D and at Open CASCADE's"},
     {"brep", pcb_cmd_brep, "read + build of each real model, face classification ns per point"},
 #ifdef PCB_HAVE_OCCT

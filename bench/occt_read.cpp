@@ -33,16 +33,21 @@ template <typename Reader> static bool read_with(const char *path, TopoDS_Shape 
     return true;
 }
 
-extern "C" int pcb_occt_read(const char *path, double *seconds, int *faces, int *wires)
+int pcb_occt_read_shape(const char *path, double *seconds, TopoDS_Shape *shape)
 {
     // the readers' progress messages would interleave with the table
     Message::DefaultMessenger()->RemovePrinters(STANDARD_TYPE(Message_PrinterOStream));
-    TopoDS_Shape shape;
     const double t0 = pcb_now_s();
-    const bool ok = is_step(path) ? read_with<STEPControl_Reader>(path, shape)
-                                  : read_with<IGESControl_Reader>(path, shape);
+    const bool ok = is_step(path) ? read_with<STEPControl_Reader>(path, *shape)
+                                  : read_with<IGESControl_Reader>(path, *shape);
     *seconds = pcb_now_s() - t0;
-    if (!ok)
+    return ok ? 0 : -1;
+}
+
+extern "C" int pcb_occt_read(const char *path, double *seconds, int *faces, int *wires)
+{
+    TopoDS_Shape shape;
+    if (pcb_occt_read_shape(path, seconds, &shape) != 0)
         return -1;
     *faces = *wires = 0;
     for (TopExp_Explorer e(shape, TopAbs_FACE); e.More(); e.Next())

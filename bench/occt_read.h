@@ -18,6 +18,9 @@ int pcb_occt_read(const char *path, double *seconds, int *faces, int *wires);
 
 #ifdef __cplusplus
 }
+#include <TopoDS_Shape.hxx>
+/* The same, keeping the shape (the shape bench projects onto it). */
+int pcb_occt_read_shape(const char *path, double *seconds, TopoDS_Shape *shape);
 #endif
 
 #endif /* PCB_OCCT_READ_H */
