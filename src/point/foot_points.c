@@ -35,6 +35,14 @@
 /* Newton starts per call; only a continuum of foot points (p at the centre
  * of a sphere) comes near it. */
 #define FEET_MAX_STARTS 4096
+/* Newton starts per Bezier patch, so that no patch can spend the call's
+ * FEET_MAX_STARTS before the others are searched. A knot span of width
+ * 1.8e-8 in v (linkrods.step surface 16, degree 6 x 10, rational, spans
+ * 10 to 17 of 30) has a control net blown up by the rounding of its
+ * extraction (box ~30 across, the span itself ~0.2): nothing in it is
+ * culled, and its sub-patches took 618 starts each, all 4096 before the
+ * search reached span 29, which held the only foot point. */
+#define FEET_MAX_PATCH_STARTS 256
 /* |Su x Sv| below this fraction of |Su|^2 + |Sv|^2: a singular point. */
 #define FEET_SINGULAR 1e-8
 /* A patch narrower than this fraction of the domain in u or v is a knot
@@ -51,6 +59,7 @@ typedef struct feet_search {
     pc_subdiv_work *work; /* not inside: an initialiser of this struct would zero its scratch */
     pc_foot_list *list;
     size_t starts;
+    size_t patch_starts; /* the starts of the patch being searched */
     projcurve_status status;
     projcurve_context *ctx;
     pc_budget *budget; /* NULL: none */
@@ -116,9 +125,16 @@ static int is_minimum(const pc_nurbs_surface *s, pc_vec3 p, double u, double v)
 /* Newton from (u, v): 0 if it failed, 1 if it converged inside the
  * sub-patch (grown by half its size), 2 if it converged farther away,
  * 3 if it converged inside to a foot point that is no local minimum. */
+/* 1 when the call or the current patch has no Newton start left. */
+static int out_of_starts(const feet_search *fs)
+{
+    return fs->starts >= FEET_MAX_STARTS || fs->patch_starts >= FEET_MAX_PATCH_STARTS;
+}
+
 static int start_newton(feet_search *fs, const pc_subpatch *sp, double u, double v)
 {
     ++fs->starts;
+    ++fs->patch_starts;
     const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
     double uv[2] = {u, v};
     const pc_patch_grid *g = &fs->s->grid;
@@ -148,7 +164,7 @@ static void descend_from_quarters(feet_search *fs, const pc_subpatch *sp)
 {
     static const double quarter[4][2] = {{0.25, 0.25}, {0.75, 0.25}, {0.25, 0.75}, {0.75, 0.75}};
     const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
-    for (int k = 0; k < 4 && fs->starts < FEET_MAX_STARTS; ++k) {
+    for (int k = 0; k < 4 && !out_of_starts(fs); ++k) {
         double uv[2] = {sp->u0 + quarter[k][0] * hu, sp->v0 + quarter[k][1] * hv};
         pc_surface_minimize(&fs->s->nurbs, fs->p, fs->s->size, uv);
         start_newton(fs, sp, uv[0], uv[1]);
@@ -167,10 +183,10 @@ static pc_subdiv_action decide_feet(void *user, const pc_subpatch *sp)
     if (!pc_subpatch_may_hold_foot(sp, n->deg_u, n->deg_v, n->rational, fs->p))
         return PC_SUBDIV_DROP;
     const int leaf = pc_subpatch_flatness(sp, n->deg_u, n->deg_v) <= FEET_FLATNESS ||
-                     sp->depth >= PC_SUBDIV_MAX_DEPTH || fs->starts >= FEET_MAX_STARTS;
+                     sp->depth >= PC_SUBDIV_MAX_DEPTH || out_of_starts(fs);
     if (!leaf)
         return PC_SUBDIV_SPLIT;
-    if (fs->starts >= FEET_MAX_STARTS)
+    if (out_of_starts(fs))
         return PC_SUBDIV_STOP;
     const double hu = sp->u1 - sp->u0, hv = sp->v1 - sp->v0;
     /* A flat sub-patch holding a foot point already found holds no other
@@ -255,6 +271,7 @@ static int search_patch(void *user, size_t patch_index)
 {
     feet_search *fs = user;
     const pc_bezier_patch *patch = &fs->s->grid.patches[patch_index];
+    fs->patch_starts = 0;
     if (has_extent(fs->s, patch))
         pc_subdiv_walk(fs->work, patch, decide_feet, fs);
     return fs->status != PROJCURVE_OK;
@@ -266,7 +283,7 @@ static projcurve_status foot_points(projcurve_context *ctx, const projcurve_surf
 {
     list->count = 0;
     pc_subdiv_work work;
-    feet_search fs = {s, p, &work, list, 0, PROJCURVE_OK, ctx, budget};
+    feet_search fs = {s, p, &work, list, 0, 0, PROJCURVE_OK, ctx, budget};
     projcurve_status st = pc_subdiv_work_init(ctx, fs.work, s->nurbs.deg_u, s->nurbs.deg_v);
     if (st != PROJCURVE_OK)
         return st;
