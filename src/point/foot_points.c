@@ -122,15 +122,15 @@ static int is_minimum(const pc_nurbs_surface *s, pc_vec3 p, double u, double v)
     return h11 > 0.0 && h11 * h22 - h12 * h12 > 0.0;
 }
 
-/* Newton from (u, v): 0 if it failed, 1 if it converged inside the
- * sub-patch (grown by half its size), 2 if it converged farther away,
- * 3 if it converged inside to a foot point that is no local minimum. */
 /* 1 when the call or the current patch has no Newton start left. */
 static int out_of_starts(const feet_search *fs)
 {
     return fs->starts >= FEET_MAX_STARTS || fs->patch_starts >= FEET_MAX_PATCH_STARTS;
 }
 
+/* Newton from (u, v): 0 if it failed, 1 if it converged inside the
+ * sub-patch (grown by half its size), 2 if it converged farther away,
+ * 3 if it converged inside to a foot point that is no local minimum. */
 static int start_newton(feet_search *fs, const pc_subpatch *sp, double u, double v)
 {
     ++fs->starts;
