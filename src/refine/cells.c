@@ -13,8 +13,11 @@
 
 /* Bound of the bracketed root search for a knot-line crossing; the Illinois
  * variant of regula falsi converges superlinearly, so it is never reached in
- * practice (when it is, there is no crossing: a gap, see refine.c). */
-#define PC_CROSSING_MAX_ITER 60
+ * practice (when it is, there is no crossing: a gap, see refine.c); room is
+ * left for the bisection towards a failure of the corrector (from a
+ * segment of the whole branch down to min_dt, 1e-12 of it: ~40 halvings,
+ * each maybe followed by a few regula falsi steps). */
+#define PC_CROSSING_MAX_ITER 160
 
 /* Cells [lo, hi] of the breaks holding x: x in cell i iff
  * breaks[i] <= x <= breaks[i + 1]; a value on an inner break is in two. */
@@ -114,18 +117,38 @@ static int bracket_end_on_line(const pc_refiner *r, const pc_rvertex *lo, const 
 }
 
 /* Root of coord(t) = line on the projection between a and b (coordinate 0 =
- * u, 1 = v), which bracket it; regula falsi, Illinois variant. */
+ * u, 1 = v), which bracket it; regula falsi, Illinois variant. Where the
+ * corrector fails at an iterate, the projection is out of reach there (a
+ * C0 knot line the foot point runs into, or, beyond the line, spans whose
+ * net rounding blew up: linkrods.step surface 16 has 26 spans of width
+ * ~1e-8 in v ~ -3.6128 whose image loops 0.2 away from its neighbours):
+ * the search then bisects between the reachable end on a's side and the
+ * failure, so that the crossing reached from a is found (or, within
+ * snap_far of the line, the last point reached). Only then the caller
+ * gives up: the segment that cannot be split there becomes a gap. */
 static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int coord,
                           double line, pc_rvertex *out)
 {
     pc_rvertex lo = *a, hi = *b;
     double g_lo = (coord == 0 ? lo.u : lo.v) - line, g_hi = (coord == 0 ? hi.u : hi.v) - line;
-    int side = 0; /* which end stayed last time, for the Illinois halving */
+    int side = 0;         /* which end stayed last time, for the Illinois halving */
+    double t_bad = NAN;   /* a failing t between lo and hi (NaN: none known) */
     for (int iter = 0; iter < PC_CROSSING_MAX_ITER; ++iter) {
-        const double t = (g_hi * lo.t - g_lo * hi.t) / (g_hi - g_lo);
+        const double t = isnan(t_bad) ? (g_hi * lo.t - g_lo * hi.t) / (g_hi - g_lo)
+                                      : 0.5 * (lo.t + t_bad);
         pc_rvertex c;
-        if (!pc_refine_exact_point(r, &lo, &hi, t, &c))
-            return bracket_end_on_line(r, &lo, &hi, coord, line, out);
+        if (!pc_refine_exact_point(r, &lo, &hi, t, &c)) {
+            t_bad = t;
+            side = 0;
+            if (fabs(t_bad - lo.t) > r->min_dt)
+                continue;
+            /* lo is the last point reached from a's side; else an end
+             * of the bracket on the line, as when the bracket closes */
+            if (!(fabs(g_lo) <= r->snap_far))
+                return bracket_end_on_line(r, &lo, &hi, coord, line, out);
+            *out = lo;
+            return 1;
+        }
         const double g = (coord == 0 ? c.u : c.v) - line;
         if (fabs(g) <= r->min_move) {
             *out = c;
@@ -142,12 +165,13 @@ static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *
             lo = c, g_lo = g;
             if (side == -1)
                 g_hi *= 0.5;
-            side = -1;
+            side = isnan(t_bad) ? -1 : 0;
         } else {
             hi = c, g_hi = g;
             if (side == 1)
                 g_lo *= 0.5;
-            side = 1;
+            side = isnan(t_bad) ? 1 : 0;
+            t_bad = NAN; /* the bracket now ends before the failure */
         }
     }
     return 0;

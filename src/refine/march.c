@@ -141,7 +141,7 @@ static void restart_after_gap(pc_refiner *r, const pc_rvertex *v, const pc_rvert
     *cur = *v;
     *t_cur = pc_refine_exact_tangent(r, cur, b);
     keep_derivative(r, cur);
-    *h = h_ok;
+    *h = pc_refine_march_start_step(r, h_ok);
     *rejections = 0;
 }
 
@@ -206,7 +206,7 @@ projcurve_status pc_refine_march(pc_refiner *r, const pc_rvertex *a, const pc_rv
     pc_rvertex cur = *a;
     pc_vec3 t_cur = pc_refine_exact_tangent(r, &cur, b);
     keep_derivative(r, &cur);
-    double h = r->step > 0.0 ? r->step : b->t - a->t;
+    double h = r->step > 0.0 ? pc_refine_march_start_step(r, r->step) : b->t - a->t;
     double h_ok = h; /* the last accepted step, to restart from after a gap */
     int rejections = 0;
     while (cur.t < b->t) {

@@ -144,7 +144,7 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
                                        pc_vertex_list *out)
 {
     cubic_march m = {*a, NULL, {0.0, 0.0}, 0, vec3(0.0, 0.0, 0.0)};
-    double h = r->step > 0.0 ? r->step : b->t - a->t;
+    double h = r->step > 0.0 ? pc_refine_march_start_step(r, r->step) : b->t - a->t;
     int rejections = 0, invalid = 0;
     pc_rvertex first_invalid = *a; /* the candidate before the current invalid halvings */
     while (m.cur.t < b->t) {

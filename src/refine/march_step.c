@@ -7,6 +7,23 @@
  */
 #include "refine/refine_internal.h"
 
+#include <math.h>
+
+/* The floor of a march's first step (a fraction of the branch's t range):
+ * the step of the one-sided tangents (march.c, PC_SIDE_STEP_REL), above
+ * which a piece's end directions are resolved. A run inherits the step of
+ * the one before; after a stretch the corrector could barely follow
+ * (linkrods.step surface 16, curve 87: steps of 1e-10 beside spans whose
+ * nets rounding blew up) that step is so short that the composed piece's
+ * end direction is rounding, the angle test fails at every shorter step,
+ * and the whole next run became a gap. */
+#define PC_MARCH_START_STEP_REL 1e-6
+
+double pc_refine_march_start_step(const pc_refiner *r, double h)
+{
+    return fmax(h, PC_MARCH_START_STEP_REL * r->t_range);
+}
+
 int pc_refine_march_candidate(pc_refiner *r, const pc_rvertex *cur, const pc_rvertex *b,
                               double h, pc_rvertex *cand)
 {

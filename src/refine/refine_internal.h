@@ -187,6 +187,10 @@ projcurve_status pc_refine_split(pc_refiner *r, const pc_rvertex *a, const pc_rv
  * direction of q' = J^-1 (...) is not resolved and no angle is bound. */
 pc_vec3 pc_refine_exact_tangent(pc_refiner *r, const pc_rvertex *v, const pc_rvertex *other);
 
+/* march_step.c: the step a march run (or its restart after a gap) first
+ * tries, from h, the step last taken: never below the length at which a
+ * piece's end directions are resolved. */
+double pc_refine_march_start_step(const pc_refiner *r, double h);
 /* march_step.c: the candidate end for a step h from cur towards the run
  * end b: b itself when h reaches it, else the exact point at cur.t + h
  * (at most half of what remains: two balanced pieces rather than a long
