@@ -64,9 +64,14 @@ static unsigned char vertex_ok(pc_verifier *v, const pc_branch *b, size_t k, siz
     if (b->n_pieces == 0)
         return (unsigned char)pc_verify_vertex(v, b->points[3 * k], b->points[3 * k + 1],
                                                b->points[3 * k + 2]);
-    const pc_piece *p = &b->pieces[k < n ? k : n - 1];
-    return (unsigned char)(k < n ? pc_verify_vertex(v, p->t0, p->uv[0], p->uv[1])
-                                 : pc_verify_vertex(v, p->t1, p->uv[2], p->uv[3]));
+    /* the start of piece k and the end of piece k - 1, each checked on its
+     * own side of a crease */
+    const pc_piece *next = k < n ? &b->pieces[k] : NULL, *prev = k > 0 ? &b->pieces[k - 1] : NULL;
+    const double *const toward[2] = {next ? next->uv + 2 : NULL, prev ? prev->uv : NULL};
+    return (unsigned char)(next ? pc_verify_vertex_of_pieces(v, next->t0, next->uv[0], next->uv[1],
+                                                             toward)
+                                : pc_verify_vertex_of_pieces(v, prev->t1, prev->uv[2], prev->uv[3],
+                                                             toward));
 }
 
 /* Marks in keep[k] whether item k of b passes: piece k, with both its end

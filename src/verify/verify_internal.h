@@ -25,6 +25,12 @@ double pc_verify_vertex_tolerance(const pc_projector *proj);
 
 /* (a) for the vertex (t, u, v). Returns 1 when it passes. */
 int pc_verify_vertex(pc_verifier *v, double t, double u, double w);
+/* (a) for the vertex (t, u, w) of pieces whose other ends are toward[0]
+ * and toward[1] ((u, v) pairs; either may be NULL): where the residual at
+ * (u, w) fails, it is measured one ulp towards each piece. Returns 1 when
+ * it passes. */
+int pc_verify_vertex_of_pieces(pc_verifier *v, double t, double u, double w,
+                               const double *const toward[2]);
 
 /* (b) and (c) for piece p of a branch; prev is the piece before it in the
  * branch (NULL for the first). Returns 1 when it passes. */
