@@ -710,6 +710,16 @@ static void sample_branch(verifier *vf, const projcurve_result *r, size_t b, siz
             double x[3], uv[2];
             pc_test_piece_point(pc->degree, pc->ctrl, pc->weights, s, x);
             bezier_uv(uv_degree, uvc, s, uv);
+            /* A piece end lies on a knot line, where S may be only C0 (a
+             * crease: every knot of a faceted surface): its normal and its
+             * foot are those of the patch the piece lies in, whose side one
+             * ulp towards the other end is (the surface evaluator takes
+             * one side at the line, maybe the other patch's). */
+            if (i == 0 || i == PIECE_INTERVALS) {
+                const int other = i == 0 ? 1 : 0;
+                uv[0] = nextafter(uv[0], uv_range[2 * other]);
+                uv[1] = nextafter(uv[1], uv_range[2 * other + 1]);
+            }
             check_sample(vf, x, uv, pc->range);
         }
     }
