@@ -18,9 +18,6 @@
  * segment of the whole branch down to min_dt, 1e-12 of it: ~40 halvings,
  * each maybe followed by a few regula falsi steps). */
 #define PC_CROSSING_MAX_ITER 160
-/* A last point reached splits a segment only this many min_dt away from
- * where the search started (pc_refine_knot_split). */
-#define PC_REACH_MIN_DT 16.0
 
 /* Cells [lo, hi] of the breaks holding x: x in cell i iff
  * breaks[i] <= x <= breaks[i + 1]; a value on an inner break is in two. */
@@ -127,11 +124,10 @@ static int bracket_end_on_line(const pc_refiner *r, const pc_rvertex *lo, const 
  * ~1e-8 in v ~ -3.6128 whose image loops 0.2 away from its neighbours):
  * the search then bisects between the reachable end on a's side and the
  * failure, so that the crossing reached from a is found (or, within
- * snap_far of the line, the last point reached). When the line is not
- * reached, *reach (unless NULL) gets that last point, if it is not a
- * itself (reach->t is left alone otherwise). */
+ * snap_far of the line, the last point reached). Only then the caller
+ * gives up: the segment that cannot be split there becomes a gap. */
 static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, int coord,
-                          double line, pc_rvertex *out, pc_rvertex *reach)
+                          double line, pc_rvertex *out)
 {
     pc_rvertex lo = *a, hi = *b;
     double g_lo = (coord == 0 ? lo.u : lo.v) - line, g_hi = (coord == 0 ? hi.u : hi.v) - line;
@@ -141,55 +137,48 @@ static int exact_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *
         const double t = isnan(t_bad) ? (g_hi * lo.t - g_lo * hi.t) / (g_hi - g_lo)
                                       : 0.5 * (lo.t + t_bad);
         pc_rvertex c;
-        const int reached = pc_refine_exact_point(r, &lo, &hi, t, &c);
-        if (!reached)
-            t_bad = t, side = 0;
-        const double g = reached ? (coord == 0 ? c.u : c.v) - line : 0.0;
-        if (reached && fabs(g) <= r->min_move) {
+        if (!pc_refine_exact_point(r, &lo, &hi, t, &c)) {
+            t_bad = t;
+            side = 0;
+            if (fabs(t_bad - lo.t) > r->min_dt)
+                continue;
+            /* lo is the last point reached from a's side; else an end
+             * of the bracket on the line, as when the bracket closes */
+            if (!(fabs(g_lo) <= r->snap_far))
+                return bracket_end_on_line(r, &lo, &hi, coord, line, out);
+            *out = lo;
+            return 1;
+        }
+        const double g = (coord == 0 ? c.u : c.v) - line;
+        if (fabs(g) <= r->min_move) {
             *out = c;
             return 1;
         }
         /* The bracket has closed in t: a crossing within snap_far of the
          * line is put on it; farther, the curve jumps across the line
          * (the traced polyline stepped over a gap) and there is none. */
-        if (reached && fabs(hi.t - lo.t) <= r->min_dt) {
+        if (fabs(hi.t - lo.t) <= r->min_dt) {
             *out = c;
             return fabs(g) <= r->snap_far;
         }
-        if (reached && (g < 0.0) != (g_lo < 0.0)) { /* a bracket before any failure */
-            hi = c, g_hi = g;
-            if (side == 1)
-                g_lo *= 0.5;
-            side = isnan(t_bad) ? 1 : 0;
-            t_bad = NAN;
-            continue;
-        }
-        if (reached) {
+        if ((g < 0.0) == (g_lo < 0.0)) {
             lo = c, g_lo = g;
             if (side == -1)
                 g_hi *= 0.5;
             side = isnan(t_bad) ? -1 : 0;
+        } else {
+            hi = c, g_hi = g;
+            if (side == 1)
+                g_lo *= 0.5;
+            side = isnan(t_bad) ? 1 : 0;
+            t_bad = NAN; /* the bracket now ends before the failure */
         }
-        if (isnan(t_bad) || fabs(t_bad - lo.t) > r->min_dt)
-            continue;
-        /* lo is the last point reached from a's side, within min_dt of a
-         * failure: the crossing if it is on the line; else an end of the
-         * bracket on the line, as when the bracket closes */
-        if (fabs(g_lo) <= r->snap_far) {
-            *out = lo;
-            return 1;
-        }
-        if (reach != NULL && lo.t != a->t)
-            *reach = lo;
-        return bracket_end_on_line(r, &lo, &hi, coord, line, out);
     }
     return 0;
 }
 
-/* pc_refine_knot_crossing, and where the line is not reached, the last
- * point reached from a into *reach (exact_crossing). */
-static int crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, pc_rvertex *out,
-                    pc_rvertex *reach)
+int pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
+                            pc_rvertex *out)
 {
     const pc_patch_grid *g = r->grid;
     size_t cell;
@@ -203,7 +192,7 @@ static int crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, pc_
     const double line = coord == 0 ? line_u : line_v;
 
     pc_rvertex c;
-    if (!(fabs(b->t - a->t) > r->min_dt) || !exact_crossing(r, a, b, coord, line, &c, reach))
+    if (!(fabs(b->t - a->t) > r->min_dt) || !exact_crossing(r, a, b, coord, line, &c))
         return 0;
     /* The crossing must fall strictly between a and b in t, or the split
      * would not shorten anything. */
@@ -223,34 +212,4 @@ static int crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b, pc_
     c.fixed = 1;
     *out = c;
     return 1;
-}
-
-int pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
-                            pc_rvertex *out)
-{
-    return crossing(r, a, b, out, NULL);
-}
-
-/* The last point reached from `from` towards `to` (reach, NaN t when none)
- * as a split vertex: strictly between them, and more than a few min_dt
- * from `from` (a search started at the last point reached reaches it
- * again, within min_dt). */
-static int split_at_reach(const pc_refiner *r, const pc_rvertex *from, const pc_rvertex *to,
-                          const pc_rvertex *reach, pc_rvertex *out)
-{
-    if (isnan(reach->t) || !(fabs(reach->t - from->t) > PC_REACH_MIN_DT * r->min_dt) ||
-        !((reach->t - from->t) * (to->t - reach->t) > 0.0))
-        return 0;
-    *out = *reach;
-    out->fixed = 1;
-    return 1;
-}
-
-int pc_refine_knot_split(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
-                         pc_rvertex *out)
-{
-    pc_rvertex reach_a, reach_b;
-    reach_a.t = reach_b.t = NAN;
-    return crossing(r, a, b, out, &reach_a) || crossing(r, b, a, out, &reach_b) ||
-           split_at_reach(r, a, b, &reach_a, out) || split_at_reach(r, b, a, &reach_b, out);
 }

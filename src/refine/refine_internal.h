@@ -159,17 +159,6 @@ int pc_refine_on_knot_line(const pc_refiner *r, const pc_rvertex *v);
  * vertex on the projection to offer, and the caller makes a gap. */
 int pc_refine_knot_crossing(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
                             pc_rvertex *out);
-/* For a segment with no common patch: a fixed vertex to split it at, on
- * the projection strictly between a and b: the crossing of the first knot
- * line from a; else of the last one, reached from b; else, where the
- * projection from a ends before the line (a fold, a stretch out of the
- * corrector's reach), the last point reached from a; else from b. So a
- * gap is left only where neither side reaches: over a run of thin spans
- * whose nets rounding blew up (linkrods.step surface 16), or between two
- * sheets' fold ends beside a crease (surface 9, curve 21), not over the
- * whole traced segment that stepped across. Returns 0 when there is none. */
-int pc_refine_knot_split(pc_refiner *r, const pc_rvertex *a, const pc_rvertex *b,
-                         pc_rvertex *out);
 
 /* deviation.c: Rational Bezier curve of degree n (homogeneous cw): point and
  * first two derivatives at s (n >= 2). */

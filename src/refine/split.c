@@ -31,9 +31,16 @@ static split_action decide(pc_refiner *r, const pc_rvertex *a, const pc_rvertex 
 {
     const double dt = fabs(b->t - a->t);
     const pc_bezier_patch *patch = pc_refine_common_patch(r, a, b);
+    /* Split at the first knot line crossed from a; failing that, at the
+     * last one, reached from b: so a gap is left only between the lines
+     * the projection cannot be followed across (a run of thin spans whose
+     * nets rounding blew up, linkrods.step surface 16), not over the whole
+     * traced segment that stepped over them. */
     if (patch == NULL)
-        return depth < PC_SPLIT_EXACT_DEPTH && pc_refine_knot_split(r, a, b, c) ? SPLIT_AT
-                                                                                : SPLIT_GAP;
+        return depth < PC_SPLIT_EXACT_DEPTH &&
+                       (pc_refine_knot_crossing(r, a, b, c) || pc_refine_knot_crossing(r, b, a, c))
+                   ? SPLIT_AT
+                   : SPLIT_GAP;
     if (!hausdorff || dt <= r->min_dt || depth + 1 >= PC_SPLIT_STACK)
         return SPLIT_ACCEPT;
     double t_far, cw[PC_PIECE_MAX_CW];
