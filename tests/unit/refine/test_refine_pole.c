@@ -29,6 +29,7 @@
 #include <stdio.h>
 
 #include "check.h"
+#include "directional/directional.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
 #include "piece_oracle.h"
@@ -181,10 +182,65 @@ static pole_outcome check_line(const projcurve_surface *s, const pole_line *l, i
     return out;
 }
 
+/* The library's q' (the projector's derivatives, what the refinement's
+ * uv tangent reads) against central differences of exact points (its
+ * corrector at t -+ FD_DELTA), on the line 1e-3 beside the north pole,
+ * where u' reaches ~2,000, at 1 - v from 4e-2 down to ~3e-5. The
+ * difference quotient is off by FD_DELTA^2 q'''/6 (q''' ~ u' / tau^2 with
+ * tau = 1e-3 / |P'| ~ 8e-5 the time to pass the pole: ~3e-6 relative) and
+ * by the rounding of the exact points over FD_DELTA (the corrector ends
+ * with a quadratic step, its points good to ~1e-15 in u and v: ~1e-8
+ * relative). Measured: 2e-9 to 4e-7. */
+#define FD_DELTA 1e-7
+#define FD_REL 1e-5
+#define TWO_PI 6.283185307179586
+static void check_tangent_beside_pole(const projcurve_surface *s)
+{
+    const pole_line l = {"1e-3 beside the pole", {-6.0, -2.0 + 1e-3}, {6.0, 2.0 + 1e-3}};
+    const double pts[6] = {l.a[0], l.a[1], H, l.b[0], l.b[1], H};
+    projcurve_curve *c = shape_bspline_curve(1, 2, pts);
+    CHECK(c != NULL);
+    if (c == NULL)
+        return;
+    pc_projector proj;
+    pc_directional_data data;
+    pc_directional_cache cache;
+    pc_directional_init(&proj, &data, &cache, s, c, vec3(0.0, 0.0, -1.0), 1e-12, 50);
+    double worst = 0.0;
+    for (int k = 1; k <= 5; ++k) {
+        const double t = 0.5 - pow(10.0, -k); /* the pole is passed at t ~ 0.5 */
+        double uv[3][2];
+        for (int j = 0; j < 3; ++j) {
+            const double tj = t + (j - 1) * FD_DELTA;
+            double xy[2], d[2];
+            line_point(&l, tj, xy, d);
+            /* a start on the upper hemisphere: u = angle / 2 pi is within
+             * the rational circle's distortion of the answer */
+            const double angle = atan2(xy[1], xy[0]);
+            uv[j][0] = (angle < 0.0 ? angle + TWO_PI : angle) / TWO_PI;
+            uv[j][1] = 1.0 - 0.5 * hypot(xy[0], xy[1]) / R;
+            int iterations = 0;
+            CHECK(proj.correct(&proj, tj, uv[j], &iterations));
+        }
+        pc_proj_point q;
+        CHECK(proj.derivatives(&proj, t, uv[1][0], uv[1][1], &q));
+        const double fd[2] = {(uv[2][0] - uv[0][0]) / (2.0 * FD_DELTA),
+                              (uv[2][1] - uv[0][1]) / (2.0 * FD_DELTA)};
+        const double err = hypot(q.du - fd[0], q.dv - fd[1]) / hypot(fd[0], fd[1]);
+        printf("q' at 1 - v = %.2g: (%.6g, %.6g), differences (%.6g, %.6g), relative %.2g\n",
+               1.0 - uv[1][1], q.du, q.dv, fd[0], fd[1], err);
+        worst = fmax(worst, err);
+    }
+    CHECK(worst <= FD_REL);
+    projcurve_curve_destroy(c);
+}
+
 int main(void)
 {
     projcurve_surface *s = shape_sphere(R);
     CHECK(s != NULL);
+    if (s != NULL)
+        check_tangent_beside_pole(s);
     const pole_line lines[] = {
         {"through the pole", {-6.0, -2.0}, {6.0, 2.0}},
         {"1e-3 beside the pole", {-6.0, -2.0 + 1e-3}, {6.0, 2.0 + 1e-3}},
