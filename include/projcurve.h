@@ -225,7 +225,13 @@ typedef enum projcurve_option {
      * Surfaces with 3 (p + q) > 2 PROJCURVE_MAX_DEGREE use degree 1; a piece
      * whose cubic would leave its Bezier patch (or where q' is not
      * available, e.g. at a fold) is a straight segment: read each piece's
-     * degree with projcurve_result_piece_pcurve. */
+     * degree with projcurve_result_piece_pcurve. The default stays 1:
+     * degree 3 took 0.5-0.9 of the time on 11 of the benchmark's 12
+     * projecting cases at their eps_D (1.13 on the last) and 0.04-0.19 at
+     * 1e-4 of it, but over the real-data sweep's 5,585 calls
+     * (tests/realdata) it ran 27 past 2 s of CPU, all directional onto
+     * one model (linkrods.step), where degree 1 takes at most ~0.3 s a
+     * call (docs/refine_compose.md, "Cubic pcurves"). */
     PROJCURVE_OPT_PCURVE_DEGREE = 12,
     /* integer: which foot points projcurve_project_orthogonal returns,
      * PROJCURVE_FOOT_POINTS_MINIMA or PROJCURVE_FOOT_POINTS_ALL.

@@ -40,6 +40,14 @@
 /* Halvings in a row of a candidate whose cubic cannot be built before the
  * stretch goes to the straight march: 1/64 of the step. */
 #define PC_CUBIC_MAX_INVALID 6
+/* A run end without q' (a pole of S, where Su = 0 and the (u, v) tangent
+ * is singular: the sphere's collapsed edge; a fold) is approached by
+ * cubics until the rest of the run is this fraction of the step that first
+ * reached it; the rest goes to the straight march. Halving alone never
+ * got there: every cubic reaching the end was invalid, every halved one
+ * was accepted, and the march made pieces of half the distance left, one
+ * after another, to the piece limit (a line across a sphere's pole). */
+#define PC_CUBIC_END_APPROACH (1.0 / 64.0)
 
 /* 1 when the directions a and b are within the angle whose cosine is
  * cos_max (or either is zero: no direction to compare). */
@@ -62,9 +70,11 @@ typedef struct cubic_march {
 typedef enum cubic_verdict { CUBIC_ACCEPT, CUBIC_TOO_FAR, CUBIC_INVALID } cubic_verdict;
 
 /* Builds, composes and measures the cubic for cur-cand in patch; unless
- * CUBIC_INVALID, cand carries the pcurve and *end_dir its end direction. */
+ * CUBIC_INVALID, cand carries the pcurve and *end_dir its end direction.
+ * *no_end_tangent gets 1 when q' is not available at cand. */
 static cubic_verdict try_cubic(pc_refiner *r, cubic_march *m, const pc_bezier_patch *patch,
-                               pc_rvertex *cand, double *ratio_d, pc_vec3 *end_dir)
+                               pc_rvertex *cand, double *ratio_d, pc_vec3 *end_dir,
+                               int *no_end_tangent)
 {
     if (m->d0_patch != patch) {
         m->d0_ok = pc_refine_uv_tangent(r, &m->cur, patch, m->d0);
@@ -73,8 +83,8 @@ static cubic_verdict try_cubic(pc_refiner *r, cubic_march *m, const pc_bezier_pa
     double d1[2], uv[8], cw[PC_PIECE_MAX_CW];
     pc_rvertex end = *cand; /* its q' from before it: one-sided at a corner of P */
     end.t = pc_refine_corner_left(r, cand->t);
-    if (!m->d0_ok || !pc_refine_uv_tangent(r, &end, patch, d1) ||
-        !pc_refine_hermite(r, patch, &m->cur, cand, m->d0, d1, uv))
+    *no_end_tangent = m->d0_ok && !pc_refine_uv_tangent(r, &end, patch, d1);
+    if (!m->d0_ok || *no_end_tangent || !pc_refine_hermite(r, patch, &m->cur, cand, m->d0, d1, uv))
         return CUBIC_INVALID;
     /* uv[2..5] hold h q' / 3. The allowance min_move keeps a stationary
      * projection (a point curve, q' = 0 up to rounding, chord 0) from
@@ -132,6 +142,14 @@ static projcurve_status straight_stretch(pc_refiner *r, const pc_rvertex *cur,
     return st;
 }
 
+/* The rest of the run, m->cur to b, by the straight march. */
+static projcurve_status straight_rest(pc_refiner *r, const cubic_march *m, const pc_rvertex *b,
+                                      pc_vertex_list *out)
+{
+    double straight_step = 0.0;
+    return straight_stretch(r, &m->cur, b, out, &straight_step);
+}
+
 /* Moves the march to v, the vertex just appended. */
 static void advance(cubic_march *m, const pc_rvertex *v, pc_vec3 end_dir)
 {
@@ -147,6 +165,7 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
     double h = r->step > 0.0 ? pc_refine_march_start_step(r, r->step) : b->t - a->t;
     int rejections = 0, invalid = 0;
     pc_rvertex first_invalid = *a; /* the candidate before the current invalid halvings */
+    double end_step = 0.0; /* step of the first candidate at b found without q' (0: none) */
     while (m.cur.t < b->t) {
         pc_rvertex cand;
         int reached = pc_refine_march_candidate(r, &m.cur, b, h, &cand);
@@ -176,8 +195,19 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
         const int can_shrink = hh > r->min_dt && rejections + 1 < PC_CUBIC_MAX_REJECTIONS;
         double ratio_d = 0.0;
         pc_vec3 end_dir = vec3(0.0, 0.0, 0.0);
-        const cubic_verdict v = patch != NULL ? try_cubic(r, &m, patch, &cand, &ratio_d, &end_dir)
-                                              : CUBIC_INVALID;
+        int no_end_tangent = 0;
+        const cubic_verdict v =
+            patch != NULL ? try_cubic(r, &m, patch, &cand, &ratio_d, &end_dir, &no_end_tangent)
+                          : CUBIC_INVALID;
+        const int at_end_without_tangent = no_end_tangent && cand.t == b->t;
+        if (at_end_without_tangent && end_step == 0.0)
+            end_step = hh;
+        if (at_end_without_tangent && hh <= PC_CUBIC_END_APPROACH * end_step) {
+            const projcurve_status st = straight_rest(r, &m, b, out);
+            if (st != PROJCURVE_OK)
+                return st;
+            break;
+        }
         if (v == CUBIC_TOO_FAR && can_shrink) {
             ++rejections;
             h = hh * step_factor(ratio_d);
