@@ -2,13 +2,7 @@
 /*
  * The projection of a curve onto one face: onto its untrimmed surface by
  * the kind's driver (surface_projection.h), then clipped to its loops
- * (face_clip.h). The driver stops before its compact fits (fit/) and seam
- * joins (seam/); the compact forms are then fitted after clipping, on the
- * kept stretches only, unless a branch may be joined at a seam or pole
- * (a closed surface, or one with a collapsed edge, and a branch at the
- * domain's boundary): then the fits and joins are made on the untrimmed
- * branches in the driver's order (a joined branch's compact forms are
- * made one from the fits of its sides) and clipping restricts the fits.
+ * (face_clip.h).
  */
 #ifndef PC_FACEPROJ_FACE_PROJECT_H
 #define PC_FACEPROJ_FACE_PROJECT_H

@@ -79,7 +79,12 @@ projcurve_status pc_curve_boxes_build(projcurve_context *ctx, const projcurve_cu
     if (st != PROJCURVE_OK)
         return st;
     const size_t nodes = tree_nodes();
-    out->boxes = malloc(pc_size_mul(pc_size_mul(bz.n_segments, nodes), 6 * sizeof(double)));
+    const size_t bytes = pc_size_mul(pc_size_mul(bz.n_segments, nodes), 6 * sizeof(double));
+    if (bytes == 0) {
+        pc_bezier_curves_free(&bz);
+        return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "the curve's boxes overflow");
+    }
+    out->boxes = malloc(bytes);
     out->breaks = malloc((bz.n_segments + 1) * sizeof *out->breaks);
     if (out->boxes == NULL || out->breaks == NULL) {
         pc_bezier_curves_free(&bz);
