@@ -10,11 +10,13 @@
 #include <stdlib.h>
 
 #include "brep/shape.h"
+#include "common/array.h"
 #include "common/error.h"
 #include "faceproj/face_project.h"
 #include "faceproj/loop_crossing.h"
 #include "shapeproj/chain.h"
 #include "shapeproj/face_select.h"
+#include "shapeproj/t_ranges.h"
 #include "shapeproj/shape_hits.h"
 
 static const projcurve_face *face_of(const projcurve_shape *shape, const projcurve_face *face,
@@ -85,11 +87,34 @@ static projcurve_status set_ok_message(projcurve_context *ctx, pc_face_part *par
     return pc_face_part_set_message(ctx, part, text);
 }
 
+/* pc_face_project of curve onto face, or an empty result with OK when no
+ * t range of the curve reaches the face's box (t_ranges.h: then the
+ * untrimmed projection has no point, so neither has the clipped one). */
+static projcurve_status project_if_reached(projcurve_context *ctx, const projcurve_face *face,
+                                           const projcurve_curve *curve,
+                                           const pc_t_ranges *ranges,
+                                           const pc_projection_spec *spec, const pc_params *p,
+                                           projcurve_result **out, pc_branch_trim **trims,
+                                           size_t *unrefined)
+{
+    if (ranges->count > 0)
+        return pc_face_project(ctx, face, curve, spec, p, out, trims, unrefined);
+    projcurve_result *r = NULL;
+    const projcurve_status st = pc_result_create(ctx, 3, &r);
+    if (st != PROJCURVE_OK)
+        return st;
+    r->stats.tol_distance = p->tol_distance;
+    *out = r;
+    *trims = NULL;
+    *unrefined = 0;
+    return PROJCURVE_OK;
+}
+
 /* One face of a shape, with a context of its own so that its message is
  * kept with it. Returns NO_MEMORY (the call fails) or OK. */
 static projcurve_status project_part(projcurve_context *ctx, pc_face_part *part,
-                                     const projcurve_curve *curve, const pc_projection_spec *spec,
-                                     const pc_params *p)
+                                     const projcurve_curve *curve, const pc_t_ranges *ranges,
+                                     const pc_projection_spec *spec, const pc_params *p)
 {
     if (pc_budget_status(p->budget) != PROJCURVE_OK) {
         part->status = pc_budget_status(p->budget);
@@ -100,8 +125,8 @@ static projcurve_status project_part(projcurve_context *ctx, pc_face_part *part,
     if (projcurve_context_create(PROJCURVE_VERSION_MAJOR, &fctx) != PROJCURVE_OK)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a face's context");
     size_t unrefined = 0;
-    part->status =
-        pc_face_project(fctx, part->f, curve, spec, p, &part->result, &part->trims, &unrefined);
+    part->status = project_if_reached(fctx, part->f, curve, ranges, spec, p, &part->result,
+                                      &part->trims, &unrefined);
     projcurve_status st = PROJCURVE_OK;
     if (part->status == PROJCURVE_ERR_NO_MEMORY)
         st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "face %zu: %s", part->face,
@@ -135,26 +160,37 @@ projcurve_status pc_shape_project(projcurve_context *ctx, const projcurve_shape 
     if (nearest)
         face_params.hits = PROJCURVE_HITS_ALL;
     const pc_params *fp = &face_params;
+    /* a face no part of the swept curve reaches is not projected (t_ranges.h) */
+    pc_curve_boxes cboxes = {0};
+    pc_t_ranges ranges = {0};
+    if (st == PROJCURVE_OK)
+        st = pc_curve_boxes_build(ctx, curve, spec, &cboxes);
+    const double pad = pc_t_range_pad(p, model_size);
     projcurve_status kept = PROJCURVE_OK; /* OK, or the partial status */
     for (size_t i = 0; st == PROJCURVE_OK && i < n_sel; ++i) {
         pc_face_part *part = &r->parts[i];
+        st = pc_t_ranges_find(ctx, &cboxes, spec, part->f->box, pad, &ranges);
+        if (st != PROJCURVE_OK)
+            break;
         if (shape == NULL) {
             /* a lone face: its status is the call's */
             size_t unrefined = 0;
-            part->status = pc_face_project(ctx, part->f, curve, spec, fp, &part->result,
-                                           &part->trims, &unrefined);
+            part->status = project_if_reached(ctx, part->f, curve, &ranges, spec, fp,
+                                              &part->result, &part->trims, &unrefined);
             if (!pc_status_keeps_result(part->status))
                 st = part->status;
             else
                 st = set_ok_message(ctx, part, unrefined);
         } else {
-            st = project_part(ctx, part, curve, spec, fp);
+            st = project_part(ctx, part, curve, &ranges, spec, fp);
         }
         if (st == PROJCURVE_OK && part->status != PROJCURVE_OK &&
             pc_status_keeps_result(part->status))
             kept = part->status;
     }
     free(sel);
+    pc_curve_boxes_free(&cboxes);
+    PC_ARRAY_FREE(&ranges);
     if (st == PROJCURVE_OK && nearest) {
         st = pc_shape_hits_select(ctx, r, curve, spec, p, model_size);
         if (st != PROJCURVE_OK && st == pc_budget_status(p->budget)) {
