@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # Fuzzes every file reader, the projection pipeline and the IGES writer
 # with libFuzzer for a bounded time.
-#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 30, six targets: 3 min in all;
+#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 30, six targets run one per
+#                                       core: 1.5 min on 2 cores;
 #                                       PROJCURVE_FUZZ_SECONDS also works)
 #   PROJCURVE_FUZZ_KEEP_CORPUS=1 keeps the corpus of earlier runs.
 # Builds the targets of tests/fuzz with clang (-DPROJCURVE_FUZZ=ON) in
@@ -52,8 +53,10 @@ declare -A seeds=(
     [iges_write]="tests/fuzz/corpus/iges_write"
 )
 mkdir -p build-fuzz/artifacts
-for reader in "${targets[@]}"; do
-    corpus=build-fuzz/corpus/$reader
+# Prepares the corpus of target $1 and fuzzes it; its output goes to
+# build-fuzz/fuzz_$1.log (printed after the run, so parallel runs do not mix).
+fuzz_target() {
+    local reader=$1 corpus=build-fuzz/corpus/$1 seed
     # Each run starts from the seeds: a corpus grown by earlier runs takes
     # longer to load than the time budget (PROJCURVE_FUZZ_KEEP_CORPUS=1
     # keeps it for longer local runs).
@@ -68,11 +71,35 @@ for reader in "${targets[@]}"; do
         fi
     done
     # The pipeline targets read at most ~300 bytes (fuzz_shapes.c).
-    max_len=()
+    local max_len=()
     [[ $reader == project || $reader == iges_write ]] && max_len=(-max_len=512)
-    echo "==== fuzz_$reader: ${seconds}s ===="
     build-fuzz/tests/fuzz/fuzz_$reader -max_total_time="$seconds" -timeout=10 \
         -rss_limit_mb=2048 -print_final_stats=1 "${max_len[@]}" \
-        -artifact_prefix=build-fuzz/artifacts/"$reader"- "$corpus"
+        -artifact_prefix=build-fuzz/artifacts/"$reader"- "$corpus" \
+        >"build-fuzz/fuzz_$reader.log" 2>&1
+}
+
+# The targets run side by side, one per core (each libFuzzer run is one
+# process): the wall time is the per-target time times targets / cores.
+parallel=$(nproc 2>/dev/null || echo 1)
+((parallel >= 1)) || parallel=1
+failed=()
+for ((first = 0; first < ${#targets[@]}; first += parallel)); do
+    batch=("${targets[@]:first:parallel}")
+    pids=()
+    for reader in "${batch[@]}"; do
+        echo "==== fuzz_$reader: ${seconds}s ===="
+        fuzz_target "$reader" &
+        pids+=($!)
+    done
+    for i in "${!batch[@]}"; do
+        if ! wait "${pids[$i]}"; then failed+=("${batch[$i]}"); fi
+        echo "---- fuzz_${batch[$i]} ----"
+        cat "build-fuzz/fuzz_${batch[$i]}.log"
+    done
 done
+if ((${#failed[@]})); then
+    echo "fuzzing found a crash, leak or slow input in: ${failed[*]} (reproducers in build-fuzz/artifacts/)" >&2
+    exit 1
+fi
 echo "fuzzing: no crash, leak or slow input found"

@@ -18,6 +18,9 @@
  *     file, a result's points);
  *   - not crash or leak: the AddressSanitizer job of .ci/run runs this
  *     test in a build with the hook, and LeakSanitizer checks at exit.
+ * `test_api_alloc_failures K/N` makes only the failing runs of part K of N
+ * (every N-th run of each entry point, from the K-th), so that CTest can
+ * run the parts side by side; without an argument every run is made.
  */
 #include <math.h>
 #include <stdio.h>
@@ -470,6 +473,11 @@ typedef struct entry {
     outcome (*call)(void);
 } entry;
 
+/* The parts the failing runs are dealt into (tests/CMakeLists.txt
+ * registers one test per part); part < 0 makes them all. */
+#define PARTS 3
+static int part = -1;
+
 /* The caller's objects, which no call may change. */
 static hash inputs_hash(void)
 {
@@ -492,12 +500,14 @@ static void check_entry(const entry *e)
     if (ref.st != PROJCURVE_OK)
         return;
     const long stride = total > PC_MAX_RUNS ? (total + PC_MAX_RUNS - 1) / PC_MAX_RUNS : 1;
-    long runs = 0, no_memory = 0, same = 0;
+    long runs = 0, no_memory = 0, same = 0, n_chosen = 0;
     for (long k = 1; k <= total; ++k) {
         int chosen = (k - 1) % stride == 0;
         for (size_t i = 0; i < n_entry_sites && !chosen; ++i)
             chosen = sites[i].first == k;
         if (!chosen)
+            continue;
+        if (part >= 0 && n_chosen++ % PARTS != part)
             continue;
         ++runs;
         projcurve_context_clear(ctx);
@@ -531,8 +541,23 @@ static void check_entry(const entry *e)
            e->name, total, n_entry_sites, runs, no_memory, same);
 }
 
-int main(void)
+/* Reads "K/N" into *part; N must be PARTS. Returns 0 when it cannot. */
+static int parse_part(const char *arg, int *part)
 {
+    int k = -1, n = 0;
+    char tail = 0;
+    if (sscanf(arg, "%d/%d%c", &k, &n, &tail) != 2 || n != PARTS || k < 0 || k >= n)
+        return 0;
+    *part = k;
+    return 1;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 2 || (argc == 2 && !parse_part(argv[1], &part))) {
+        fprintf(stderr, "usage: test_api_alloc_failures [K/%d]\n", PARTS);
+        return 2;
+    }
     pc_test_hang_guard(HANG_GUARD_SECONDS);
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     make_net();
