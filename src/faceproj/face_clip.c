@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "faceproj/loop_crossing.h"
 #include "faceproj/piece_cut.h"
+#include "seam/seam.h"
 
 /* Samples of a cubic pcurve between its ends in the guess polyline. */
 #define PC_CLIP_CUBIC_SAMPLES 4
@@ -235,6 +236,10 @@ static projcurve_status keep_stretch(projcurve_context *ctx, const pc_loop_sampl
         st = copy_pieces(ctx, s, src, sr, dst);
     if (st == PROJCURVE_OK)
         st = copy_compact(ctx, src, sr, dst);
+    /* a stretch across the face's seam keeps its jumps (the writers split
+     * its curve there, src/io/seam_split.c) */
+    if (st == PROJCURVE_OK)
+        st = pc_seam_restrict_records(ctx, src, sr->ta, sr->tb, dst);
     return st;
 }
 
