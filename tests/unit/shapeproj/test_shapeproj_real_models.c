@@ -12,7 +12,10 @@
  * points. No forward ray hit is missed: rays from dense curve samples
  * against every face (projcurve_surface_intersect_line, kept when the face
  * classifies the hit IN) must each lie near a piece of that face. The
- * connected-curve and piece counts are printed (docs/shapes.md).
+ * connected-curve and piece counts are printed (docs/shapes.md). Also
+ * projcurve-bench shape's hammer.iges "circle dir" at eps_D 1e-9 of the
+ * size: every composed piece, sampled, is S of its pcurve and at that
+ * distance from its face's surface (check_bench_circle).
  */
 #include <math.h>
 #include <stdio.h>
@@ -121,10 +124,10 @@ typedef struct tally {
 
 /* Every traced point of a piece: inside its face (both tests), on its ray
  * in front of the curve; the compact curve within eps_D of the surface.
- * Returns the number of points that are not (reported unless quiet). */
+ * Returns the number of points that are not (the first three reported). */
 static size_t check_piece(const char *name, const projcurve_face *f, const projcurve_result *r,
                           size_t b, const projcurve_curve *c, const ray_kind *k, double size,
-                          double eps_d, int quiet, tally *tl)
+                          double eps_d, tally *tl)
 {
     size_t n = 0;
     CHECK_OK(projcurve_result_branch_points(NULL, r, b, MAX_POINTS, points, &n));
@@ -173,7 +176,7 @@ static size_t check_piece(const char *name, const projcurve_face *f, const projc
          * it; the compact form is fitted to eps_D */
         if (w == PROJCURVE_OUT || by_samples == 0 || off > 1e-9 * size || along < -1e-9 * size ||
             dev > eps_d) {
-            if (bad++ < 3 && !quiet)
+            if (bad++ < 3)
                 pc_test_fail_at(__FILE__, __LINE__,
                                 "%s: point %zu (t %.17g, uv %.17g %.17g): classify %d, sampled "
                                 "loops %d, off the ray %.3g, along %.3g, compact %.3g (eps_D "
@@ -259,26 +262,6 @@ static size_t check_no_hit_missed(const char *name, const projcurve_shape *shape
     return hits_in;
 }
 
-/* Runs known to fail a check, with why; each must still fail it (so that
- * a fix shows here and the entry goes). */
-typedef struct open_run {
-    const char *name, *why;
-} open_run;
-static const open_run open_runs[] = {
-    {"bearing.iges shape 0 cubic along -x",
-     "a two-point face piece starts 'trim' on v = 0 and ends 'boundary' at u = 0, 0.0036 in u "
-     "(1.2 mm, beyond the face's ON band of 0.0099) outside its face's outer loop: the clip "
-     "to the loops misses the crossing between two traced points"},
-};
-
-static const open_run *find_open(const char *name)
-{
-    for (size_t i = 0; i < sizeof open_runs / sizeof open_runs[0]; ++i)
-        if (strcmp(open_runs[i].name, name) == 0)
-            return &open_runs[i];
-    return NULL;
-}
-
 static void shape_box(const projcurve_shape *shape, double box[6])
 {
     for (int i = 0; i < 3; ++i) {
@@ -322,7 +305,6 @@ static void check_run(const char *name, const projcurve_shape *shape, const proj
     }
     CHECK(failed_faces == 0);
     const size_t connected = projcurve_shape_result_curve_count(sr);
-    const open_run *open_entry = find_open(name);
     size_t bad = 0;
     for (size_t i = 0; i < connected; ++i) {
         size_t np = 0;
@@ -333,14 +315,10 @@ static void check_run(const char *name, const projcurve_shape *shape, const proj
             const projcurve_result *r = NULL;
             CHECK_OK(projcurve_shape_result_piece(NULL, sr, i, j, &fi, &r, &b, NULL, NULL, NULL));
             bad += check_piece(name, projcurve_shape_face(shape, fi), r, b, c, k, size, eps_d,
-                               open_entry != NULL, tl);
+                               tl);
         }
     }
-    if (open_entry != NULL) {
-        printf("OPEN %s: %zu point(s): %s\n", name, bad, open_entry->why);
-        if (bad == 0)
-            pc_test_fail_at(__FILE__, __LINE__, "%s passes now: remove it from open_runs", name);
-    }
+    CHECK(bad == 0);
     const size_t hits = check_no_hit_missed(name, shape, sr, c, k, size);
     const size_t open = projcurve_shape_result_open_end_count(sr);
     printf("%s: %zu connected curve(s), %zu face piece(s), %zu open end(s), %zu forward hits "
