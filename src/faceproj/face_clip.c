@@ -243,27 +243,30 @@ static projcurve_status keep_stretch(projcurve_context *ctx, const pc_loop_sampl
     return st;
 }
 
-/* Interior points of a stretch classified when its midpoint lies in the
- * loops' ON band (below). */
+/* Points of a stretch classified when its midpoint lies in the loops' ON
+ * band (below): at s = k / PC_CLIP_SIDE_SAMPLES. */
 #define PC_CLIP_SIDE_SAMPLES 8
 
 /* 1 when the stretch [ta, tb] of b (no crossing inside it) lies in the
- * face. Its midpoint decides when it is IN or OUT. Within the ON band
- * (the model's precision in (u, v): 1 % of the domain on bearing.iges
- * face 169) it does not: the stretch from a crossing to a branch end just
- * beyond the loop (there 0.015 outside, its midpoint 0.007) would be kept
- * whole, its end outside the face. Then the stretch is kept unless one of
- * its interior points at s = k / PC_CLIP_SIDE_SAMPLES lies OUT: a stretch
- * that runs along the loop within the band stays, as before. */
+ * face; at_a, at_b: that end is a crossing (on a loop), else an end of
+ * the untrimmed branch. Its midpoint decides when it is IN or OUT. Within
+ * the ON band (the model's precision in (u, v): 1 % of the domain on
+ * bearing.iges face 169) it does not: the stretch from a crossing to a
+ * branch end just beyond the loop (there 0.015 outside, its midpoint
+ * 0.007) would be kept whole, its end outside the face. Then the stretch
+ * is kept unless one of its points at the samples (its crossing ends
+ * left out: they lie on the loop to the crossing's tolerance, or less
+ * where refining them failed) lies OUT: a stretch that runs along the
+ * loop within the band stays, as before. */
 static int stretch_inside(const pc_loop_samples *s, const pc_projector *proj, const pc_branch *b,
-                          double ta, double tb)
+                          double ta, double tb, int at_a, int at_b)
 {
     double uv[2];
     point_at(proj, b, 0.5 * (ta + tb), uv);
     const pc_where mid = pc_classify(&s->face->cls, uv[0], uv[1]);
     if (mid != PC_ON)
         return mid == PC_IN;
-    for (int k = 1; k < PC_CLIP_SIDE_SAMPLES; ++k) {
+    for (int k = at_a ? 1 : 0; k <= (at_b ? PC_CLIP_SIDE_SAMPLES - 1 : PC_CLIP_SIDE_SAMPLES); ++k) {
         point_at(proj, b, ta + (tb - ta) * k / PC_CLIP_SIDE_SAMPLES, uv);
         if (pc_classify(&s->face->cls, uv[0], uv[1]) == PC_OUT)
             return 0;
@@ -294,7 +297,7 @@ static projcurve_status clip_branch(projcurve_context *ctx, const pc_loop_sample
         const double ta = ha ? ha->t : T0, tb = hb ? hb->t : T1;
         if (ha && !ha->refined)
             ++*unrefined;
-        const int keep = tb > ta && stretch_inside(s, proj, b, ta, tb);
+        const int keep = tb > ta && stretch_inside(s, proj, b, ta, tb, ha != NULL, hb != NULL);
         if (keep) {
             if (!open)
                 cur = (stretch){.ta = ta, .ha = ha};
