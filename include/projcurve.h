@@ -1010,7 +1010,17 @@ PROJCURVE_API projcurve_status projcurve_result_branch_compact_curve(
  * Before these joins such a branch came back as one ending with
  * PROJCURVE_END_BOUNDARY and one starting with PROJCURVE_START_BOUNDARY
  * at the same t and point; those reasons now remain only for the real
- * boundary of S. */
+ * boundary of S.
+ * Face pieces (the branches of the per-face results of
+ * projcurve_project_face / projcurve_project_shape) are parts of such
+ * branches, and these functions mean the same on them: a piece that
+ * crosses its face's seam (or passes a pole) within the face has the
+ * jumps strictly inside its own t range, and its compact pcurve is
+ * unwrapped from the piece's start, which lies in the domain (the jumps
+ * of the untrimmed branch before the piece are applied to it); a piece
+ * between two jumps has none and its pcurve lies in the domain. The
+ * writers write a piece with jumps as one curve on surface per seam
+ * segment, as any branch. */
 
 /* The number of jumps of a branch's pcurve (0 on a branch that crosses no
  * seam or pole). Statuses: OK, NULL_ARGUMENT, INDEX. Thread-safe (the
@@ -1305,7 +1315,8 @@ typedef struct projcurve_shape_result projcurve_shape_result;
  * (also where the untrimmed projection ends on a loop, e.g. the domain's
  * side), its traced points end at the crossing, its composed pieces are cut
  * there by subdivision (still exactly on S) and its compact forms are
- * restricted to the kept t range by knot insertion; the parts outside are
+ * restricted to the kept t range by knot insertion, its seam records (see
+ * Seams above) are those inside that range; the parts outside are
  * dropped. The result has one face (index 0) and its connected curves are
  * its branches, chained as projcurve_project_shape chains (across a seam
  * edge of the face, and the end of a closed curve into its start).

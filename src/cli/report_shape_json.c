@@ -6,14 +6,18 @@
  *      "chain_tolerance": c, "curves": [{"closed": b, "t_range": [a, b],
  *        "pieces": [{"face": f, "shape_face": i, "t_range": [a, b],
  *          "start": "...", "end": "...", "degree": d, "control_points": m,
- *          "pcurve_degree": dq, "pcurve_control_points": mq}, ...]}, ...]},
+ *          "pcurve_degree": dq, "pcurve_control_points": mq, "seams": j}, ...]},
+ *        ...]},
  *     ...], "failures": n, "timeouts": k}
  * shape counts the shapes of the files in order (as info lists them), face
  * is the model's face index (as info prints it), shape_face its index in
  * the shape; degree and control_points describe the piece's compact 3D
  * curve (the pieces joined where it has none; 0 when not composed),
- * pcurve_degree and pcurve_control_points its compact pcurve; time_ms is
- * the time spent in the projection calls only.
+ * pcurve_degree and pcurve_control_points its compact pcurve (unsplit),
+ * seams the jumps of its pcurve across its face's seams and poles
+ * (projcurve_result_branch_seam_count: the files written hold seams + 1
+ * curves on the face's surface for the piece); time_ms is the time spent
+ * in the projection calls only.
  */
 #include <math.h>
 
@@ -45,7 +49,9 @@ static void piece_json(projcurve_context *ctx, const cli_shape_run *r, size_t c,
     projcurve_branch_start start = PROJCURVE_START_CURVE_START;
     projcurve_branch_end end = PROJCURVE_END_CURVE_END;
     int degree = 0, pcurve_degree = 0;
+    size_t seams = 0;
     projcurve_shape_result_piece(ctx, r->result, c, k, &face, &fr, &branch, t, &start, &end);
+    projcurve_result_branch_seam_count(ctx, fr, branch, &seams);
     projcurve_shape_face_model_index(ctx, r->target, face, &model_face);
     projcurve_curve *cc = NULL, *pc = NULL;
     if (projcurve_result_branch_compact_curve(NULL, fr, branch, &cc) == PROJCURVE_OK ||
@@ -59,8 +65,9 @@ static void piece_json(projcurve_context *ctx, const cli_shape_run *r, size_t c,
     json_range(f, t);
     fprintf(f,
             ", \"start\": \"%s\", \"end\": \"%s\", \"degree\": %d, \"control_points\": %zu, "
-            "\"pcurve_degree\": %d, \"pcurve_control_points\": %zu}",
-            cli_start_name(start), cli_end_name(end), degree, n_ctrl, pcurve_degree, n_pcurve);
+            "\"pcurve_degree\": %d, \"pcurve_control_points\": %zu, \"seams\": %zu}",
+            cli_start_name(start), cli_end_name(end), degree, n_ctrl, pcurve_degree, n_pcurve,
+            seams);
 }
 
 static void run_json(projcurve_context *ctx, const cli_shape_job *job, const cli_shape_run *r,

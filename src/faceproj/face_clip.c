@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "faceproj/loop_crossing.h"
 #include "faceproj/piece_cut.h"
+#include "seam/seam.h"
 
 /* Samples of a cubic pcurve between its ends in the guess polyline. */
 #define PC_CLIP_CUBIC_SAMPLES 4
@@ -235,7 +236,42 @@ static projcurve_status keep_stretch(projcurve_context *ctx, const pc_loop_sampl
         st = copy_pieces(ctx, s, src, sr, dst);
     if (st == PROJCURVE_OK)
         st = copy_compact(ctx, src, sr, dst);
+    /* a stretch across the face's seam keeps its jumps (the writers split
+     * its curve there, src/io/seam_split.c) */
+    if (st == PROJCURVE_OK)
+        st = pc_seam_restrict_records(ctx, src, sr->ta, sr->tb, dst);
     return st;
+}
+
+/* Points of a stretch classified when its midpoint lies in the loops' ON
+ * band (below): at s = k / PC_CLIP_SIDE_SAMPLES. */
+#define PC_CLIP_SIDE_SAMPLES 8
+
+/* 1 when the stretch [ta, tb] of b (no crossing inside it) lies in the
+ * face; at_a, at_b: that end is a crossing (on a loop), else an end of
+ * the untrimmed branch. Its midpoint decides when it is IN or OUT. Within
+ * the ON band (the model's precision in (u, v): 1 % of the domain on
+ * bearing.iges face 169) it does not: the stretch from a crossing to a
+ * branch end just beyond the loop (there 0.015 outside, its midpoint
+ * 0.007) would be kept whole, its end outside the face. Then the stretch
+ * is kept unless one of its points at the samples (its crossing ends
+ * left out: they lie on the loop to the crossing's tolerance, or less
+ * where refining them failed) lies OUT: a stretch that runs along the
+ * loop within the band stays, as before. */
+static int stretch_inside(const pc_loop_samples *s, const pc_projector *proj, const pc_branch *b,
+                          double ta, double tb, int at_a, int at_b)
+{
+    double uv[2];
+    point_at(proj, b, 0.5 * (ta + tb), uv);
+    const pc_where mid = pc_classify(&s->face->cls, uv[0], uv[1]);
+    if (mid != PC_ON)
+        return mid == PC_IN;
+    for (int k = at_a ? 1 : 0; k <= (at_b ? PC_CLIP_SIDE_SAMPLES - 1 : PC_CLIP_SIDE_SAMPLES); ++k) {
+        point_at(proj, b, ta + (tb - ta) * k / PC_CLIP_SIDE_SAMPLES, uv);
+        if (pc_classify(&s->face->cls, uv[0], uv[1]) == PC_OUT)
+            return 0;
+    }
+    return 1;
 }
 
 static projcurve_status clip_branch(projcurve_context *ctx, const pc_loop_samples *s,
@@ -261,12 +297,7 @@ static projcurve_status clip_branch(projcurve_context *ctx, const pc_loop_sample
         const double ta = ha ? ha->t : T0, tb = hb ? hb->t : T1;
         if (ha && !ha->refined)
             ++*unrefined;
-        int keep = 0;
-        if (tb > ta) {
-            double uv[2];
-            point_at(proj, b, 0.5 * (ta + tb), uv);
-            keep = pc_classify(&s->face->cls, uv[0], uv[1]) != PC_OUT;
-        }
+        const int keep = tb > ta && stretch_inside(s, proj, b, ta, tb, ha != NULL, hb != NULL);
         if (keep) {
             if (!open)
                 cur = (stretch){.ta = ta, .ha = ha};

@@ -70,7 +70,10 @@ projcurve_status pc_surface_foot_points_exhaustive(projcurve_context *ctx,
 /* Newton on G = 0 from uv (updated in place, kept in the domain), damped by
  * backtracking on |G|^2, with steps limited to max_step_u, max_step_v
  * (parameter units); it gives up when it strays more than 4 such steps from
- * its start. Returns 1 when it converged to a foot point. */
+ * its start. Returns 1 when it converged to a foot point. Both solvers
+ * keep out of knot spans of rounding width at the ends of the domain
+ * (surface_newton.c, THIN_END_SPAN): their inner end is the same curve of
+ * S, with meaningful derivatives. */
 int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
                            double max_step_u, double max_step_v, double uv[2]);
 

@@ -52,6 +52,38 @@ static void frame_at(const pc_nurbs_surface *s, pc_vec3 p, const double uv[2], l
 
 static double clampd(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
+/* A knot span at an end of the domain narrower than this fraction of the
+ * domain is of rounding width (hammer.iges has [-1.2e-15, 0] in v, its
+ * control rows equal): in space it is its edge curve, and its derivatives,
+ * divided by that width, are noise (there Sv = 0, so a minimiser that the
+ * bound clamps into it stops there, 1.4 model units from a point of S a
+ * little inside). The solvers keep out of such end spans: their inner end
+ * is the same curve of S, with the neighbouring span's derivatives. */
+#define THIN_END_SPAN 1e-12
+
+/* The part of [knots[deg], knots[n]] left when the end spans narrower than
+ * THIN_END_SPAN of it are cut off, into bound[0..1]. */
+static void solid_range(const double *knots, size_t n, int deg, double bound[2])
+{
+    const size_t first = (size_t)deg;
+    const double thin = THIN_END_SPAN * (knots[n] - knots[first]);
+    double lo = knots[first], hi = knots[n];
+    /* bounded: each pass moves one knot inward */
+    for (size_t k = first; k < n && knots[k + 1] - knots[k] <= thin; ++k)
+        lo = knots[k + 1];
+    for (size_t k = n; k > first && knots[k] - knots[k - 1] <= thin; --k)
+        hi = knots[k - 1];
+    bound[0] = lo < hi ? lo : knots[first];
+    bound[1] = lo < hi ? hi : knots[n];
+}
+
+/* The box the solvers move in: the domain without thin end spans. */
+static void solver_box(const pc_nurbs_surface *s, double dom[4])
+{
+    solid_range(s->knots_u, s->n_u, s->deg_u, dom);
+    solid_range(s->knots_v, s->n_v, s->deg_v, dom + 2);
+}
+
 static int is_foot(const local_frame *f, double model_size)
 {
     const double rn = vec3_norm(f->r);
@@ -71,7 +103,8 @@ static double g_norm2(const local_frame *f) { return f->g[0] * f->g[0] + f->g[1]
 int pc_surface_foot_newton(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
                            double max_step_u, double max_step_v, double uv[2])
 {
-    const double *dom = s->domain;
+    double dom[4];
+    solver_box(s, dom);
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
     const double x0[2] = {x[0], x[1]};
     local_frame f;
@@ -151,7 +184,8 @@ static void descent_direction(const local_frame *f, const int free_dir[2], doubl
 static double minimize_masked(const pc_nurbs_surface *s, pc_vec3 p, double model_size,
                               double uv[2], const int movable[2])
 {
-    const double *dom = s->domain;
+    double dom[4];
+    solver_box(s, dom);
     double x[2] = {clampd(uv[0], dom[0], dom[1]), clampd(uv[1], dom[2], dom[3])};
     /* The current frame and the trial one; an accepted step swaps them
      * (copying a frame costs more than the step's bookkeeping). */

@@ -78,4 +78,16 @@ projcurve_status pc_seam_join_compact(projcurve_context *ctx, pc_branch *b,
  * domain minus shift is its unwrapped (u, v). */
 void pc_seam_unwrap_shift(const pc_branch *b, double t, double shift[2]);
 
+/* The seam records of the part [a, b] of src (a < b, in t) into dst, a
+ * branch made of that part (its compact forms already restricted to
+ * [a, b], pc_bspline_restrict): the records of src with a < t_k < b
+ * (dst's own are replaced), and dst's compact pcurve shifted by the sum
+ * of src's jumps at or before a (pc_seam_unwrap_shift), so that it starts
+ * in the domain and (u, v) on S at t is its value plus the sum of dst's
+ * jumps with t_k <= t, as for any branch (docs/seams.md). A constant shift
+ * of the poles moves a rational B-spline by that constant, exactly.
+ * Statuses: OK, NO_MEMORY (dst unchanged). */
+projcurve_status pc_seam_restrict_records(projcurve_context *ctx, const pc_branch *src,
+                                          double a, double b, pc_branch *dst);
+
 #endif /* PC_SEAM_SEAM_H */

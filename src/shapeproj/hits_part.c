@@ -11,6 +11,7 @@
 #include "common/array.h"
 #include "common/error.h"
 #include "faceproj/piece_cut.h"
+#include "seam/seam.h"
 
 /* Smallest part of a composed piece kept, in its s: below it, a point. */
 #define PC_HITS_PART_MIN_S 1e-12
@@ -240,6 +241,8 @@ static projcurve_status add_span(projcurve_context *ctx, const pc_track *k, cons
         st = copy_pieces(ctx, b, sp, uv_s, uv_e, nb);
     if (st == PROJCURVE_OK)
         st = copy_compact(ctx, b, sp, nb);
+    if (st == PROJCURVE_OK && sp->e > sp->s)
+        st = pc_seam_restrict_records(ctx, b, sp->s, sp->e, nb);
     return st;
 }
 

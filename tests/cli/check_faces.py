@@ -2,11 +2,12 @@
 """projcurve project --faces on the B-rep cases (tests/data/cases-brep):
 the JSON's connected curves (and, where the notes say, face pieces) against
 the MANIFEST's EXPECT, its fields, and the IGES and STEP files written
-re-read by `projcurve info`: one curve per input curve plus one per face
-piece (each piece is a curve on its face's surface), and, where the Open
-CASCADE checkers were built (PC_OCCT_IGES_CHECK, PC_OCCT_STEP_CHECK name
-them), by Open CASCADE: one 142 / SURFACE_CURVE per piece, the pcurve on
-its surface within twice eps_D of the 3D curve."""
+re-read by `projcurve info`: one curve per input curve plus one per seam
+segment of each face piece (seams + 1: a curve on its face's surface per
+segment), and, where the Open CASCADE checkers were built
+(PC_OCCT_IGES_CHECK, PC_OCCT_STEP_CHECK name them), by Open CASCADE: one
+142 / SURFACE_CURVE per segment, the pcurve on its surface within twice
+eps_D of the 3D curve."""
 import json
 import os
 import re
@@ -18,7 +19,7 @@ END_KINDS = {"curve_end", "boundary", "silhouette", "curvature_centre", "limit",
              "curve_crossing", "trim", "occluded", "max_distance"}
 PIECE_FIELDS = {"face": int, "shape_face": int, "t_range": list, "start": str, "end": str,
                 "degree": int, "control_points": int, "pcurve_degree": int,
-                "pcurve_control_points": int}
+                "pcurve_control_points": int, "seams": int}
 
 
 def manifest(data):
@@ -78,22 +79,17 @@ def info_counts(exe, path):
 
 # Cases whose written STEP Open CASCADE is known to reject, with why; the
 # check must keep failing on them (so that a fix shows here).
-OPEN_OCCT_STEP = {
-    name: "a face piece joined across its face's seam is written as one "
-          "SURFACE_CURVE whose pcurve leaves the surface's domain (u up to 7.49 "
-          "on [0, 2 pi]): the writers' seam split (src/io/seam_split.c) gets no "
-          "seam record from the face result"
-    for name in ("cyl_analytic_seam_conical", "sphere_analytic_conical_outside")}
+OPEN_OCCT_STEP = {}
 
 
-def occt_check(out, pieces, tol, name, check):
+def occt_check(out, segments, tol, name, check):
     """Open CASCADE reads the written files (skipped where not built)."""
     for ext, env, extra in (("igs", "PC_OCCT_IGES_CHECK", []),
                             ("step", "PC_OCCT_STEP_CHECK", [str(tol)])):
         exe = os.environ.get(env)
         if not exe:
             continue
-        proc = subprocess.run([exe, "--file", out[ext], str(pieces)] + extra,
+        proc = subprocess.run([exe, "--file", out[ext], str(segments)] + extra,
                               capture_output=True, text=True, timeout=120,
                               env=dict(os.environ, ASAN_OPTIONS="detect_leaks=0"))
         if ext == "step" and name in OPEN_OCCT_STEP:
@@ -130,6 +126,9 @@ def part_faces(exe, data, work, run, check):
         want_curves, want_pieces = expected(case["notes"])
         got_curves = sum(len(r["curves"]) for r in result["runs"])
         got_pieces = sum(len(c["pieces"]) for r in result["runs"] for c in r["curves"])
+        # a piece across its face's seam is written per seam segment
+        got_segments = sum(p["seams"] + 1 for r in result["runs"] for c in r["curves"]
+                           for p in c["pieces"])
         check(got_curves == want_curves == result["connected_curves"],
               f"{name}: {got_curves} connected curves ({result['connected_curves']} counted), "
               f"MANIFEST expects {want_curves}")
@@ -144,13 +143,14 @@ def part_faces(exe, data, work, run, check):
             check(counts is not None, f"{name}: info reads the {ext} written")
             if counts is None:
                 continue
-            # every face piece is written, each as a curve on its surface
-            check(counts[1] == n_input + got_pieces,
+            # every face piece is written, each seam segment of it as a
+            # curve on its surface
+            check(counts[1] == n_input + got_segments,
                   f"{name}: {ext} holds {counts[1]} curves, expected {n_input} input + "
-                  f"{got_pieces} pieces")
+                  f"{got_segments} segments of {got_pieces} pieces")
             # and the surfaces of the faces it lies on (faces may share one)
             check(counts[0] >= 1, f"{name}: {ext} holds no surface for {len(faces)} faces")
-        occt_check(out, got_pieces, 2.0 * float(case["tol_dist"]), name, check)
+        occt_check(out, got_segments, 2.0 * float(case["tol_dist"]), name, check)
     # --faces picks shapes; --surface one surface: not both
     run([exe, "project", os.path.join(base, "shell_2x2.step"), "--faces", "--surface", "0",
          "--dir", "0,0,-1"], 2, "--faces with --surface")
