@@ -23,6 +23,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "brep/shape.h"
 #include "check.h"
@@ -275,6 +276,28 @@ static int covered(const projcurve_shape_result *r, size_t fi, double t)
     return 0;
 }
 
+/* Branches of face fi projected alone over the whole curve, at an
+ * arc-length step fraction (0: the default), and the CPU seconds taken. */
+static size_t face_alone(const projcurve_face *face, const projcurve_curve *curve,
+                         const double dir[3], double fraction, double *seconds)
+{
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(NULL, &o));
+    if (fraction > 0.0)
+        CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_ARC_STEP_FRACTION, fraction));
+    projcurve_shape_result *r = NULL;
+    const clock_t c0 = clock();
+    CHECK_OK(projcurve_project_face(NULL, face, curve, PROJCURVE_PROJECT_DIRECTIONAL, dir, o, &r));
+    *seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    const projcurve_result *fr = NULL;
+    if (r != NULL && projcurve_shape_result_face_count(r) > 0)
+        CHECK_OK(projcurve_shape_result_face(NULL, r, 0, NULL, &fr, NULL, NULL));
+    const size_t n = fr != NULL ? projcurve_result_branch_count(fr) : 0;
+    projcurve_shape_result_destroy(r);
+    projcurve_options_destroy(o);
+    return n;
+}
+
 typedef struct tally {
     size_t grid_hits, lib_hits, missed, faces_missed;
 } tally;
@@ -315,6 +338,15 @@ static void check_face(const projcurve_shape *shape, size_t fi, const frame *f,
         printf("face %zu (box diagonal %.3g of the model): %zu t with a hit (grid + Newton), "
                "%zu (intersect_line), %zu not covered by a piece [%.5f, %.5f]\n",
                fi, box_diag / f->size, gh, lh, miss, t_first, t_last);
+    if (miss > 0) {
+        double d[3] = {0, 0, 0}, s0 = 0, s1 = 0;
+        d[f->a] = -1.0;
+        const size_t n0 = face_alone(face, curve, d, 0.0, &s0);
+        const size_t n1 = face_alone(face, curve, d, 1.0 / 4096, &s1);
+        printf("  face %zu alone: %zu branches (%.3f s) at the default step, %zu (%.3f s) at "
+               "ARC_STEP_FRACTION 1/4096\n",
+               fi, n0, s0, n1, s1);
+    }
     T->grid_hits += gh;
     T->lib_hits += lh;
     T->missed += miss;
@@ -343,8 +375,11 @@ int main(void)
     double dir[3] = {0, 0, 0};
     dir[f.a] = -1.0;
     projcurve_shape_result *r = NULL;
+    const clock_t c0 = clock();
     CHECK_OK(projcurve_project_shape(NULL, shape, curve, PROJCURVE_PROJECT_DIRECTIONAL, dir,
                                      NULL, &r));
+    printf("shape projection: %.3f s CPU, %zu connected curves\n",
+           (double)(clock() - c0) / CLOCKS_PER_SEC, projcurve_shape_result_curve_count(r));
     tally T = {0, 0, 0, 0};
     for (size_t fi = 0; fi < projcurve_shape_face_count(shape); ++fi)
         check_face(shape, fi, &f, curve, r, &T);
