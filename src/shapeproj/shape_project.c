@@ -17,6 +17,8 @@
 #include "shapeproj/chain.h"
 #include "shapeproj/face_select.h"
 #include "shapeproj/t_ranges.h"
+#include "shapeproj/reach_curve.h"
+#include "geom/curve.h"
 #include "shapeproj/shape_hits.h"
 
 static const projcurve_face *face_of(const projcurve_shape *shape, const projcurve_face *face,
@@ -97,8 +99,16 @@ static projcurve_status project_if_reached(projcurve_context *ctx, const projcur
                                            projcurve_result **out, pc_branch_trim **trims,
                                            size_t *unrefined)
 {
-    if (ranges->count > 0)
-        return pc_face_project(ctx, face, curve, spec, p, out, trims, unrefined);
+    if (ranges->count > 0) {
+        /* a short reach is projected alone: steps relative to it (reach_curve.h) */
+        projcurve_curve *reach = NULL;
+        projcurve_status st = pc_reach_curve(ctx, curve, ranges, &reach);
+        if (st == PROJCURVE_OK)
+            st = pc_face_project(ctx, face, reach ? reach : curve, spec, p, out, trims,
+                                 unrefined);
+        pc_curve_destroy(reach);
+        return st;
+    }
     projcurve_result *r = NULL;
     const projcurve_status st = pc_result_create(ctx, 3, &r);
     if (st != PROJCURVE_OK)

@@ -15,7 +15,9 @@
  * hit lost). The test is exact for a piece's box (face_select.h).
  *
  * A face with no range is not projected (shape_project.c): its untrimmed
- * projection has no point. A face with ranges is projected over the whole
+ * projection has no point. A face whose ranges have a short hull is
+ * projected over the curve restricted to it (reach_curve.h: else a small
+ * face is missed between two checks of the sweep); otherwise over the whole
  * curve: the tracer's steps are fractions of the curve's domain and of the
  * projection's length estimated over it (trace/), so the part of the curve
  * over a range would be traced more finely than the whole curve is there,
