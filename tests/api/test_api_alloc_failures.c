@@ -541,14 +541,14 @@ static void check_entry(const entry *e)
            e->name, total, n_entry_sites, runs, no_memory, same);
 }
 
-/* Reads "K/N" into *part; N must be PARTS. Returns 0 when it cannot. */
-static int parse_part(const char *arg, int *part)
+/* Reads "K/N" into *k_out; N must be PARTS. Returns 0 when it cannot. */
+static int parse_part(const char *arg, int *k_out)
 {
     int k = -1, n = 0;
     char tail = 0;
     if (sscanf(arg, "%d/%d%c", &k, &n, &tail) != 2 || n != PARTS || k < 0 || k >= n)
         return 0;
-    *part = k;
+    *k_out = k;
     return 1;
 }
 
