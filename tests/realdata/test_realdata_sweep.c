@@ -84,11 +84,6 @@
 #define MEMORY_HEADROOM_MIB 128
 #define MAX_JOBS 4
 #define DIAGONAL_POLES 12
-/* Oracle mesh cells per knot span, and bounds per side (the ray oracle's
- * chord error is then ~1e-4 of the size on the real surfaces). */
-#define CELLS_PER_SPAN 8
-#define CELLS_MIN 48
-#define CELLS_MAX 256
 #define COMPLETENESS_T 32
 #define MAX_PIECE_SAMPLES 40000
 #define MAX_PRINTED 20000
@@ -196,13 +191,6 @@ typedef struct sweep {
     size_t file_run[N_FILES], file_failed[N_FILES];
 } sweep;
 
-static void oracle_eval(void *user, double u, double v, int n_deriv, double out[9])
-{
-    if (projcurve_surface_eval(NULL, user, u, v, n_deriv, out) != PROJCURVE_OK)
-        for (int k = 0; k < 9; ++k)
-            out[k] = NAN;
-}
-
 static int on_surface_fn(void *user, double t, double out[9])
 {
     const on_surface_curve *c = user;
@@ -238,12 +226,6 @@ static int unit_normal(const projcurve_surface *s, double u, double v, double n[
     for (int c = 0; c < 3; ++c)
         n[c] /= l;
     return 1;
-}
-
-static int mesh_cells(size_t spans)
-{
-    const size_t c = CELLS_PER_SPAN * spans;
-    return c < CELLS_MIN ? CELLS_MIN : (c > CELLS_MAX ? CELLS_MAX : (int)c);
 }
 
 /* The average unit normal over a 5 x 5 grid of the domain, or the centre's
@@ -326,8 +308,8 @@ static void prepare_surface(const projcurve_surface *s, surface_data *sd)
     projcurve_surface_info(NULL, s, NULL, NULL, NULL, NULL, &spans_u, &spans_v, NULL);
     const double ext[3] = {box[3] - box[0], box[4] - box[1], box[5] - box[2]};
     sd->size = norm3(ext);
-    sd->have_mesh = pc_oracle_mesh_build(&sd->mesh, oracle_eval, (void *)s, dom,
-                                         mesh_cells(spans_u), mesh_cells(spans_v));
+    sd->have_mesh = pc_oracle_mesh_build(&sd->mesh, pc_sweep_surface_eval, (void *)s, dom,
+                                         pc_sweep_mesh_cells(spans_u), pc_sweep_mesh_cells(spans_v));
     average_normal(s, dom, sd->normal);
     sd->lifted = lifted_diagonal(s, dom, sd->normal, LIFT_REL * sd->size);
     /* The curve on S: the anti-diagonal (5% to 95% in u, 90% to 15% in v). */

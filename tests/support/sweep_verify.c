@@ -783,3 +783,16 @@ void pc_sweep_verify(const pc_sweep_input *in, const projcurve_result *r,
     }
     free(vf.pieces);
 }
+
+void pc_sweep_surface_eval(void *user, double u, double v, int n_deriv, double out[9])
+{
+    if (projcurve_surface_eval(NULL, user, u, v, n_deriv, out) != PROJCURVE_OK)
+        for (int k = 0; k < 9; ++k)
+            out[k] = NAN;
+}
+
+int pc_sweep_mesh_cells(size_t spans)
+{
+    const size_t cells = 8 * spans;
+    return cells < 48 ? 48 : (cells > 256 ? 256 : (int)cells);
+}

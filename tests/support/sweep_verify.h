@@ -77,4 +77,13 @@ typedef struct pc_sweep_report {
 void pc_sweep_verify(const pc_sweep_input *in, const projcurve_result *r,
                       pc_sweep_report *rep);
 
+/* The oracle mesh's evaluator (pc_oracle_mesh_build) for the surface
+ * `user` (a const projcurve_surface *): projcurve_surface_eval, NaN where
+ * it fails. */
+void pc_sweep_surface_eval(void *user, double u, double v, int n_deriv, double out[9]);
+/* The sweep's mesh cells per side of a surface with `spans` knot spans
+ * that way: 8 a span, 48 to 256 (the ray oracle's chord error is then
+ * ~1e-4 of the size on the real surfaces). */
+int pc_sweep_mesh_cells(size_t spans);
+
 #endif /* PC_TEST_SWEEP_VERIFY_H */

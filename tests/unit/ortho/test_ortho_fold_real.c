@@ -108,13 +108,6 @@ static double brute_distance(const brute *b, const double uv[2], const double x[
     return best;
 }
 
-static void oracle_eval(void *user, double u, double v, int n_deriv, double out[9])
-{
-    if (projcurve_surface_eval(NULL, user, u, v, n_deriv, out) != PROJCURVE_OK)
-        for (int k = 0; k < 9; ++k)
-            out[k] = NAN;
-}
-
 static int on_fold(const projcurve_surface *s, const double uv[2])
 {
     double f[9];
@@ -193,7 +186,7 @@ int main(void)
     const int cu = su * 8 < 48 ? 48 : (su * 8 > 256 ? 256 : (int)su * 8);
     const int cv = sv * 8 < 48 ? 48 : (sv * 8 > 256 ? 256 : (int)sv * 8);
     pc_oracle_mesh mesh;
-    CHECK(pc_oracle_mesh_build(&mesh, oracle_eval, (void *)b.s, b.dom, cu, cv));
+    CHECK(pc_oracle_mesh_build(&mesh, pc_sweep_surface_eval, (void *)b.s, b.dom, cu, cv));
     const pc_sweep_input in = {b.s, b.c, 1, {0, 0, 0}, &mesh, eps_d, sqrt(d2(box, box + 3)),
                                2.0 * eps_d, 32, 40000};
     pc_sweep_report rep;

@@ -23,13 +23,6 @@
 #define SURFACE 9
 #define CURVE 92
 
-static void oracle_eval(void *user, double u, double v, int n_deriv, double out[9])
-{
-    if (projcurve_surface_eval(NULL, user, u, v, n_deriv, out) != PROJCURVE_OK)
-        for (int k = 0; k < 9; ++k)
-            out[k] = NAN;
-}
-
 int main(void)
 {
     projcurve_model *m = NULL;
@@ -50,7 +43,7 @@ int main(void)
     const int cu = su * 8 < 48 ? 48 : (su * 8 > 256 ? 256 : (int)su * 8);
     const int cv = sv * 8 < 48 ? 48 : (sv * 8 > 256 ? 256 : (int)sv * 8);
     pc_oracle_mesh mesh;
-    CHECK(pc_oracle_mesh_build(&mesh, oracle_eval, (void *)s, dom, cu, cv));
+    CHECK(pc_oracle_mesh_build(&mesh, pc_sweep_surface_eval, (void *)s, dom, cu, cv));
     double diag = 0.0;
     for (int k = 0; k < 3; ++k)
         diag += (box[k + 3] - box[k]) * (box[k + 3] - box[k]);

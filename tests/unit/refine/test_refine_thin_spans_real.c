@@ -24,19 +24,6 @@
 
 #define SURFACE 16
 
-static void oracle_eval(void *user, double u, double v, int n_deriv, double out[9])
-{
-    if (projcurve_surface_eval(NULL, user, u, v, n_deriv, out) != PROJCURVE_OK)
-        for (int k = 0; k < 9; ++k)
-            out[k] = NAN;
-}
-
-/* The sweep's mesh: 8 cells per span, 48 to 256 per side. */
-static int mesh_cells(size_t spans)
-{
-    return spans * 8 < 48 ? 48 : (spans * 8 > 256 ? 256 : (int)spans * 8);
-}
-
 static void check_curve(const projcurve_model *m, const pc_oracle_mesh *mesh, size_t curve)
 {
     const projcurve_surface *s = projcurve_model_surface(m, SURFACE);
@@ -77,8 +64,8 @@ int main(void)
     projcurve_surface_domain(NULL, s, dom);
     projcurve_surface_info(NULL, s, NULL, NULL, NULL, NULL, &su, &sv, NULL);
     pc_oracle_mesh mesh;
-    CHECK(pc_oracle_mesh_build(&mesh, oracle_eval, (void *)s, dom, mesh_cells(su),
-                               mesh_cells(sv)));
+    CHECK(pc_oracle_mesh_build(&mesh, pc_sweep_surface_eval, (void *)s, dom, pc_sweep_mesh_cells(su),
+                               pc_sweep_mesh_cells(sv)));
     check_curve(m, &mesh, 26);
     check_curve(m, &mesh, 87);
     pc_oracle_mesh_free(&mesh);

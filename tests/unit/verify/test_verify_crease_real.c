@@ -23,19 +23,6 @@
 #include "ray_oracle.h"
 #include "sweep_verify.h"
 
-static void oracle_eval(void *user, double u, double v, int n_deriv, double out[9])
-{
-    if (projcurve_surface_eval(NULL, user, u, v, n_deriv, out) != PROJCURVE_OK)
-        for (int k = 0; k < 9; ++k)
-            out[k] = NAN;
-}
-
-/* The sweep's mesh: 8 cells per span, 48 to 256 per side. */
-static int mesh_cells(size_t spans)
-{
-    return spans * 8 < 48 ? 48 : (spans * 8 > 256 ? 256 : (int)spans * 8);
-}
-
 static void check_pair(const char *file, size_t surface, size_t curve)
 {
     projcurve_model *m = NULL;
@@ -53,8 +40,8 @@ static void check_pair(const char *file, size_t surface, size_t curve)
     for (int k = 0; k < 3; ++k)
         diag += (box[k + 3] - box[k]) * (box[k + 3] - box[k]);
     pc_oracle_mesh mesh;
-    CHECK(pc_oracle_mesh_build(&mesh, oracle_eval, (void *)s, dom, mesh_cells(su),
-                               mesh_cells(sv)));
+    CHECK(pc_oracle_mesh_build(&mesh, pc_sweep_surface_eval, (void *)s, dom, pc_sweep_mesh_cells(su),
+                               pc_sweep_mesh_cells(sv)));
     projcurve_result *r = NULL;
     CHECK_OK(projcurve_project_orthogonal(NULL, s, c, NULL, &r));
     projcurve_result_stat(NULL, r, PROJCURVE_STAT_TOL_DISTANCE, &eps_d);
