@@ -83,49 +83,83 @@ static void compare_curves(projcurve_context *ctx, const projcurve_curve *a,
     free_curve(&y);
 }
 
-static int surface_rational(projcurve_context *ctx, const projcurve_surface *s)
+/* What bounds the rounding of a surface's evaluation: its NURBS data. */
+typedef struct surface_net {
+    int du, dv, rational;
+    size_t nu, nv;
+    double *ctrl, *w, *ku, *kv;
+} surface_net;
+
+static void free_net(surface_net *n)
 {
-    int du, dv, rational = 0;
-    size_t nu, nv, su, sv;
-    if (projcurve_surface_info(ctx, s, &du, &dv, &nu, &nv, &su, &sv, &rational) != PROJCURVE_OK)
-        finding("surface_info failed", ctx);
-    return rational;
+    free(n->ctrl);
+    free(n->w);
+    free(n->ku);
+    free(n->kv);
 }
 
-/* max w / min w of a rational surface (1 for a polynomial one): the
- * rounding of its evaluation with derivatives grows with it (up to its
- * square in the second derivatives, through w'' / w). */
-static double weight_spread(projcurve_context *ctx, const projcurve_surface *s)
+static void read_net(projcurve_context *ctx, const projcurve_surface *s, surface_net *n)
 {
-    int du, dv, rational = 0;
-    size_t nu, nv, su, sv;
-    if (projcurve_surface_info(ctx, s, &du, &dv, &nu, &nv, &su, &sv, &rational) != PROJCURVE_OK)
+    size_t su, sv;
+    memset(n, 0, sizeof *n);
+    if (projcurve_surface_info(ctx, s, &n->du, &n->dv, &n->nu, &n->nv, &su, &sv, &n->rational) !=
+        PROJCURVE_OK)
         finding("surface_info failed", ctx);
-    if (!rational)
+    const size_t count = n->nu * n->nv;
+    n->ctrl = malloc(3 * count * sizeof *n->ctrl);
+    n->w = malloc(count * sizeof *n->w);
+    n->ku = malloc((n->nu + (size_t)n->du + 1) * sizeof *n->ku);
+    n->kv = malloc((n->nv + (size_t)n->dv + 1) * sizeof *n->kv);
+    if (!n->ctrl || !n->w || !n->ku || !n->kv ||
+        projcurve_surface_nurbs_data(ctx, s, n->ctrl, n->w, n->ku, n->kv) != PROJCURVE_OK)
+        finding("surface_nurbs_data failed", ctx);
+}
+
+/* max w / min w of a rational net (1 for a polynomial one): the rounding
+ * of its evaluation with derivatives grows with it (up to its square in
+ * the second derivatives, through w'' / w). */
+static double weight_spread(const surface_net *n)
+{
+    if (!n->rational)
         return 1.0;
-    const size_t n = nu * nv;
-    double *ctrl = malloc(3 * n * sizeof *ctrl), *w = malloc(n * sizeof *w);
-    double *ku = malloc((nu + (size_t)du + 1) * sizeof *ku), *kv = malloc((nv + (size_t)dv + 1) * sizeof *kv);
     double lo = INFINITY, hi = 0.0;
-    if (ctrl && w && ku && kv && projcurve_surface_nurbs_data(ctx, s, ctrl, w, ku, kv) == PROJCURVE_OK)
-        for (size_t i = 0; i < n; ++i) {
-            lo = fmin(lo, fabs(w[i]));
-            hi = fmax(hi, fabs(w[i]));
-        }
-    free(ctrl);
-    free(w);
-    free(ku);
-    free(kv);
+    for (size_t i = 0; i < n->nu * n->nv; ++i) {
+        lo = fmin(lo, fabs(n->w[i]));
+        hi = fmax(hi, fabs(n->w[i]));
+    }
     return lo > 0.0 && hi >= lo ? hi / lo : 1.0;
 }
 
-/* Surfaces are compared on a grid with derivatives. A
- * non-rational surface reads back bit for bit; a rational one may come
- * back with its weights scaled by a common factor (all equal: as a
- * polynomial surface), the same surface evaluated with other rounding
- * (1e-12 of the largest value covers the division by w of a few terms,
- * times the square of the weights' spread: a fuzzed net with weights far
- * apart rounds its second derivatives that much more). */
+static double largest_point(const surface_net *n)
+{
+    double m = 0.0;
+    for (size_t i = 0; i < 3 * n->nu * n->nv; ++i)
+        m = fmax(m, fabs(n->ctrl[i]));
+    return m;
+}
+
+/* Width of the non-empty knot span that evaluates x (the last one at the
+ * end of the domain). */
+static double span_width(const double *k, size_t n_points, int degree, double x)
+{
+    double width = k[n_points] - k[degree];
+    for (size_t j = (size_t)degree; j < n_points; ++j)
+        if (k[j + 1] > k[j] && (x < k[j + 1] || j + 1 == n_points))
+            return k[j + 1] - k[j];
+    return width;
+}
+
+/* Surfaces are compared on a grid with derivatives. A non-rational surface
+ * reads back bit for bit; a rational one may come back with its weights
+ * scaled by a common factor (all equal: as a polynomial surface), the same
+ * surface evaluated with other rounding. A derivative of order (a, b) is a
+ * sum of control points times basis derivatives of size up to
+ * (2 p / h_u)^a (2 q / h_v)^b, h the width of the knot span evaluated: its
+ * rounding is relative to those terms, not to the result, which on a
+ * narrow span or a nearly flat net is their small difference. 1e-12 of
+ * the terms covers the division by w of a few of them, times the square
+ * of the weights' spread (a net with weights far apart rounds its second
+ * derivatives that much more). */
 static void compare_surfaces(projcurve_context *ctx, const projcurve_surface *a,
                              const projcurve_surface *b)
 {
@@ -135,25 +169,33 @@ static void compare_surfaces(projcurve_context *ctx, const projcurve_surface *a,
         finding("a surface domain cannot be read", ctx);
     if (memcmp(da, db, sizeof da) != 0)
         finding("the surface read back has another domain", ctx);
-    const int exact = !surface_rational(ctx, a) && !surface_rational(ctx, b);
-    const double spread = fmax(weight_spread(ctx, a), weight_spread(ctx, b));
-    const double rel = 1e-12 * spread * spread;
+    surface_net na, nb;
+    read_net(ctx, a, &na);
+    read_net(ctx, b, &nb);
+    const int exact = !na.rational && !nb.rational;
+    const double spread = fmax(weight_spread(&na), weight_spread(&nb));
+    const double rel = 1e-12 * spread * spread, size = largest_point(&na);
+    static const int order_u[6] = {0, 1, 0, 2, 1, 0}, order_v[6] = {0, 0, 1, 0, 1, 2};
     for (int i = 0; i <= 4; ++i)
         for (int j = 0; j <= 4; ++j) {
             const double u = da[0] + (da[1] - da[0]) * i / 4.0, v = da[2] + (da[3] - da[2]) * j / 4.0;
-            double pa[18], pb[18], scale = 0.0;
+            const double gu = 2.0 * na.du / span_width(na.ku, na.nu, na.du, u);
+            const double gv = 2.0 * na.dv / span_width(na.kv, na.nv, na.dv, v);
+            double pa[18], pb[18];
             if (projcurve_surface_eval(ctx, a, u, v, 2, pa) != PROJCURVE_OK ||
                 projcurve_surface_eval(ctx, b, u, v, 2, pb) != PROJCURVE_OK)
                 finding("a surface cannot be evaluated in its domain", ctx);
-            for (int k = 0; k < 18; ++k)
-                scale = fmax(scale, fabs(pa[k]));
-            for (int k = 0; k < 18; ++k)
-                if (exact ? pa[k] != pb[k] : !(fabs(pa[k] - pb[k]) <= rel * scale)) {
+            for (int k = 0; k < 18; ++k) {
+                const double terms = size * pow(gu, order_u[k / 3]) * pow(gv, order_v[k / 3]);
+                if (exact ? pa[k] != pb[k] : !(fabs(pa[k] - pb[k]) <= rel * terms)) {
                     fprintf(stderr, "(%.17g, %.17g) value %d: %.17g written, %.17g read\n", u, v,
                             k, pa[k], pb[k]);
                     finding("the surface read back evaluates differently", ctx);
                 }
+            }
         }
+    free_net(&na);
+    free_net(&nb);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
