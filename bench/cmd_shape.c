@@ -513,9 +513,11 @@ int pcb_cmd_shape(const pcb_args *args)
     const pcb_timing timing = pcb_timing_for(args, SHAPE_REPS, SHAPE_MIN_RUN_S);
     int failed = 0;
     shape_plot times = {.n = 0};
+    /* --quick (the CI smoke run, also under the sanitizers): the line
+     * cases of the two-face model, a second where hammer's take minutes */
     const size_t n_models = args->quick ? 1 : sizeof shape_models / sizeof *shape_models;
     for (size_t m = 0; m < n_models; ++m)
-        failed |= bench_model(args, args->quick ? shape_models[1] : shape_models[m], &timing, &json,
+        failed |= bench_model(args, args->quick ? shape_models[3] : shape_models[m], &timing, &json,
                               &times);
     pcb_json_array_end(&json);
     pcb_json_object_end(&json);

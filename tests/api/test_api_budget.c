@@ -184,7 +184,7 @@ static projcurve_options *base_options(call_kind kind)
     CHECK_OK(projcurve_options_create(NULL, &o));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_ARC_STEP_FRACTION, 1e-3));
     CHECK_OK(projcurve_options_set_double(NULL, o, PROJCURVE_OPT_TOL_DISTANCE,
-                                          kind == CALL_IMPLICIT ? 1e-5 : 1e-6));
+                                          kind == CALL_DIRECTIONAL ? 1e-6 : 1e-5));
     return o;
 }
 
