@@ -1368,7 +1368,9 @@ PROJCURVE_API projcurve_status projcurve_project_face(projcurve_context *ctx,
  * With PROJCURVE_OPT_HITS nearest, a stop by TIME_LIMIT or MAX_WORK while
  * selecting the nearest hits across the faces keeps the nearest parts of
  * the face pieces selected so far and drops the others (LIMIT_REACHED, the
- * message saying "... while selecting the nearest hits across faces").
+ * message saying "... while selecting the nearest hits across faces");
+ * each face whose pieces were not all selected then has that status too
+ * in projcurve_shape_result_face, the faces selected in full keep theirs.
  * Statuses: those of projcurve_project_face; a failed face alone does not
  * fail the call. Thread-safe for distinct contexts. */
 PROJCURVE_API projcurve_status projcurve_project_shape(projcurve_context *ctx,

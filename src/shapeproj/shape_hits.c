@@ -220,6 +220,26 @@ static projcurve_status kept_runs(projcurve_context *ctx, pc_budget *budget,
     return st;
 }
 
+/* After a stop at track `from` (tracks are ordered by part): the faces
+ * whose tracks were not all selected say so in their status, so that a
+ * caller reading one face does not take its pieces for complete. */
+static projcurve_status mark_unselected(projcurve_context *ctx, projcurve_shape_result *r,
+                                        const pc_track_set *set, size_t from,
+                                        projcurve_status stop)
+{
+    projcurve_status st = PROJCURVE_OK;
+    for (size_t k = from; st == PROJCURVE_OK && k < set->n_tracks; ++k) {
+        pc_face_part *part = &r->parts[set->tracks[k].part];
+        if (part->status != PROJCURVE_OK)
+            continue;
+        part->status = stop;
+        st = pc_face_part_set_message(ctx, part,
+                                      "the call stopped while selecting the nearest hits: "
+                                      "this face's pieces not yet selected are dropped");
+    }
+    return st;
+}
+
 projcurve_status pc_shape_hits_select(projcurve_context *ctx, projcurve_shape_result *r,
                                       const projcurve_curve *curve,
                                       const pc_projection_spec *spec, const pc_params *p,
@@ -236,7 +256,8 @@ projcurve_status pc_shape_hits_select(projcurve_context *ctx, projcurve_shape_re
      * gives a partial result, selected without polling: bounded by it) */
     pc_budget *const budget = pc_budget_if_running(p->budget);
     pc_budget_step(budget, "selecting the nearest hits across faces");
-    for (size_t i = 0; st == PROJCURVE_OK && i < set.n_tracks; ++i)
+    size_t i = 0;
+    for (; st == PROJCURVE_OK && i < set.n_tracks; ++i)
         st = set.tracks[i].whole ? pc_span_push(ctx, &spans, i, set.tracks[i].lo,
                                                 set.tracks[i].hi, -1.0)
                                  : kept_runs(ctx, budget, set.tracks, set.n_tracks, i, tol,
@@ -246,7 +267,9 @@ projcurve_status pc_shape_hits_select(projcurve_context *ctx, projcurve_shape_re
      * selected are dropped */
     const int stopped = st != PROJCURVE_OK && pc_budget_status(budget) == st;
     if (st == PROJCURVE_OK || stopped) {
-        const projcurve_status rs = pc_parts_rebuild(ctx, r, &set, &spans);
+        projcurve_status rs = pc_parts_rebuild(ctx, r, &set, &spans);
+        if (rs == PROJCURVE_OK && stopped)
+            rs = mark_unselected(ctx, r, &set, i - 1, st);
         st = rs != PROJCURVE_OK ? rs : stopped ? pc_budget_fail(budget, ctx) : st;
     }
     if (st == PROJCURVE_ERR_CALLBACK)

@@ -989,11 +989,20 @@ static void test_stop_in_shape_nearest(void)
             CHECK_OK(projcurve_shape_result_face(NULL, full, 0, NULL, &full_front, NULL, NULL));
             const size_t n_front = projcurve_result_branch_count(cut_front);
             const size_t n_back = projcurve_result_branch_count(cut_back);
+            /* a face not selected in full says so; one selected whole does not */
+            projcurve_status st_front = PROJCURVE_OK, st_back = PROJCURVE_OK;
+            const char *m_back = NULL;
+            CHECK_OK(projcurve_shape_result_face(NULL, sr, 0, NULL, NULL, &st_front, NULL));
+            CHECK_OK(projcurve_shape_result_face(NULL, sr, 1, NULL, NULL, &st_back, &m_back));
+            CHECK(st_back == PROJCURVE_ERR_LIMIT_REACHED);
+            CHECK(m_back != NULL && strstr(m_back, "not yet selected") != NULL);
             if (k == 0) {
                 CHECK(n_front == 0 && n_back == 0);
+                CHECK(st_front == PROJCURVE_ERR_LIMIT_REACHED);
             } else {
                 CHECK(n_front == 1 && same_result(cut_front, full_front));
                 CHECK(n_back <= 2);
+                CHECK(st_front == PROJCURVE_OK);
             }
         }
         projcurve_shape_result_destroy(sr);
