@@ -1,24 +1,18 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * pc_conical_project: the conical equations and the ray seed finder handed
- * to the tracing engine, then the hits kept (hits/), tolerance control and
- * composition (refine/) when asked, then the verification pass, the compact
- * forms (fit/) and the branches joined across seams (seam/) -- the stages
- * of pc_directional_project, with other equations.
+ * to the tracing engine, then the stages after tracing
+ * (stages/after_trace.h) -- pc_directional_project with other equations.
  */
 #include "conical/conical_project.h"
 
 #include "common/error.h"
 #include "conical/conical.h"
 #include "conical/conical_seeds.h"
-#include "fit/fit.h"
-#include "hits/hits.h"
 #include "point/point.h"
-#include "refine/refine.h"
-#include "seam/seam.h"
+#include "stages/after_trace.h"
 #include "trace/result.h"
 #include "trace/trace.h"
-#include "verify/verify.h"
 
 projcurve_status pc_conical_refuse_eye_on_curve(projcurve_context *ctx,
                                                 const projcurve_curve *curve, pc_vec3 eye,
@@ -69,24 +63,8 @@ projcurve_status pc_conical_project(projcurve_context *ctx, const projcurve_surf
         r->stats.tol_distance = p->tol_distance;
         st = pc_trace_branches(ctx, &proj, p, &finder.base, &config, r);
     }
-    /* the hits kept (nearest along each ray from the eye, within
-     * MAX_DISTANCE), before composing */
-    if (pc_status_keeps_result(st)) {
-        const projcurve_status hs = pc_hits_select(ctx, &proj, p, r);
-        if (hs != PROJCURVE_OK)
-            st = hs;
-    }
-    if (p->compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED) &&
-        pc_budget_status(budget) == PROJCURVE_OK) {
-        pc_budget_stage(budget, 0.5, PC_FIT_STAGE_FROM);
-        const projcurve_status cs = pc_refine_and_compose(ctx, &proj, p, r);
-        if (cs != PROJCURVE_OK)
-            st = cs;
-    }
-    /* only verified branches are returned, also from a partial result */
-    st = pc_verify_kept(ctx, &proj, p, r, st);
-    st = pc_fit_stage(ctx, &proj, p, r, st);
-    st = pc_seam_stage(ctx, surface, curve, p, r, st);
+    /* the hits kept are the nearest along each ray from the eye */
+    st = pc_stages_after_trace(ctx, &proj, surface, curve, p, r, st);
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     if (finder.line.no_memory && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))

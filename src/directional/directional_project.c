@@ -1,9 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 /*
  * pc_directional_project: the directional equations and the line seed
- * finder handed to the tracing engine, then tolerance control and
- * composition (refine/) when asked, then the verification pass and the
- * compact forms (fit/).
+ * finder handed to the tracing engine, then the stages after tracing
+ * (stages/after_trace.h).
  */
 #include "directional/directional_project.h"
 
@@ -12,13 +11,9 @@
 #include "common/error.h"
 #include "directional/directional.h"
 #include "directional/line_seeds.h"
-#include "fit/fit.h"
-#include "hits/hits.h"
-#include "refine/refine.h"
-#include "seam/seam.h"
+#include "stages/after_trace.h"
 #include "trace/result.h"
 #include "trace/trace.h"
-#include "verify/verify.h"
 
 projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_surface *surface,
                                         const projcurve_curve *curve, pc_vec3 dir,
@@ -54,28 +49,7 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
         r->stats.tol_distance = p->tol_distance;
         st = pc_trace_branches(ctx, &proj, p, &finder.base, &config, r);
     }
-    /* the hits kept (nearest, within MAX_DISTANCE), before composing */
-    if (pc_status_keeps_result(st)) {
-        const projcurve_status hs = pc_hits_select(ctx, &proj, p, r);
-        if (hs != PROJCURVE_OK)
-            st = hs;
-    }
-    /* tolerance control and composition also on a result cut by
-     * MAX_POINTS; not once the budget is spent (the traced polylines stay) */
-    if (p->compose && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED) &&
-        pc_budget_status(budget) == PROJCURVE_OK) {
-        pc_budget_stage(budget, 0.5, PC_FIT_STAGE_FROM);
-        const projcurve_status cs = pc_refine_and_compose(ctx, &proj, p, r);
-        if (cs != PROJCURVE_OK)
-            st = cs;
-    }
-    /* only verified branches are returned, also from a partial result */
-    double since = pc_stage_clock_now(p->stages);
-    st = pc_verify_kept(ctx, &proj, p, r, st);
-    since = pc_stage_clock_lap(p->stages, PC_STAGE_VERIFICATION, since);
-    st = pc_fit_stage(ctx, &proj, p, r, st);
-    pc_stage_clock_lap(p->stages, PC_STAGE_FITTING, since);
-    st = pc_seam_stage(ctx, surface, curve, p, r, st);
+    st = pc_stages_after_trace(ctx, &proj, surface, curve, p, r, st);
     if (cache.callback_failed && pc_status_keeps_result(st))
         st = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "the curve callback failed during tracing");
     if (finder.no_memory && (st == PROJCURVE_OK || st == PROJCURVE_ERR_LIMIT_REACHED))

@@ -2,25 +2,22 @@
 /*
  * pc_ortho_project and pc_ortho_project_implicit ([PW96]): the orthogonal
  * equations and foot-point seeds handed to the tracing engine, the
- * splitting at centres of curvature, tolerance control and composition,
- * verification, the compact forms (fit/); and the implicit-surface variant.
+ * splitting at centres of curvature, minima and duplicates, then the
+ * stages after tracing (stages/after_trace.h); and the implicit-surface
+ * variant.
  */
 #include "ortho/ortho_project.h"
 
 #include "common/error.h"
-#include "fit/fit.h"
-#include "hits/hits.h"
 #include "ortho/implicit.h"
 #include "ortho/ortho_centres.h"
 #include "ortho/ortho_duplicates.h"
 #include "ortho/ortho_minima.h"
 #include "ortho/ortho_projector.h"
 #include "ortho/ortho_seeds.h"
-#include "refine/refine.h"
-#include "seam/seam.h"
+#include "stages/after_trace.h"
 #include "trace/result.h"
 #include "trace/trace.h"
-#include "verify/verify.h"
 
 /* A det K = 0 end (or start) is what the engine calls a fold; for the
  * orthogonal projection that is a centre of curvature (corollary 2.1). */
@@ -69,28 +66,13 @@ projcurve_status pc_ortho_project(projcurve_context *ctx, const projcurve_surfac
         pc_ortho_drop_duplicates(&proj, r);
         name_singular_ends(r);
         r->stats.tol_distance = p->tol_distance;
-        /* the hits kept (nearest foot point, within MAX_DISTANCE) */
-        status = pc_hits_select(ctx, &proj, p, r);
+        /* the hits kept are the nearest foot points */
+        status = pc_stages_after_trace(ctx, &proj, surface, curve, p, r, traced);
     }
-    if (status == PROJCURVE_OK) {
-        if (p->compose && pc_budget_status(budget) == PROJCURVE_OK) {
-            pc_budget_stage(budget, 0.5, PC_FIT_STAGE_FROM);
-            status = pc_refine_and_compose(ctx, &proj, p, r);
-        }
-    }
-    /* only verified branches are returned, also from a partial result */
-    double since = pc_stage_clock_now(p->stages);
-    status = pc_verify_kept(ctx, &proj, p, r, status);
-    since = pc_stage_clock_lap(p->stages, PC_STAGE_VERIFICATION, since);
-    status = pc_fit_stage(ctx, &proj, p, r, status);
-    pc_stage_clock_lap(p->stages, PC_STAGE_FITTING, since);
-    status = pc_seam_stage(ctx, surface, curve, p, r, status);
     /* The projector's functions cannot report a failed curve callback
      * themselves; it is an error wherever it happened. */
     if (cache.callback_failed && pc_status_keeps_result(status))
         status = pc_fail(ctx, PROJCURVE_ERR_CALLBACK, "a curve callback failed while tracing");
-    if (status == PROJCURVE_OK)
-        status = traced;
     pc_ortho_finder_free(&finder_state);
     return pc_result_hand_out(status, budget, r, out);
 }
