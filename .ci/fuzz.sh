@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: BSD-3-Clause
-# Fuzzes every file reader, the projection pipeline and the IGES writer
-# with libFuzzer for a bounded time.
-#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 30, six targets run one per
-#                                       core: 1.5 min on 2 cores;
+# Fuzzes every file reader, the projection pipeline and the IGES and STEP
+# writers with libFuzzer for a bounded time.
+#   .ci/fuzz.sh [SECONDS_PER_TARGET]   (default 30, seven targets run one
+#                                       per core: 2 min on 2 cores;
 #                                       PROJCURVE_FUZZ_SECONDS also works)
 #   PROJCURVE_FUZZ_KEEP_CORPUS=1 keeps the corpus of earlier runs.
 # Builds the targets of tests/fuzz with clang (-DPROJCURVE_FUZZ=ON) in
@@ -38,7 +38,7 @@ fi
 
 cmake -S . -B build-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DPROJCURVE_FUZZ=ON -DPROJCURVE_BUILD_BENCH=OFF -DPROJCURVE_BUILD_CLI=OFF
-targets=(iges step gismo teapot project iges_write)
+targets=(iges step gismo teapot project iges_write step_write)
 cmake --build build-fuzz -j2 --target "${targets[@]/#/fuzz_}"
 # Every file of the committed corpora once: a past finding fails here.
 ctest --test-dir build-fuzz -R '^fuzz_.*_corpus$' --output-on-failure -j2
@@ -51,6 +51,7 @@ declare -A seeds=(
     [teapot]="$test_data/real/teapot_newell_spd.txt"
     [project]="tests/fuzz/corpus/project"
     [iges_write]="tests/fuzz/corpus/iges_write"
+    [step_write]="tests/fuzz/corpus/iges_write"
 )
 mkdir -p build-fuzz/artifacts
 # Prepares the corpus of target $1 and fuzzes it; its output goes to
@@ -72,7 +73,7 @@ fuzz_target() {
     done
     # The pipeline targets read at most ~300 bytes (fuzz_shapes.c).
     local max_len=()
-    [[ $reader == project || $reader == iges_write ]] && max_len=(-max_len=512)
+    [[ $reader == project || $reader == *_write ]] && max_len=(-max_len=512)
     build-fuzz/tests/fuzz/fuzz_$reader -max_total_time="$seconds" -timeout=10 \
         -rss_limit_mb=2048 -print_final_stats=1 "${max_len[@]}" \
         -artifact_prefix=build-fuzz/artifacts/"$reader"- "$corpus" \
