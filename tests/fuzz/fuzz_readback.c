@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
 #include "fuzz_readback.h"
 
+#include "fuzz_shapes.h"
+
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
@@ -188,3 +190,44 @@ void fuzz_compare_surfaces(projcurve_context *ctx, const projcurve_surface *a,
     free_net(&nb);
 }
 
+
+int fuzz_written_make(const uint8_t *data, size_t size, fuzz_written *out)
+{
+    memset(out, 0, sizeof *out);
+    if (projcurve_context_create(PROJCURVE_VERSION_MAJOR, &out->ctx) != PROJCURVE_OK)
+        return 0;
+    fuzz_bytes b = {data, size, 0};
+    projcurve_options *o = NULL;
+    double dir[3];
+    if (fuzz_make_surface(out->ctx, &b, &out->s) != PROJCURVE_OK ||
+        fuzz_make_curve(out->ctx, &b, &out->c) != PROJCURVE_OK)
+        return 0;
+    fuzz_make_direction(&b, dir);
+    if (fuzz_make_options(out->ctx, &b, &o) != PROJCURVE_OK)
+        return 0;
+    if (fuzz_byte(&b) & 1)
+        (void)projcurve_project_directional(out->ctx, out->s, out->c, dir, o, &out->r);
+    projcurve_options_destroy(o);
+    return 1;
+}
+
+void fuzz_written_free(fuzz_written *w)
+{
+    projcurve_result_destroy(w->r);
+    projcurve_curve_destroy(w->c);
+    projcurve_surface_destroy(w->s);
+    projcurve_context_destroy(w->ctx);
+}
+
+void fuzz_read_back(const fuzz_written *w, const char *path)
+{
+    projcurve_model *m = NULL;
+    if (projcurve_model_read_file(w->ctx, path, &m) != PROJCURVE_OK)
+        fuzz_finding("the written file does not read", w->ctx);
+    if (projcurve_model_surface_count(m) < 1 || projcurve_model_curve_count(m) < 1)
+        fuzz_finding("the file read back lacks the surface or the curve", w->ctx);
+    fuzz_compare_surfaces(w->ctx, w->s, projcurve_model_surface(m, 0));
+    fuzz_compare_curves(w->ctx, w->c, projcurve_model_curve(m, 0));
+    projcurve_model_destroy(m);
+    remove(path);
+}

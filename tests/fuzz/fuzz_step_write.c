@@ -1,67 +1,41 @@
 /* SPDX-License-Identifier: BSD-3-Clause */
-/* libFuzzer target: the STEP writer (AP214 geometry). A surface, a curve and (with a flag)
- * the result of projecting it, from the bytes (fuzz_shapes.h), are written
- * to a file and read back: the file must read, and its first surface and
- * first curve must be the ones written (fuzz_readback.h). */
+/* libFuzzer target: the STEP writer. A surface, a curve and (with a flag)
+ * the result of projecting it, from the bytes, are written to a file and
+ * read back: the file must read, and its first surface and first curve
+ * must be the ones written (fuzz_readback.h). */
 #include <stdint.h>
 #include <stdio.h>
 #include <unistd.h>
 
 #include "fuzz_readback.h"
-#include "fuzz_shapes.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
-    fuzz_bytes b = {data, size, 0};
-    projcurve_context *ctx = NULL;
-    if (projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx) != PROJCURVE_OK)
-        return 0;
-    projcurve_surface *s = NULL;
-    projcurve_curve *c = NULL;
-    projcurve_options *o = NULL;
-    projcurve_result *r = NULL;
+    fuzz_written in;
     projcurve_step_writer *w = NULL;
-    projcurve_model *m = NULL;
-    double dir[3];
-    char path[64];
-    snprintf(path, sizeof path, "/tmp/fuzz_step_write.%ld.stp", (long)getpid());
-    if (fuzz_make_surface(ctx, &b, &s) != PROJCURVE_OK || fuzz_make_curve(ctx, &b, &c) != PROJCURVE_OK)
-        goto done;
-    fuzz_make_direction(&b, dir);
-    if (fuzz_make_options(ctx, &b, &o) != PROJCURVE_OK)
-        goto done;
-    if (fuzz_byte(&b) & 1)
-        (void)projcurve_project_directional(ctx, s, c, dir, o, &r);
-    if (projcurve_step_writer_create(ctx, &w) != PROJCURVE_OK ||
-        projcurve_step_writer_add_surface(ctx, w, s) != PROJCURVE_OK ||
-        projcurve_step_writer_add_curve(ctx, w, c) != PROJCURVE_OK)
-        fuzz_finding("adding a valid surface and curve failed", ctx);
-    /* a branch without compact forms (not composed, or the fit found none)
-     * is refused by name: a defined answer, not a finding */
-    if (r != NULL) {
-        const projcurve_status st = projcurve_step_writer_add_result(ctx, w, s, r);
-        if (st != PROJCURVE_OK &&
-            (st != PROJCURVE_ERR_INVALID_ARGUMENT || !*projcurve_context_message(ctx)))
-            fuzz_finding("adding a result failed", ctx);
+    if (fuzz_written_make(data, size, &in)) {
+        projcurve_context *ctx = in.ctx;
+        char path[64];
+        snprintf(path, sizeof path, "/tmp/fuzz_step_write.%ld.stp", (long)getpid());
+        if (projcurve_step_writer_create(ctx, &w) != PROJCURVE_OK ||
+            projcurve_step_writer_add_surface(ctx, w, in.s) != PROJCURVE_OK ||
+            projcurve_step_writer_add_curve(ctx, w, in.c) != PROJCURVE_OK)
+            fuzz_finding("adding a valid surface and curve failed", ctx);
+        /* a branch without compact forms (not composed, or the fit found
+         * none) is refused by name: a defined answer, not a finding */
+        if (in.r != NULL) {
+            const projcurve_status st = projcurve_step_writer_add_result(ctx, w, in.s, in.r);
+            if (st != PROJCURVE_OK &&
+                (st != PROJCURVE_ERR_INVALID_ARGUMENT || !*projcurve_context_message(ctx)))
+                fuzz_finding("adding a result failed", ctx);
+        }
+        if (projcurve_step_writer_write(ctx, w, path) != PROJCURVE_OK)
+            fuzz_finding("writing failed", ctx);
+        fuzz_read_back(&in, path);
     }
-    if (projcurve_step_writer_write(ctx, w, path) != PROJCURVE_OK)
-        fuzz_finding("writing failed", ctx);
-    if (projcurve_model_read_file(ctx, path, &m) != PROJCURVE_OK)
-        fuzz_finding("the written file does not read", ctx);
-    if (projcurve_model_surface_count(m) < 1 || projcurve_model_curve_count(m) < 1)
-        fuzz_finding("the file read back lacks the surface or the curve", ctx);
-    fuzz_compare_surfaces(ctx, s, projcurve_model_surface(m, 0));
-    fuzz_compare_curves(ctx, c, projcurve_model_curve(m, 0));
-done:
-    remove(path);
-    projcurve_model_destroy(m);
     projcurve_step_writer_destroy(w);
-    projcurve_result_destroy(r);
-    projcurve_options_destroy(o);
-    projcurve_curve_destroy(c);
-    projcurve_surface_destroy(s);
-    projcurve_context_destroy(ctx);
+    fuzz_written_free(&in);
     return 0;
 }
