@@ -1276,7 +1276,8 @@ PROJCURVE_API projcurve_status projcurve_shape_face_model_index(projcurve_contex
                                                                 size_t index, size_t *model_index);
 /* Edges of a shape, by increasing id: edge i has id *id and is used by
  * *n_uses face pieces (2 for an edge between two faces, 1 on a free
- * border, 2 in one face for a seam). Use k of it is piece *piece of loop
+ * border, 2 in one face for a seam; 3 or more for an edge sewn by geometry
+ * that one face splits where its neighbour does not). Use k of it is piece *piece of loop
  * *loop of the shape's face *face; *sense +1 when that loop runs along the
  * edge. Output pointers may be NULL. Statuses: OK, NULL_ARGUMENT, INDEX. */
 PROJCURVE_API size_t projcurve_shape_edge_count(const projcurve_shape *shape);

@@ -19,18 +19,23 @@ static double dist3(const double *a, const double *b)
     return sqrt(x * x + y * y + z * z);
 }
 
+int pc_sew_piece_point(const projcurve_face *f, const pc_face_piece *piece, double t,
+                       double out[3])
+{
+    double uv[2], d[4];
+    pc_curve2_eval(&piece->curve, t, uv);
+    projcurve_surface_domain(NULL, f->surface, d);
+    return projcurve_surface_eval(NULL, f->surface, fmin(fmax(uv[0], d[0]), d[1]),
+                                  fmin(fmax(uv[1], d[2]), d[3]), 0, out) == PROJCURVE_OK;
+}
+
 static int sample(const projcurve_face *f, pc_face_piece *piece, sew_piece *out)
 {
-    double t0, t1, d[4];
+    double t0, t1;
     pc_curve2_domain(&piece->curve, &t0, &t1);
-    projcurve_surface_domain(NULL, f->surface, d);
-    for (int k = 0; k < 3; ++k) {
-        double uv[2];
-        pc_curve2_eval(&piece->curve, t0 + 0.5 * k * (t1 - t0), uv);
-        if (projcurve_surface_eval(NULL, f->surface, fmin(fmax(uv[0], d[0]), d[1]),
-                                   fmin(fmax(uv[1], d[2]), d[3]), 0, out->p[k]) != PROJCURVE_OK)
+    for (int k = 0; k < 3; ++k)
+        if (!pc_sew_piece_point(f, piece, t0 + 0.5 * k * (t1 - t0), out->p[k]))
             return 0;
-    }
     out->piece = piece;
     return 1;
 }
@@ -67,9 +72,24 @@ static int match(const sew_piece *a, const sew_piece *b, double tol)
     return 0;
 }
 
-projcurve_status pc_sew_faces(projcurve_context *ctx, projcurve_face *const *faces, size_t n,
-                              double tol, size_t *shared)
+/* The split and gap passes over the pieces the one-to-one match left. */
+static projcurve_status sew_lone_pieces(projcurve_context *ctx, projcurve_face *const *faces,
+                                        size_t n, double tol, size_t *shared, double *used_tol)
 {
+    size_t split = 0, gapped = 0;
+    double gap = 0.0;
+    projcurve_status st = pc_sew_split_pieces(ctx, faces, n, tol, &split, &gap);
+    if (st == PROJCURVE_OK)
+        st = pc_sew_split_pieces(ctx, faces, n, PC_SEW_GAP_FACTOR * tol, &gapped, &gap);
+    *shared += split + gapped;
+    *used_tol = fmax(tol, gap);
+    return st;
+}
+
+projcurve_status pc_sew_faces(projcurve_context *ctx, projcurve_face *const *faces, size_t n,
+                              double tol, size_t *shared, double *used_tol)
+{
+    *used_tol = tol;
     size_t total = 0;
     for (size_t f = 0; f < n; ++f)
         for (size_t l = 0; l < faces[f]->n_loops; ++l)
@@ -135,5 +155,5 @@ projcurve_status pc_sew_faces(projcurve_context *ctx, projcurve_face *const *fac
     free(group_id);
     free(group_size);
     free(s);
-    return PROJCURVE_OK;
+    return sew_lone_pieces(ctx, faces, n, tol, shared, used_tol);
 }

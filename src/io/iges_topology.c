@@ -532,7 +532,8 @@ static projcurve_status face_set(const topo *t)
     for (size_t i = 0; tol <= 0.0 && i < m->n_faces; ++i)
         tol = m->faces[i]->tol_model;
     size_t shared = 0;
-    projcurve_status st = pc_sew_faces(t->f->ctx, m->faces, m->n_faces, tol, &shared);
+    double used_tol = tol;
+    projcurve_status st = pc_sew_faces(t->f->ctx, m->faces, m->n_faces, tol, &shared, &used_tol);
     projcurve_shape *shape = NULL;
     if (st == PROJCURVE_OK)
         st = pc_shape_build(t->f->ctx, PROJCURVE_SHAPE_FACE_SET, -1,
@@ -540,7 +541,7 @@ static projcurve_status face_set(const topo *t)
     free(index);
     if (st != PROJCURVE_OK)
         return st;
-    shape->sew_tol = tol;
+    shape->sew_tol = used_tol;
     return pc_model_add_shape(t->f->ctx, m, shape);
 }
 
