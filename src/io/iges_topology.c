@@ -6,8 +6,8 @@
  * 143 is a face on its whole domain, as CAD readers take it). The loops
  * are the parameter-space curves (BPTR of 142, PSCPT of 141); each member
  * of a composite 102 is a piece of its own; on an analytic base surface a
- * 144's loops are its 142s' model-space curves (CPTR) mapped onto the
- * surface's NURBS instead (iges_face_map.c). All faces of a file make one
+ * 144's loops are its 142s' model-space curves (CPTR), and a 143's its
+ * 141s' (CRVPT), mapped onto the surface's NURBS instead (iges_face_map.c). All faces of a file make one
  * shape of independent faces: IGES 144 shares no edge records.
  *
  * A face that cannot be built (a surface kind not built, a loop without
@@ -429,9 +429,80 @@ static projcurve_status read_144(const topo *t, size_t de)
     return finish_face(t, surface, kind, &p, de, 144, reason);
 }
 
-/* 143 (TYPE, SPTR, N, BDPT(1..N)) with 141 boundaries (TYPE, PREF, SPTR,
- * N, then per curve CRVPT, SENSE, K, PSCPT(1..K)); the first boundary is
- * the outer one. */
+/* The curves of one 141 boundary curve (CRVPT, SENSE, K, PSCPT(1..K)):
+ * the PSCPTs, or with a map (an analytic surface, whose parameters are
+ * not its NURBS's) CRVPT inverted onto the map's surface. */
+static projcurve_status curve_of_141(const topo *t, const pc_iges_params *bp, size_t at,
+                                     long bd, long c, const face_map *via, pieces *p,
+                                     char reason[PC_IGES_REASON])
+{
+    long fields[3] = {0, 1, 0}; /* CRVPT, SENSE, K */
+    projcurve_status st = pc_iges_ints(bp, at, 3, fields);
+    if (st != PROJCURVE_OK)
+        return st;
+    const long crvpt = fields[0], k = fields[2];
+    const int sense = fields[1] == 2 ? -1 : 1;
+    if (via != NULL) {
+        for (long j = 0; j < k; ++j) {
+            long pscpt = 0;
+            if (pc_iges_int(bp, at + 3 + (size_t)j, &pscpt) == PROJCURVE_OK)
+                mark_curve(t, pscpt, (size_t)bd);
+        }
+        if (crvpt == 0) {
+            snprintf(reason, PC_IGES_REASON,
+                     "boundary DE %ld curve %ld on an analytic surface has no model-space "
+                     "curve (CRVPT 0) to map onto the surface's NURBS",
+                     bd, c);
+            return PROJCURVE_OK;
+        }
+        mark_curve(t, crvpt, (size_t)bd);
+        return curve_pieces(t, crvpt, (size_t)bd, sense, via, p, reason);
+    }
+    mark(t, crvpt);
+    if (k < 1) {
+        snprintf(reason, PC_IGES_REASON,
+                 "boundary DE %ld curve %ld has no parameter-space curve", bd, c);
+        return PROJCURVE_OK;
+    }
+    for (long j = 0; st == PROJCURVE_OK && !reason[0] && j < k; ++j) {
+        long pscpt = 0;
+        if ((st = pc_iges_int(bp, at + 3 + (size_t)j, &pscpt)) == PROJCURVE_OK)
+            st = curve_pieces(t, pscpt, (size_t)bd, sense, NULL, p, reason);
+    }
+    return st;
+}
+
+/* One 141 boundary (TYPE, PREF, SPTR, N, then per curve CRVPT, SENSE, K,
+ * PSCPT(1..K)) as a loop of the face of 143 de. */
+static projcurve_status loop_of_141(const topo *t, long bd, size_t de, int outer,
+                                    const face_map *via, pieces *p, char reason[PC_IGES_REASON])
+{
+    const pc_iges_entry *e = pc_iges_entry_at(t->f, bd, de);
+    if (e == NULL || e->type != 141) {
+        snprintf(reason, PC_IGES_REASON, "its boundary DE %ld is not a 141 boundary", bd);
+        return PROJCURVE_OK;
+    }
+    mark(t, bd);
+    pc_iges_params bp;
+    long n_curves = 0;
+    projcurve_status st = pc_iges_params_of(t->f, (size_t)bd, &bp);
+    if (st == PROJCURVE_OK)
+        st = pc_iges_int(&bp, 4, &n_curves);
+    const size_t first = p->count;
+    size_t at = 5;
+    for (long c = 0; st == PROJCURVE_OK && !reason[0] && c < n_curves; ++c) {
+        long k = 0;
+        if ((st = pc_iges_int(&bp, at + 2, &k)) == PROJCURVE_OK)
+            st = curve_of_141(t, &bp, at, bd, c, via, p, reason);
+        at += 3 + (size_t)(k > 0 ? k : 0);
+    }
+    if (st == PROJCURVE_OK && !reason[0] && !push_loop(t, p, first, outer))
+        st = pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+    return st;
+}
+
+/* 143 (TYPE, SPTR, N, BDPT(1..N)) with 141 boundaries; the first boundary
+ * is the outer one. */
 static projcurve_status read_143(const topo *t, size_t de)
 {
     pc_iges_params params;
@@ -446,46 +517,17 @@ static projcurve_status read_143(const topo *t, size_t de)
     char reason[PC_IGES_REASON] = "";
     const projcurve_surface *surface = NULL;
     const char *kind = "other";
-    int analytic = 0; /* a 141's PSCPT is in the analytic entity's parameters: refused */
-    if ((st = face_surface(t, sptr, de, 0, &surface, &kind, &analytic, reason)) != PROJCURVE_OK)
+    int analytic = 0;
+    if ((st = face_surface(t, sptr, de, 1, &surface, &kind, &analytic, reason)) != PROJCURVE_OK)
         return st;
+    face_map map = {.surface = surface};
+    if (analytic)
+        face_tolerances(t, surface, &map.tol_model, &map.tol_uv);
     pieces p = {0};
     for (long b = 0; st == PROJCURVE_OK && !reason[0] && b < n; ++b) {
         long bd = 0;
-        pc_iges_params bp;
-        if ((st = pc_iges_int(&params, 4 + (size_t)b, &bd)) != PROJCURVE_OK)
-            break;
-        const pc_iges_entry *e = pc_iges_entry_at(t->f, bd, de);
-        if (e == NULL || e->type != 141) {
-            snprintf(reason, PC_IGES_REASON, "its boundary DE %ld is not a 141 boundary", bd);
-            break;
-        }
-        mark(t, bd);
-        long n_curves = 0;
-        if ((st = pc_iges_params_of(t->f, (size_t)bd, &bp)) != PROJCURVE_OK ||
-            (st = pc_iges_int(&bp, 4, &n_curves)) != PROJCURVE_OK)
-            break;
-        const size_t first = p.count;
-        size_t at = 5;
-        for (long c = 0; st == PROJCURVE_OK && !reason[0] && c < n_curves; ++c) {
-            long fields[3] = {0, 1, 0}; /* CRVPT, SENSE, K */
-            long pscpt = 0;
-            if ((st = pc_iges_ints(&bp, at, 3, fields)) != PROJCURVE_OK)
-                break;
-            const long crvpt = fields[0], sense = fields[1], k = fields[2];
-            mark(t, crvpt);
-            if (k < 1) {
-                snprintf(reason, PC_IGES_REASON,
-                         "boundary DE %ld curve %ld has no parameter-space curve", bd, c);
-                break;
-            }
-            for (long j = 0; st == PROJCURVE_OK && !reason[0] && j < k; ++j)
-                if ((st = pc_iges_int(&bp, at + 3 + (size_t)j, &pscpt)) == PROJCURVE_OK)
-                    st = curve_pieces(t, pscpt, (size_t)bd, sense == 2 ? -1 : 1, NULL, &p, reason);
-            at += 3 + (size_t)k;
-        }
-        if (st == PROJCURVE_OK && !reason[0] && !push_loop(t, &p, first, b == 0))
-            st = pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+        if ((st = pc_iges_int(&params, 4 + (size_t)b, &bd)) == PROJCURVE_OK)
+            st = loop_of_141(t, bd, de, b == 0, analytic ? &map : NULL, &p, reason);
     }
     if (st == PROJCURVE_ERR_PARSE) {
         snprintf(reason, PC_IGES_REASON, "%s", projcurve_context_message(t->f->ctx));

@@ -11,8 +11,9 @@
  * written; points of known (theta, z) or (x, y) classified IN or OUT as the
  * trim says; every loop piece's 3D image S(q(t)) on the boundary written
  * (the arcs, lines and circle) within the model tolerance, its ends at the
- * boundary's corners. A 143 on an analytic surface stays unbuilt (its 141
- * has no model-space curve to map).
+ * boundary's corners. The same for bounded surfaces (143) on those bases,
+ * whose 141 boundaries' model-space curves (CRVPT) are mapped; a 141 with
+ * no model-space curve leaves its face unbuilt, with the reason.
  */
 #include <math.h>
 #include <stdio.h>
@@ -192,7 +193,9 @@ static double off_cylinder_trim(const double x[3])
     return radial + fmin(to_arcs, to_lines);
 }
 
-static void cylinder_segment(void)
+/* The segment trimmed by a 144 (142 boundary), or bounded by a 143 (141
+ * boundary); both give the model- and parameter-space curves. */
+static void cylinder_segment(int bounded)
 {
     static char arc_bottom[256], line_up[256], arc_top[512], line_down[256];
     const double c0 = cos(TH0), s0 = sin(TH0), c1 = cos(TH1), s1 = sin(TH1);
@@ -227,7 +230,12 @@ static void cylinder_segment(void)
         {142, 0, PART, "1,5,25,15,2;"},                        /* DE 27 */
         {144, 0, NULL, "5,1,0,27;"},                           /* DE 29 */
     };
-    projcurve_model *m = read_entities(e, (int)(sizeof e / sizeof e[0]));
+    /* DE 27: one boundary curve, CRVPT 15, SENSE 1, one PSCPT 25 */
+    entity e143[sizeof e / sizeof e[0]];
+    memcpy(e143, e, sizeof e);
+    e143[13] = (entity){141, 0, PART, "1,1,5,1,15,1,1,25;"};
+    e143[14] = (entity){143, 0, NULL, "1,5,1,27;"};
+    projcurve_model *m = read_entities(bounded ? e143 : e, (int)(sizeof e / sizeof e[0]));
     if (m == NULL)
         return;
     CHECK(projcurve_model_surface_count(m) == 1);
@@ -329,9 +337,19 @@ static void plane_with_hole(void)
     projcurve_model_destroy(m);
 }
 
-/* A 143 (141 boundaries: parameter-space curves only) on an analytic
- * surface is not built: its curves are in the entity's own parameters. */
-static void bounded_143_refused(void)
+/* The distance from the square [1, 3]^2 at z = 0. */
+static double off_square(const double x[3])
+{
+    const double dx = fmax(fmax(1.0 - x[0], x[0] - 3.0), 0.0),
+                 dy = fmax(fmax(1.0 - x[1], x[1] - 3.0), 0.0);
+    return fabs(x[2]) + fmin(fmin(hypot(fabs(x[0] - 1.0), dy), hypot(fabs(x[0] - 3.0), dy)),
+                             fmin(hypot(fabs(x[1] - 1.0), dx), hypot(fabs(x[1] - 3.0), dx)));
+}
+
+/* A 143 on a plane bounded by [0, 4]^2: its 141's model-space square
+ * [1, 3]^2 (CRVPT) is the loop; a
+ * second 143 whose 141 has no model-space curve is unbuilt, with why. */
+static void bounded_143_on_plane(void)
 {
     const entity e[] = {
         {110, 0, PART, "0.,0.,0.,4.,0.,0.;"},         /* DE 1 */
@@ -340,24 +358,63 @@ static void bounded_143_refused(void)
         {110, 0, PART, "0.,4.,0.,0.,0.,0.;"},         /* DE 7 */
         {102, 0, PART, "4,1,3,5,7;"},                 /* DE 9 */
         {108, 1, PART, "0.,0.,1.,0.,9,0.,0.,0.,0.;"}, /* DE 11 */
-        {141, 0, PART, "1,1,11,1,9,1,1,9;"},          /* DE 13 */
+        {141, 0, PART, "1,1,11,1,29,1,1,29;"},        /* DE 13: the square [1, 3]^2 */
         {143, 0, NULL, "1,11,1,13;"},                 /* DE 15 */
+        {141, 0, PART, "1,1,11,1,0,1,1,9;"},          /* DE 17: CRVPT 0 */
+        {143, 0, NULL, "1,11,1,17;"},                 /* DE 19 */
+        {110, 0, PART, "1.,1.,0.,3.,1.,0.;"},         /* DE 21 */
+        {110, 0, PART, "3.,1.,0.,3.,3.,0.;"},         /* DE 23 */
+        {110, 0, PART, "3.,3.,0.,1.,3.,0.;"},         /* DE 25 */
+        {110, 0, PART, "1.,3.,0.,1.,1.,0.;"},         /* DE 27 */
+        {102, 0, PART, "4,21,23,25,27;"},             /* DE 29 */
     };
     projcurve_model *m = read_entities(e, (int)(sizeof e / sizeof e[0]));
     if (m == NULL)
         return;
-    CHECK(projcurve_model_face_count(m) == 0);
+    CHECK(projcurve_model_face_count(m) == 1);
     CHECK(projcurve_model_unbuilt_face_count(m) == 1 &&
-          strstr(projcurve_model_unbuilt_face(m, 0), "not built") != NULL);
+          strstr(projcurve_model_unbuilt_face(m, 0), "no model-space curve (CRVPT 0)") != NULL);
+    for (size_t i = 0; i < projcurve_model_unbuilt_face_count(m); ++i)
+        printf("unbuilt: %s\n", projcurve_model_unbuilt_face(m, i));
+    const projcurve_face *face = projcurve_model_face(m, 0);
+    if (face == NULL) {
+        projcurve_model_destroy(m);
+        return;
+    }
+    CHECK(projcurve_face_loop_count(face) == 1);
+    size_t pieces = 0;
+    CHECK_OK(projcurve_face_loop_piece_count(ctx, face, 0, &pieces));
+    CHECK(pieces == 4);
+    double tol_model = 0.0;
+    CHECK_OK(projcurve_face_tolerance(ctx, face, NULL, &tol_model));
+    const double corners[4][3] = {{1, 1, 0}, {3, 1, 0}, {3, 3, 0}, {1, 3, 0}};
+    check_loops(face, off_square, tol_model, corners, 4);
+    /* points over the plane's NURBS (the square [0, 4]^2 of its bound) */
+    double box[6];
+    CHECK_OK(projcurve_surface_bounds(ctx, projcurve_face_surface(face), box));
+    int wrong = 0, outside = 0;
+    for (int i = 0; i <= 12; ++i)
+        for (int j = 0; j <= 12; ++j) {
+            const double x[3] = {box[0] + (box[3] - box[0]) * (i + 0.37) / 13.0,
+                                 box[1] + (box[4] - box[1]) * (j + 0.61) / 13.0, 0.0};
+            const int in = x[0] > 1.0 && x[0] < 3.0 && x[1] > 1.0 && x[1] < 3.0;
+            if (off_square(x) < 1e-3)
+                continue;
+            outside += !in;
+            wrong += where_is(face, x) != (in ? PROJCURVE_IN : PROJCURVE_OUT);
+        }
+    CHECK(wrong == 0);
+    CHECK(outside > 0);
     projcurve_model_destroy(m);
 }
 
 int main(void)
 {
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    cylinder_segment();
+    cylinder_segment(0);
+    cylinder_segment(1);
     plane_with_hole();
-    bounded_143_refused();
+    bounded_143_on_plane();
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_io_iges_analytic_faces");
 }
