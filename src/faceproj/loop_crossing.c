@@ -55,11 +55,17 @@ static void refine_hit(const pc_loop_samples *s, const pc_projector *proj, doubl
             h->refined = 1;
             return;
         }
-        /* [q'(t), -c'(tau)] (dt, dtau) = -F */
+        /* [q'(t), -c'(tau)] (dt, dtau) = -F, its columns scaled to unit
+         * length first: near a silhouette |q'| reaches 1e15 while the
+         * directions still cross well */
         const double r[2] = {-f[0], -f[1]};
+        const double sq = hypot(pp.du, pp.dv), sc = hypot(dc[0], dc[1]);
         double x[2];
-        if (!mat2_solve(pp.du, -dc[0], pp.dv, -dc[1], r, x))
+        if (!(sq > 0.0 && sc > 0.0) ||
+            !mat2_solve(pp.du / sq, -dc[0] / sc, pp.dv / sq, -dc[1] / sc, r, x))
             return; /* the branch runs along the loop here: keep the guess */
+        x[0] /= sq;
+        x[1] /= sc;
         const double tn = fmin(t_hi, fmax(t_lo, t + x[0]));
         uv[0] += pp.du * (tn - t);
         uv[1] += pp.dv * (tn - t);

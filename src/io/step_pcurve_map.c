@@ -8,13 +8,18 @@
  * any other is resampled as a polyline in (s, t) at the piece's own
  * parameters, doubling the samples until every chord's middle is within
  * PC_STEP_MAP_TOL_FRACTION of the face's (u, v) tolerance of the mapped
- * curve's point there.
+ * curve's point there, and then refitted as a cubic B-spline within that
+ * tolerance of the samples and of the mapped curve half way between them
+ * (fit/resampled.h; the polyline stays when no cubic of up to 128 spans
+ * is).
  */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "brep/curve2.h"
 #include "common/error.h"
+#include "fit/resampled.h"
 #include "io/step_topology.h"
 
 #define PC_STEP_MAP_SAMPLES 16
@@ -113,6 +118,101 @@ static double sample(const pc_step_file *f, const pc_angle_map maps[2], const do
     return err;
 }
 
+/* The mapped piece at t: the exact curve the resampled one is fitted to. */
+typedef struct mapped_piece {
+    const pc_step_file *f;
+    const pc_angle_map *maps;
+    const double *shift;
+    const pc_curve2 *c;
+} mapped_piece;
+
+static void mapped_at(const void *user, double t, double *st)
+{
+    const mapped_piece *m = user;
+    double uv[2];
+    pc_curve2_eval(m->c, t, uv);
+    to_nurbs(m->f, m->maps, m->shift, uv, st);
+}
+
+/* The t in [lo, hi] where coordinate k of the mapped piece crosses s
+ * (bisection, 60 halvings: below the double spacing of any range). */
+static double crossing(const mapped_piece *m, int k, double s, double lo, double hi)
+{
+    double st[2];
+    mapped_at(m, lo, st);
+    const int below = st[k] < s;
+    for (int i = 0; i < 60; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        mapped_at(m, mid, st);
+        if ((st[k] < s) == below)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+static int by_value(const void *a, const void *b)
+{
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The breaks of the mapped piece: where it crosses a segment end of an
+ * angle map, at which the NURBS's rational quadratic segments meet with a
+ * jump in the map's second derivative. Sorted, distinct, inside (t0, t1);
+ * PC_FIT_RESAMPLED_MAX_BREAKS + 1 when there are more (no fit then). */
+static size_t map_breaks(const mapped_piece *m, const double *st, size_t n, double t0, double t1,
+                         double *breaks)
+{
+    size_t nb = 0;
+    for (int k = 0; k < 2; ++k) {
+        const pc_angle_map *a = &m->maps[k];
+        for (size_t j = 1; a->is_angle && j < a->n_seg; ++j) {
+            const double s = pc_angle_to_nurbs(a, a->a0 + (a->a1 - a->a0) * (double)j / (double)a->n_seg);
+            for (size_t i = 0; i < n; ++i) {
+                if ((st[2 * i + k] < s) == (st[2 * i + 2 + k] < s))
+                    continue;
+                if (nb == PC_FIT_RESAMPLED_MAX_BREAKS)
+                    return nb + 1;
+                breaks[nb++] = crossing(m, k, s, t0 + (t1 - t0) * (double)i / (double)n,
+                                        t0 + (t1 - t0) * (double)(i + 1) / (double)n);
+            }
+        }
+    }
+    qsort(breaks, nb, sizeof *breaks, by_value);
+    const double eps = 1e-12 * (t1 - t0);
+    size_t kept = 0;
+    for (size_t i = 0; i < nb; ++i)
+        if (breaks[i] > t0 + eps && breaks[i] < t1 - eps &&
+            (kept == 0 || breaks[i] > breaks[kept - 1] + eps))
+            breaks[kept++] = breaks[i];
+    return kept;
+}
+
+/* The polyline st (n + 1 samples) as a cubic when one is within tol of the
+ * mapped piece (fit/resampled.h), into p; else p keeps the polyline. */
+static projcurve_status compact(const stopo *t, const mapped_piece *m, const double *st,
+                                size_t n, double tol, pc_piece_input *p)
+{
+    double t0, t1;
+    pc_curve2_domain(m->c, &t0, &t1);
+    double *poles = pc_arena_calloc(t->arena, 2 * PC_FIT_RESAMPLED_POLES, sizeof *poles);
+    double *knots = pc_arena_calloc(t->arena, PC_FIT_RESAMPLED_POLES + 4, sizeof *knots);
+    if (poles == NULL || knots == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    double breaks[PC_FIT_RESAMPLED_MAX_BREAKS];
+    const size_t n_breaks = map_breaks(m, st, n, t0, t1, breaks);
+    const pc_fit_resampled_input in = {.dim = 2, .samples = st, .n = n, .t0 = t0, .t1 = t1,
+                                       .breaks = breaks, .n_breaks = n_breaks,
+                                       .exact = mapped_at, .user = m, .tol = tol};
+    size_t n_poles = 0;
+    const projcurve_status status = pc_fit_resampled_cubic(t->f->ctx, &in, poles, knots, &n_poles);
+    if (status == PROJCURVE_OK && n_poles > 0 && n_poles < n + 1)
+        p->degree = 3, p->n_ctrl = n_poles, p->ctrl = poles, p->weights = NULL, p->knots = knots;
+    return status;
+}
+
 static projcurve_status resample(const stopo *t, const projcurve_surface *s, const double shift[2],
                                  pc_piece_input *p)
 {
@@ -130,20 +230,26 @@ static projcurve_status resample(const stopo *t, const projcurve_surface *s, con
         if (err <= tol || n >= PC_STEP_MAP_MAX_SAMPLES)
             break;
     }
-    pc_curve2_free(&c);
     double *knots = st ? pc_arena_calloc(t->arena, n + 3, sizeof *knots) : NULL;
-    if (knots == NULL)
+    if (knots == NULL) {
+        pc_curve2_free(&c);
         return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    }
     knots[0] = t0;
     for (size_t i = 0; i < n; ++i)
         knots[i + 1] = t0 + (t1 - t0) * (double)i / (double)n;
     knots[n + 1] = knots[n + 2] = t1; /* not t0 + (t1 - t0), which may round past t1 */
     p->degree = 1, p->n_ctrl = n + 1, p->ctrl = st, p->weights = NULL, p->knots = knots;
-    if (err > tol)
+    if (err > tol) {
+        pc_curve2_free(&c);
         return pc_model_add_skipped(t->f->ctx, t->model,
                                     "STEP: a pcurve mapped onto its surface's NURBS at %zu "
                                     "samples is within %.3g in (s, t) (wanted %.3g)", n + 1, err, tol);
-    return PROJCURVE_OK;
+    }
+    const mapped_piece m = {t->f, t->maps, shift, &c};
+    const projcurve_status status = compact(t, &m, st, n, tol, p);
+    pc_curve2_free(&c);
+    return status;
 }
 
 projcurve_status pc_step_piece_to_nurbs(const stopo *t, const projcurve_surface *s, long curve_id,
