@@ -1511,7 +1511,9 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_write(projcurve_context *ct
  * failure the writer is left as it was. Statuses: OK, NULL_ARGUMENT (w or
  * r, with a message), INVALID_ARGUMENT (a piece without composed pieces:
  * PROJCURVE_OPT_COMPOSE 0, or a limit reached before it; the message names
- * the connected curve and piece), NO_MEMORY. The result may be read by
+ * the connected curve and piece), OUT_OF_RANGE (a piece over a t range
+ * too narrow for a curve, as projcurve_result_branch_curve), NO_MEMORY.
+ * The result may be read by
  * other threads meanwhile; the writer is used by one thread at a time. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_shape_result(
     projcurve_context *ctx, projcurve_iges_writer *w, const projcurve_shape_result *r);
@@ -1603,7 +1605,8 @@ PROJCURVE_API projcurve_status projcurve_step_writer_write(projcurve_context *ct
  * written; the uncertainty is not changed. A result without connected
  * curves adds nothing (OK). On failure the writer is left as it was.
  * Statuses: OK, NULL_ARGUMENT (w or r, with a message), INVALID_ARGUMENT
- * (a piece without composed pieces, as there), NOT_FINITE, NO_MEMORY.
+ * and OUT_OF_RANGE (a piece without a 3D curve, as there), NOT_FINITE,
+ * NO_MEMORY.
  * The result may be read by other threads meanwhile; the writer is used
  * by one thread at a time. */
 PROJCURVE_API projcurve_status projcurve_step_writer_add_shape_result(

@@ -27,7 +27,8 @@ projcurve_status pc_branch_curve3d(projcurve_context *ctx, const projcurve_resul
 
 /* Piece `piece` of connected curve `curve` of r as a member. Statuses: OK,
  * INDEX, INVALID_ARGUMENT (the piece was not composed: no 3D curve, the
- * message says why), NO_MEMORY. On failure m holds nothing to free. */
+ * message says why), OUT_OF_RANGE (a sliver: its t range too narrow for a
+ * curve), NO_MEMORY. On failure m holds nothing to free. */
 projcurve_status pc_shape_member_get(projcurve_context *ctx, const projcurve_shape_result *r,
                                      size_t curve, size_t piece, pc_shape_member *m);
 void pc_shape_member_free(pc_shape_member *m);

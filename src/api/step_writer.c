@@ -245,10 +245,10 @@ static projcurve_status add_segments(projcurve_context *ctx, projcurve_step_writ
         segs[k].same_sense = m.forward;
         if (k > 0)
             segs[k - 1].continuous = pc_shape_members_meet(&prev, &m, tol);
+        pc_shape_member_free(&m); /* its ends are kept, its curve is written */
         if (k == 0)
-            first = m; /* keeps its ends only: the curve is released below */
+            first = m;
         prev = m;
-        pc_shape_member_free(&m);
     }
     if (st == PROJCURVE_OK) /* an open composite ends with a discontinuity */
         segs[n - 1].continuous = closed && pc_shape_members_meet(&prev, &first, tol);

@@ -30,7 +30,7 @@ int cli_write_shape_iges(projcurve_context *ctx, const cli_shape_job *job, const
         if (r->result == NULL)
             continue;
         const projcurve_status st = projcurve_iges_writer_add_shape_result(ctx, w, r->result);
-        if (st == PROJCURVE_ERR_INVALID_ARGUMENT)
+        if (st == PROJCURVE_ERR_INVALID_ARGUMENT || st == PROJCURVE_ERR_OUT_OF_RANGE)
             fprintf(stderr, "projcurve: %s: the connected curves of curve %zu onto shape %zu "
                             "are not written: %s\n",
                     path, cli_shape_curve_number(job, r->curve), r->shape,
