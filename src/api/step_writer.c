@@ -4,8 +4,9 @@
  * in its compact forms (fit/) as a SURFACE_CURVE: the compact 3D curve
  * (where its fit found none, the pieces joined) with the compact pcurve as
  * its PCURVE on the surface; a whole-shape result as one COMPOSITE_CURVE
- * per connected curve over its face pieces' 3D curves. The geometry is formatted by io/step_write*.c;
- * this file takes it from the handles and the result.
+ * per connected curve over its face pieces' 3D curves. The geometry is
+ * formatted by io/step_write*.c; this file takes it from the handles and
+ * the result.
  */
 #include <math.h>
 #include <stdlib.h>
