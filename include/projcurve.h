@@ -1495,6 +1495,29 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_set_length_unit(projcurve_c
 PROJCURVE_API projcurve_status projcurve_iges_writer_write(projcurve_context *ctx,
                                                            const projcurve_iges_writer *w,
                                                            const char *path);
+/* Adds every connected curve of a shape result
+ * (projcurve_shape_result_curve_count) as one composite curve (entity
+ * 102, independent) whose members are its face pieces' 3D curves
+ * (entity 126, physically dependent) in chain order
+ * (projcurve_shape_result_piece): each the piece's compact 3D curve
+ * (projcurve_result_branch_compact_curve; where its fit found none, the
+ * composed pieces joined, projcurve_result_branch_curve), over the
+ * piece's t range; a piece the chain runs along with t decreasing is
+ * written reversed (parameter t0 + t1 - t), so that each member starts
+ * where the one before ends (within the fits' errors). A connected curve
+ * of one piece is a 102 of one member too, so that every connected curve
+ * is one 102 in the file. Neither the faces' surfaces nor pcurves are
+ * written (add them with projcurve_iges_writer_add_surface /
+ * _add_result). A result without connected curves adds nothing (OK). On
+ * failure the writer is left as it was. Statuses: OK, NULL_ARGUMENT (w or
+ * r, with a message), INVALID_ARGUMENT (a piece without composed pieces:
+ * PROJCURVE_OPT_COMPOSE 0, or a limit reached before it; the message names
+ * the connected curve and piece), OUT_OF_RANGE (a piece over a t range
+ * too narrow for a curve, as projcurve_result_branch_curve), NO_MEMORY.
+ * The result may be read by
+ * other threads meanwhile; the writer is used by one thread at a time. */
+PROJCURVE_API projcurve_status projcurve_iges_writer_add_shape_result(
+    projcurve_context *ctx, projcurve_iges_writer *w, const projcurve_shape_result *r);
 
 /* A STEP writer: collect surfaces, curves and projection results, then
  * write them as one STEP file (ISO 10303-21, schema AP214
@@ -1568,6 +1591,27 @@ PROJCURVE_API projcurve_status projcurve_step_writer_set_uncertainty(projcurve_c
 PROJCURVE_API projcurve_status projcurve_step_writer_write(projcurve_context *ctx,
                                                            const projcurve_step_writer *w,
                                                            const char *path);
+
+/* Adds every connected curve of a shape result as one COMPOSITE_CURVE
+ * (self_intersect .U.), an element of the geometric set, of one
+ * COMPOSITE_CURVE_SEGMENT per face piece in chain order, each over the
+ * piece's 3D curve as projcurve_iges_writer_add_shape_result takes it
+ * (B_SPLINE_CURVE_WITH_KNOTS, the rational complex entity where a weight
+ * is not 1; t increasing, same_sense .F. where the chain runs along it
+ * with t decreasing, else .T.). A segment's transition is .CONTINUOUS.
+ * where its last point and the next segment's first lie within the
+ * result's chaining tolerance (projcurve_shape_result_chain_tolerance),
+ * else .DISCONTINUOUS.; the last segment's is .CONTINUOUS. only on a
+ * closed connected curve whose ends meet so. Surfaces and pcurves are not
+ * written; the uncertainty is not changed. A result without connected
+ * curves adds nothing (OK). On failure the writer is left as it was.
+ * Statuses: OK, NULL_ARGUMENT (w or r, with a message), INVALID_ARGUMENT
+ * and OUT_OF_RANGE (a piece without a 3D curve, as there), NOT_FINITE,
+ * NO_MEMORY.
+ * The result may be read by other threads meanwhile; the writer is used
+ * by one thread at a time. */
+PROJCURVE_API projcurve_status projcurve_step_writer_add_shape_result(
+    projcurve_context *ctx, projcurve_step_writer *w, const projcurve_shape_result *r);
 
 #ifdef __cplusplus
 }

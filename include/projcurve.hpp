@@ -2098,6 +2098,13 @@ public:
     {
         ctx.check(projcurve_iges_writer_write(ctx.get(), handle_, path.c_str()));
     }
+    /** \brief Adds every connected curve of r as one composite curve (102)
+     *  of its face pieces' 3D curves. */
+    iges_writer &add_shape_result(context &ctx, const shape_result &r)
+    {
+        ctx.check(projcurve_iges_writer_add_shape_result(ctx.get(), handle_, r.get()));
+        return *this;
+    }
     /** \brief write() without throwing. */
     expected<void> try_write(context &ctx, const std::string &path) const
     {
@@ -2187,6 +2194,13 @@ public:
     void write(context &ctx, const std::string &path) const
     {
         ctx.check(projcurve_step_writer_write(ctx.get(), handle_, path.c_str()));
+    }
+    /** \brief Adds every connected curve of r as one COMPOSITE_CURVE of its
+     *  face pieces' 3D curves. */
+    step_writer &add_shape_result(context &ctx, const shape_result &r)
+    {
+        ctx.check(projcurve_step_writer_add_shape_result(ctx.get(), handle_, r.get()));
+        return *this;
     }
     /** \brief write() without throwing. */
     expected<void> try_write(context &ctx, const std::string &path) const

@@ -303,6 +303,11 @@ class IgesWriter(Handle):
                 else "projcurve_iges_writer_add_result")
         call(name, self._ptr, surface._ptr, result._ptr)
 
+    def add_shape_result(self, shape_result):
+        """Every connected curve of a ShapeResult as one composite curve
+        (entity 102) of its face pieces' 3D curves, in chain order."""
+        call("projcurve_iges_writer_add_shape_result", self._ptr, shape_result._ptr)
+
     def set_length_unit(self, metres_per_unit):
         call("projcurve_iges_writer_set_length_unit", self._ptr, float(metres_per_unit))
 
@@ -334,6 +339,11 @@ class StepWriter(Handle):
         """Every branch of result (on surface) as a SURFACE_CURVE of its
         compact curve and pcurve."""
         call("projcurve_step_writer_add_result", self._ptr, surface._ptr, result._ptr)
+
+    def add_shape_result(self, shape_result):
+        """Every connected curve of a ShapeResult as one COMPOSITE_CURVE of
+        its face pieces' 3D curves, in chain order."""
+        call("projcurve_step_writer_add_shape_result", self._ptr, shape_result._ptr)
 
     def set_length_unit(self, metres_per_unit):
         call("projcurve_step_writer_set_length_unit", self._ptr, float(metres_per_unit))

@@ -7,14 +7,17 @@
  * S composed with the pcurve and the 3D curve are each within eps_D of the
  * projection); on request the pieces (their pcurves joined, so that S
  * composed with it is the 3D curve exactly). The traced points as a
- * polyline for a branch not composed. A surface is written once however often it is added (entities
- * are compared by their parameter text, i.e. exactly).
+ * polyline for a branch not composed. A surface is written once however
+ * often it is added (entities are compared by their parameter text, i.e.
+ * exactly). A whole-shape result as one composite curve (102) per
+ * connected curve, its members the face pieces' 3D curves.
  */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "api/branch_pcurve.h"
+#include "api/shape_member.h"
 #include "common/error.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
@@ -236,23 +239,6 @@ static int branch_forms_curve(const projcurve_result *r, size_t branch)
            PROJCURVE_OK;
 }
 
-/* The 3D curve of a composed branch: the compact one, or the pieces
- * joined where there is none. */
-static projcurve_status branch_curve3d(projcurve_context *ctx, const projcurve_result *r,
-                                       size_t branch, int compact, projcurve_curve **c)
-{
-    projcurve_status st = PROJCURVE_ERR_LIMIT_REACHED;
-    if (compact)
-        st = projcurve_result_branch_compact_curve(NULL, r, branch, c);
-    if (st == PROJCURVE_ERR_NO_MEMORY)
-        return pc_fail(ctx, st, "out of memory for the compact curve of branch %zu", branch);
-    /* no compact 3D curve (its fit hit its bound, or no compact forms):
-     * the pieces joined */
-    if (st == PROJCURVE_ERR_LIMIT_REACHED || st == PROJCURVE_ERR_INVALID_ARGUMENT)
-        st = projcurve_result_branch_curve(ctx, r, branch, c);
-    return st;
-}
-
 /* The pcurve of a composed branch: the compact one, or the pieces' joined;
  * INVALID_ARGUMENT when it has neither. */
 static projcurve_status branch_pcurve(projcurve_context *ctx, const projcurve_result *r,
@@ -301,7 +287,7 @@ static projcurve_status add_seam_segments(projcurve_context *ctx, projcurve_iges
     projcurve_curve *q = NULL, *c = NULL;
     projcurve_status st = branch_pcurve(ctx, r, branch, compact, &q);
     if (st == PROJCURVE_OK)
-        st = branch_curve3d(ctx, r, branch, compact, &c);
+        st = pc_branch_curve3d(ctx, r, branch, compact, &c);
     pc_seam_segment *seg = NULL;
     size_t n_seg = 0;
     if (st == PROJCURVE_OK)
@@ -349,7 +335,7 @@ static projcurve_status add_branch(projcurve_context *ctx, projcurve_iges_writer
     projcurve_curve *c = NULL;
     st = PROJCURVE_ERR_INVALID_ARGUMENT; /* a sliver: the traced pcurve alone */
     if (branch_forms_curve(r, branch))
-        st = branch_curve3d(ctx, r, branch, compact, &c);
+        st = pc_branch_curve3d(ctx, r, branch, compact, &c);
     if (st == PROJCURVE_OK) {
         st = add_curve(ctx, w, c, PC_IGES_STATUS_PART, &curve_de);
         projcurve_curve_destroy(c);
@@ -398,6 +384,69 @@ projcurve_status projcurve_iges_writer_add_result_pieces(projcurve_context *ctx,
                                                          const projcurve_result *r)
 {
     return add_result(ctx, w, s, r, 0);
+}
+
+/* One member of a composite: the piece's 3D curve (126, physically
+ * dependent), run backwards where the chain runs along it with t
+ * decreasing. */
+static projcurve_status add_member(projcurve_context *ctx, projcurve_iges_writer *w,
+                                   const pc_shape_member *m, size_t *de)
+{
+    pc_text_buf b = {0};
+    if (m->forward)
+        pc_iges_format_curve(&b, &m->curve->nurbs, 0);
+    else
+        pc_iges_format_curve_reversed(&b, &m->curve->nurbs, 0);
+    const projcurve_status st = pc_iges_out_add(ctx, &w->out, 126, 0, PC_IGES_STATUS_PART, &b, de);
+    free(b.text);
+    return st;
+}
+
+/* Connected curve `curve` of r: its pieces' 3D curves in chain order, then
+ * the 102 over them. */
+static projcurve_status add_connected_curve(projcurve_context *ctx, projcurve_iges_writer *w,
+                                            const projcurve_shape_result *r, size_t curve)
+{
+    size_t n = 0;
+    projcurve_status st = projcurve_shape_result_curve_info(ctx, r, curve, &n, NULL, NULL);
+    if (st != PROJCURVE_OK || n == 0)
+        return st;
+    size_t *members = malloc(n * sizeof *members);
+    if (members == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY,
+                       "out of memory for the %zu members of connected curve %zu", n, curve);
+    for (size_t k = 0; st == PROJCURVE_OK && k < n; ++k) {
+        pc_shape_member m;
+        st = pc_shape_member_get(ctx, r, curve, k, &m);
+        if (st == PROJCURVE_OK)
+            st = add_member(ctx, w, &m, &members[k]);
+        pc_shape_member_free(&m);
+    }
+    if (st == PROJCURVE_OK) {
+        pc_text_buf b = {0};
+        pc_iges_format_composite(&b, members, n);
+        size_t de;
+        st = pc_iges_out_add(ctx, &w->out, 102, 0, PC_IGES_STATUS_INDEPENDENT, &b, &de);
+        free(b.text);
+    }
+    free(members);
+    return st;
+}
+
+projcurve_status projcurve_iges_writer_add_shape_result(projcurve_context *ctx,
+                                                        projcurve_iges_writer *w,
+                                                        const projcurve_shape_result *r)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, r, "shape result");
+    const size_t before = w->out.count; /* all or nothing, as add_result */
+    projcurve_status st = PROJCURVE_OK;
+    const size_t n = projcurve_shape_result_curve_count(r);
+    for (size_t c = 0; st == PROJCURVE_OK && c < n; ++c)
+        st = add_connected_curve(ctx, w, r, c);
+    if (st != PROJCURVE_OK)
+        pc_iges_out_truncate(&w->out, before);
+    return st;
 }
 
 projcurve_status projcurve_iges_writer_set_length_unit(projcurve_context *ctx,

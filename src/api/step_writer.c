@@ -3,12 +3,15 @@
  * Public STEP writer: surfaces, curves and projection results, each branch
  * in its compact forms (fit/) as a SURFACE_CURVE: the compact 3D curve
  * (where its fit found none, the pieces joined) with the compact pcurve as
- * its PCURVE on the surface. The geometry is formatted by io/step_write*.c;
- * this file takes it from the handles and the result.
+ * its PCURVE on the surface; a whole-shape result as one COMPOSITE_CURVE
+ * per connected curve over its face pieces' 3D curves. The geometry is
+ * formatted by io/step_write*.c; this file takes it from the handles and
+ * the result.
  */
 #include <math.h>
 #include <stdlib.h>
 
+#include "api/shape_member.h"
 #include "common/error.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
@@ -222,6 +225,73 @@ projcurve_status projcurve_step_writer_add_result(projcurve_context *ctx,
     if (!w->uncertainty_set && isfinite(gap))
         w->out.uncertainty = fmax(w->out.uncertainty, gap);
     return PROJCURVE_OK;
+}
+
+/* Each piece of connected curve `curve` of r as a B-spline and a segment
+ * over it; segs gets n entries, the transitions from whether consecutive
+ * pieces meet within the chaining tolerance. */
+static projcurve_status add_segments(projcurve_context *ctx, projcurve_step_writer *w,
+                                     const projcurve_shape_result *r, size_t curve, int closed,
+                                     pc_step_segment *segs, size_t n)
+{
+    const double tol = projcurve_shape_result_chain_tolerance(r);
+    pc_shape_member first = {0}, prev = {0};
+    projcurve_status st = PROJCURVE_OK;
+    for (size_t k = 0; st == PROJCURVE_OK && k < n; ++k) {
+        pc_shape_member m;
+        if ((st = pc_shape_member_get(ctx, r, curve, k, &m)) != PROJCURVE_OK)
+            break;
+        const pc_step_spline view = view_of_nurbs(&m.curve->nurbs);
+        st = pc_step_out_curve(ctx, &w->out, &view, &segs[k].curve);
+        segs[k].same_sense = m.forward;
+        if (k > 0)
+            segs[k - 1].continuous = pc_shape_members_meet(&prev, &m, tol);
+        pc_shape_member_free(&m); /* its ends are kept, its curve is written */
+        if (k == 0)
+            first = m;
+        prev = m;
+    }
+    if (st == PROJCURVE_OK) /* an open composite ends with a discontinuity */
+        segs[n - 1].continuous = closed && pc_shape_members_meet(&prev, &first, tol);
+    return st;
+}
+
+static projcurve_status add_connected_curve(projcurve_context *ctx, projcurve_step_writer *w,
+                                            const projcurve_shape_result *r, size_t curve)
+{
+    size_t n = 0;
+    int closed = 0;
+    projcurve_status st = projcurve_shape_result_curve_info(ctx, r, curve, &n, NULL, &closed);
+    if (st != PROJCURVE_OK || n == 0)
+        return st;
+    pc_step_segment *segs = calloc(n, sizeof *segs);
+    if (segs == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY,
+                       "out of memory for the %zu segments of connected curve %zu", n, curve);
+    st = add_segments(ctx, w, r, curve, closed, segs, n);
+    long id;
+    if (st == PROJCURVE_OK)
+        st = pc_step_out_composite_curve(ctx, &w->out, segs, n, &id);
+    if (st == PROJCURVE_OK)
+        st = pc_step_out_add_to_set(ctx, &w->out, id);
+    free(segs);
+    return st;
+}
+
+projcurve_status projcurve_step_writer_add_shape_result(projcurve_context *ctx,
+                                                        projcurve_step_writer *w,
+                                                        const projcurve_shape_result *r)
+{
+    PC_REQUIRE(ctx, w, "writer");
+    PC_REQUIRE(ctx, r, "shape result");
+    const pc_step_mark mark = pc_step_out_mark(&w->out); /* all or nothing */
+    projcurve_status st = PROJCURVE_OK;
+    const size_t n = projcurve_shape_result_curve_count(r);
+    for (size_t c = 0; st == PROJCURVE_OK && c < n; ++c)
+        st = add_connected_curve(ctx, w, r, c);
+    if (st != PROJCURVE_OK)
+        pc_step_out_rollback(&w->out, &mark);
+    return st;
 }
 
 projcurve_status projcurve_step_writer_set_length_unit(projcurve_context *ctx,

@@ -88,6 +88,10 @@ typedef struct cli_job {
     void *pair_user;
     size_t timeouts; /* calls stopped by PROJCURVE_OPT_TIME_LIMIT (also
                         counted in failures) */
+    /* --faces: the shape job this job is the view of (NULL otherwise); the
+     * SVG draws its connected curves, one path each, instead of a line per
+     * face piece. */
+    const struct cli_shape_job *shapes;
 } cli_job;
 
 /* The user's number of the job's surface s and curve c. */

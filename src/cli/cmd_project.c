@@ -174,8 +174,9 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
 }
 
 /* --faces: each curve of the job onto each shape of the files; the
- * outputs are written from the connected curves (JSON) and from the face
- * results (IGES, STEP, SVG: each face piece on its face's surface). */
+ * outputs are written from the connected curves (JSON; IGES: one composite
+ * curve each; SVG: one path each) and from the face results (STEP: each
+ * face piece on its face's surface; the SVG's parameter panels). */
 static int run_faces_and_write(projcurve_context *ctx, const cli_job *job, const cli_inputs *in,
                                const project_args *a, const char *title)
 {
@@ -196,6 +197,7 @@ static int run_faces_and_write(projcurve_context *ctx, const cli_job *job, const
         return cli_usage_error("out of memory");
     }
     sj.view.metres_per_unit = job->metres_per_unit;
+    sj.view.shapes = &sj;
     if (!a->quiet)
         cli_print_shape_summary(&sj, stdout);
     if (sj.timeouts)
@@ -206,7 +208,7 @@ static int run_faces_and_write(projcurve_context *ctx, const cli_job *job, const
     int ok = 1;
     if (a->iges)
         ok &= cli_is_step_path(a->iges) ? cli_write_step(ctx, &sj.view, a->iges)
-                                        : cli_write_iges(ctx, &sj.view, a->iges);
+                                        : cli_write_shape_iges(ctx, &sj, a->iges);
     if (a->json)
         ok &= cli_write_shape_json(ctx, &sj, a->json);
     if (a->svg)

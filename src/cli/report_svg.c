@@ -2,7 +2,8 @@
 /*
  * SVG picture of a projection: on the left a three-quarter view of the
  * surfaces (iso-parameter lines), the input curves, a few projection rays
- * and every branch in its own colour; on the right a parameter panel per
+ * and every branch in its own colour (with --faces every connected curve
+ * as one path, its face pieces in chain order); on the right a parameter panel per
  * surface (svg_panels.c); below, the legend. The height grows with the
  * panels and the legend. The file is self-contained SVG 1.1: no scripts,
  * fonts or links.
@@ -11,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "shape_job.h"
 #include "svg.h"
 
 #define AZIMUTH_DEG (-30.0)
@@ -129,6 +131,49 @@ static void draw_branch(projcurve_context *ctx, view *v, const cli_job *job, con
     free(tuv);
 }
 
+/* The points of a face piece's 3D curve in the order the chain runs
+ * along it, appended to the open line (its first point repeats the last
+ * piece's end, within the chaining tolerance). */
+static void connected_piece(projcurve_context *ctx, view *v, const projcurve_result *r,
+                            size_t branch, const double t_range[2])
+{
+    projcurve_curve *c = NULL;
+    if (projcurve_result_branch_curve(ctx, r, branch, &c) != PROJCURVE_OK)
+        return;
+    double t0, t1;
+    if (projcurve_curve_domain(ctx, c, &t0, &t1) == PROJCURVE_OK) {
+        const int backwards = t_range[0] > t_range[1];
+        for (int k = 0; k < CURVE_SAMPLES; ++k) {
+            const double s = (double)(backwards ? CURVE_SAMPLES - 1 - k : k) / (CURVE_SAMPLES - 1);
+            double p[3];
+            if (projcurve_curve_eval(ctx, c, t0 + (t1 - t0) * s, 0, p) == PROJCURVE_OK)
+                point(v, p);
+        }
+    }
+    projcurve_curve_destroy(c);
+}
+
+/* Connected curve k of the shape job as one polyline (class "connected"). */
+static void draw_connected(projcurve_context *ctx, view *v, const cli_shape_job *sj, size_t k)
+{
+    const cli_shape_run *run = NULL;
+    size_t curve = 0, n = 0;
+    if (!cli_shape_connected_at(sj, k, &run, &curve) ||
+        projcurve_shape_result_curve_info(ctx, run->result, curve, &n, NULL, NULL) !=
+            PROJCURVE_OK)
+        return;
+    begin_line(v, svg_colour(k), 2.4, " stroke-linejoin=\"round\" class=\"connected\"");
+    for (size_t j = 0; j < n; ++j) {
+        const projcurve_result *fr = NULL;
+        size_t b = 0;
+        double t[2];
+        if (projcurve_shape_result_piece(ctx, run->result, curve, j, NULL, &fr, &b, t, NULL,
+                                         NULL) == PROJCURVE_OK)
+            connected_piece(ctx, v, fr, b, t);
+    }
+    end_line(v);
+}
+
 /* A few segments P(t) -> S(u, v), spread over the pair's branches. */
 static void draw_rays(projcurve_context *ctx, view *v, const cli_job *job, const cli_pair *p)
 {
@@ -172,6 +217,12 @@ static void draw_scene(projcurve_context *ctx, view *v, const cli_job *job)
             draw_rays(ctx, v, job, &job->pairs[i]);
     for (size_t c = 0; c < job->n_curves; ++c)
         draw_curve(ctx, v, job->curves[c], "#222222", 1.6);
+    if (job->shapes != NULL) {
+        const size_t n = cli_shape_connected_total(job->shapes);
+        for (size_t k = 0; k < n; ++k)
+            draw_connected(ctx, v, job->shapes, k);
+        return;
+    }
     size_t k = 0;
     for (size_t i = 0; i < job->n_pairs; ++i) {
         const cli_pair *p = &job->pairs[i];
@@ -206,7 +257,9 @@ int cli_write_svg(projcurve_context *ctx, const cli_job *job, const char *title,
     svg_panels panels;
     svg_panels_layout(job, &panels);
     const double legend_y = fmax(SVG_VIEW_Y1, SVG_PANELS_Y0 + svg_panels_height(&panels)) + 12.0;
-    const double height = legend_y + svg_legend_height(svg_branch_total(job)) + 12.0;
+    const size_t named = job->shapes ? cli_shape_connected_total(job->shapes)
+                                     : svg_branch_total(job);
+    const double height = legend_y + svg_legend_height(named) + 12.0;
     fprintf(f, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"%.0f\" "
                "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" font-family=\"sans-serif\">\n<title>",

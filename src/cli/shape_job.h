@@ -50,6 +50,25 @@ static inline size_t cli_shape_curve_number(const cli_shape_job *job, size_t c)
     return job->curve_numbers ? job->curve_numbers[c] : c;
 }
 
+/* The IGES file of --faces (report_shape_iges.c): every surface of the
+ * view, every NURBS input curve, then each connected curve as one
+ * composite curve (projcurve_iges_writer_add_shape_result). A run whose
+ * pieces cannot all be written (one not composed) is left out with a
+ * message. Returns 0 on a failure to write (reported on stderr). */
+int cli_write_shape_iges(projcurve_context *ctx, const cli_shape_job *job, const char *path);
+
+/* The connected curves of every run, and the k-th of them (its run and
+ * index in the run's result); 0 past the end. For the SVG's paths and
+ * legend. */
+size_t cli_shape_connected_total(const cli_shape_job *job);
+int cli_shape_connected_at(const cli_shape_job *job, size_t k, const cli_shape_run **run,
+                           size_t *curve);
+
+/* The number (as cli_shape_connected_at counts) of the connected curve
+ * that face piece (face_result, branch) belongs to; SIZE_MAX for none. */
+size_t cli_shape_connected_of(const cli_shape_job *job, const projcurve_result *face_result,
+                              size_t branch);
+
 /* The JSON report (report_shape_json.c) and the summary line. */
 int cli_write_shape_json(projcurve_context *ctx, const cli_shape_job *job, const char *path);
 void cli_print_shape_summary(const cli_shape_job *job, FILE *out);

@@ -166,3 +166,50 @@ void cli_shape_job_free(cli_shape_job *job)
     job->n_runs = 0;
     memset(&job->view, 0, sizeof job->view);
 }
+
+size_t cli_shape_connected_total(const cli_shape_job *job)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < job->n_runs; ++i)
+        n += projcurve_shape_result_curve_count(job->runs[i].result);
+    return n;
+}
+
+int cli_shape_connected_at(const cli_shape_job *job, size_t k, const cli_shape_run **run,
+                           size_t *curve)
+{
+    for (size_t i = 0; i < job->n_runs; ++i) {
+        const size_t n = projcurve_shape_result_curve_count(job->runs[i].result);
+        if (k < n) {
+            *run = &job->runs[i];
+            *curve = k;
+            return 1;
+        }
+        k -= n;
+    }
+    return 0;
+}
+
+size_t cli_shape_connected_of(const cli_shape_job *job, const projcurve_result *face_result,
+                              size_t branch)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < job->n_runs; ++i) {
+        const projcurve_shape_result *sr = job->runs[i].result;
+        const size_t n = projcurve_shape_result_curve_count(sr);
+        for (size_t c = 0; c < n; ++c, ++k) {
+            size_t np = 0;
+            if (projcurve_shape_result_curve_info(NULL, sr, c, &np, NULL, NULL) != PROJCURVE_OK)
+                continue;
+            for (size_t j = 0; j < np; ++j) {
+                const projcurve_result *fr = NULL;
+                size_t b = 0;
+                if (projcurve_shape_result_piece(NULL, sr, c, j, NULL, &fr, &b, NULL, NULL,
+                                                 NULL) == PROJCURVE_OK &&
+                    fr == face_result && b == branch)
+                    return k;
+            }
+        }
+    }
+    return SIZE_MAX;
+}

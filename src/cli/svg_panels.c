@@ -7,6 +7,7 @@
  */
 #include <stdlib.h>
 
+#include "shape_job.h"
 #include "svg.h"
 
 #define PANEL_LEFT 50.0  /* room for the v numbers */
@@ -112,7 +113,8 @@ static void axes(FILE *f, double x, double y, double size, const double d[4])
             y + size / 2 - 10);
 }
 
-/* The pcurves of the branches on job surface s, in their legend colours. */
+/* The pcurves of the branches on job surface s, in their legend colours
+ * (with --faces their connected curves'). */
 static void pcurves(projcurve_context *ctx, FILE *f, const cli_job *job, size_t s, double x,
                     double y, double size, const double d[4])
 {
@@ -125,8 +127,11 @@ static void pcurves(projcurve_context *ctx, FILE *f, const cli_job *job, size_t 
             double *tuv = p->surface == s ? svg_branch_points(ctx, p->result, b, &n) : NULL;
             if (tuv == NULL)
                 continue;
+            /* --faces: a face piece in its connected curve's colour */
+            const size_t colour =
+                job->shapes ? cli_shape_connected_of(job->shapes, p->result, b) : k;
             fprintf(f, "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"",
-                    svg_colour(k));
+                    svg_colour(colour));
             for (size_t j = 0; j < n; ++j) {
                 const double a = (tuv[3 * j + 1] - d[0]) / (d[1] - d[0]);
                 const double c = (tuv[3 * j + 2] - d[2]) / (d[3] - d[2]);
@@ -181,8 +186,42 @@ double svg_legend_height(size_t branches)
     return (double)lines * SVG_LEGEND_LINE + 8.0;
 }
 
+/* --faces: a line per connected curve. */
+static void connected_legend(projcurve_context *ctx, FILE *f, const cli_shape_job *sj, double y0)
+{
+    const size_t total = cli_shape_connected_total(sj);
+    double y = y0 + SVG_LEGEND_LINE;
+    for (size_t k = 0; k < total && k < SVG_LEGEND_MAX; ++k, y += SVG_LEGEND_LINE) {
+        const cli_shape_run *run = NULL;
+        size_t curve = 0, n = 0;
+        int closed = 0;
+        if (!cli_shape_connected_at(sj, k, &run, &curve))
+            break;
+        projcurve_shape_result_curve_info(ctx, run->result, curve, &n, NULL, &closed);
+        fprintf(f,
+                "<rect x=\"%.1f\" y=\"%.1f\" width=\"18\" height=\"4\" fill=\"%s\"/>"
+                "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">connected curve %zu: curve %zu "
+                "onto shape %zu, %zu face piece(s)%s</text>\n",
+                SVG_VIEW_X0, y - 4, svg_colour(k), SVG_VIEW_X0 + 24, y, k,
+                cli_shape_curve_number(sj, run->curve), run->shape, n, closed ? ", closed" : "");
+    }
+    if (total > SVG_LEGEND_MAX)
+        fprintf(f,
+                "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">and %zu more connected curves "
+                "(the JSON report, --json, lists all %zu)</text>\n",
+                SVG_VIEW_X0 + 24, y, total - SVG_LEGEND_MAX, total);
+    if (total == 0)
+        fprintf(f, "<text x=\"%.1f\" y=\"%.1f\" font-size=\"12\">no connected curve: no curve "
+                   "projects onto a face</text>\n",
+                SVG_VIEW_X0, y);
+}
+
 void svg_legend_write(projcurve_context *ctx, FILE *f, const cli_job *job, double y0)
 {
+    if (job->shapes != NULL) {
+        connected_legend(ctx, f, job->shapes, y0);
+        return;
+    }
     size_t k = 0;
     double y = y0 + SVG_LEGEND_LINE;
     for (size_t i = 0; i < job->n_pairs; ++i) {

@@ -51,6 +51,13 @@ void pc_iges_out_truncate(pc_iges_out *out, size_t count);
  * 126 `planar_z` != 0 marks a curve lying in the plane z = 0 (a pcurve). */
 void pc_iges_format_surface(pc_text_buf *b, const pc_nurbs_surface *s);
 void pc_iges_format_curve(pc_text_buf *b, const pc_nurbs_curve *c, int planar_z);
+/* Entity 126 of c run from its end to its start: parameter s = a + b - t
+ * over the same knot interval [a, b], so that member k + 1 of a composite
+ * curve (102) starts where member k ends. */
+void pc_iges_format_curve_reversed(pc_text_buf *b, const pc_nurbs_curve *c, int planar_z);
+/* Entity 102 (composite curve) of the n curves at DE pointers members, in
+ * the order the composite runs through them. */
+void pc_iges_format_composite(pc_text_buf *b, const size_t *members, size_t n);
 /* Entity 126 of degree 1 through n points (x, y, z) with parameters t
  * (strictly increasing); planar_z as above. */
 void pc_iges_format_polyline(pc_text_buf *b, const double *xyz, const double *t, size_t n,

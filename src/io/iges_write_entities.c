@@ -101,3 +101,34 @@ void pc_iges_format_polyline(pc_text_buf *b, const double *xyz, const double *t,
     reals(b, xyz, 3 * n);
     curve_tail(b, t[0], t[n - 1], planar_z);
 }
+
+/* The curve run backwards, parametrised by s = a + b - t over the same
+ * interval [a, b] (a, b the clamped knot vector's ends): knots mirrored and
+ * taken in reverse, the points (and weights) in reverse order. */
+void pc_iges_format_curve_reversed(pc_text_buf *b, const pc_nurbs_curve *c, int planar_z)
+{
+    const size_t n = c->n_ctrl, n_knots = n + (size_t)c->degree + 1;
+    const double lo = c->knots[0], hi = c->knots[n_knots - 1];
+    pc_iges_param_int(b, (long long)n - 1);
+    pc_iges_param_int(b, c->degree);
+    pc_iges_param_int(b, planar_z ? 1 : 0);
+    pc_iges_param_int(b, 0);
+    pc_iges_param_int(b, c->rational ? 0 : 1);
+    pc_iges_param_int(b, 0);
+    for (size_t i = n_knots; i-- > 0;)
+        pc_iges_param_real(b, lo + hi - c->knots[i]);
+    for (size_t i = n; i-- > 0;)
+        pc_iges_param_real(b, c->cw[4 * i + 3]);
+    for (size_t i = n; i-- > 0;)
+        for (size_t k = 0; k < 3; ++k)
+            pc_iges_param_real(b, c->cw[4 * i + k] / c->cw[4 * i + 3]);
+    curve_tail(b, lo + hi - c->t1, lo + hi - c->t0, planar_z);
+}
+
+void pc_iges_format_composite(pc_text_buf *b, const size_t *members, size_t n)
+{
+    pc_iges_param_int(b, (long long)n);
+    for (size_t i = 0; i < n; ++i)
+        pc_iges_param_int(b, (long long)members[i]);
+    pc_iges_param_end(b);
+}

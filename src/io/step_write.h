@@ -88,6 +88,23 @@ projcurve_status pc_step_out_pcurve(projcurve_context *ctx, pc_step_out *out, lo
  * the surface, the 3D curve within the uncertainty of it). */
 projcurve_status pc_step_out_surface_curve(projcurve_context *ctx, pc_step_out *out,
                                            long curve3d, long pcurve, long *id);
+/* A COMPOSITE_CURVE_SEGMENT of a composite curve: its curve, whether the
+ * composite runs along it in its own sense, and whether it continues into
+ * the next segment (the first after the last, on a closed composite)
+ * without a gap. */
+typedef struct pc_step_segment {
+    long curve;
+    int same_sense;
+    int continuous; /* .CONTINUOUS., else .DISCONTINUOUS. */
+} pc_step_segment;
+
+/* A COMPOSITE_CURVE of the n segments (self_intersect .U.), each a
+ * COMPOSITE_CURVE_SEGMENT; *id gets its number. ISO 10303-42 asks for
+ * exactly one discontinuous transition on an open composite (its last
+ * segment's) and none on a closed one. Statuses: OK, NO_MEMORY. */
+projcurve_status pc_step_out_composite_curve(projcurve_context *ctx, pc_step_out *out,
+                                             const pc_step_segment *segments, size_t n,
+                                             long *id);
 /* Makes #id an element of the GEOMETRIC_SET. */
 projcurve_status pc_step_out_add_to_set(projcurve_context *ctx, pc_step_out *out, long id);
 

@@ -381,3 +381,30 @@ projcurve_status pc_step_out_surface_curve(projcurve_context *ctx, pc_step_out *
     end(out);
     return formatted(ctx, out);
 }
+
+/* ---- composite curves ------------------------------------------------------ */
+
+projcurve_status pc_step_out_composite_curve(projcurve_context *ctx, pc_step_out *out,
+                                             const pc_step_segment *segments, size_t n,
+                                             long *id)
+{
+    const long first = out->next_id;
+    out->next_id += (long)n;
+    for (size_t k = 0; k < n; ++k) {
+        begin(out, first + (long)k, "COMPOSITE_CURVE_SEGMENT(");
+        pc_text_buf_printf(&out->data, "%s,%s,#%ld)",
+                           segments[k].continuous ? ".CONTINUOUS." : ".DISCONTINUOUS.",
+                           segments[k].same_sense ? ".T." : ".F.", segments[k].curve);
+        end(out);
+    }
+    *id = next_id(out);
+    begin(out, *id, "COMPOSITE_CURVE('',(");
+    for (size_t k = 0; k < n; ++k) {
+        if (k > 0)
+            comma(out);
+        ref(out, first + (long)k);
+    }
+    pc_text_buf_puts(&out->data, "),.U.)");
+    end(out);
+    return formatted(ctx, out);
+}

@@ -320,6 +320,8 @@ static outcome call_conical(void) { return project(PROJECT_CONICAL); }
 
 /* onto a face: the whole domain with a square hole in its middle */
 static projcurve_face *face;
+/* the curve projected onto it, for the writers' add_shape_result */
+static projcurve_shape_result *face_result;
 
 static projcurve_options *nearest_opts;
 
@@ -412,16 +414,17 @@ static outcome call_iges_write(void)
         o.out_untouched = w == SENTINEL;
         return o;
     }
-    for (int step = 0; step < 4 && o.st == PROJCURVE_OK; ++step) {
+    for (int step = 0; step < 5 && o.st == PROJCURVE_OK; ++step) {
         const int saved = projcurve_iges_writer_write(ctx, w, write_path) == PROJCURVE_OK;
         const hash before = saved ? file_hash(write_path) : 0;
         armed = 1;
         o.st = step == 0   ? projcurve_iges_writer_add_surface(ctx, w, surface)
                : step == 1 ? projcurve_iges_writer_add_curve(ctx, w, curve)
                : step == 2 ? projcurve_iges_writer_add_result(ctx, w, surface, result)
+               : step == 3 ? projcurve_iges_writer_add_shape_result(ctx, w, face_result)
                            : projcurve_iges_writer_write(ctx, w, write_path);
         armed = 0;
-        if (o.st != PROJCURVE_OK && step < 3) {
+        if (o.st != PROJCURVE_OK && step < 4) {
             CHECK(projcurve_iges_writer_write(ctx, w, write_path) == PROJCURVE_OK);
             if (file_hash(write_path) != before)
                 pc_test_fail_at(__FILE__, __LINE__, "a failed step %d changed the writer", step);
@@ -445,16 +448,17 @@ static outcome call_step_write(void)
         o.out_untouched = w == SENTINEL;
         return o;
     }
-    for (int step = 0; step < 4 && o.st == PROJCURVE_OK; ++step) {
+    for (int step = 0; step < 5 && o.st == PROJCURVE_OK; ++step) {
         const int saved = projcurve_step_writer_write(ctx, w, write_path) == PROJCURVE_OK;
         const hash before = saved ? file_hash(write_path) : 0;
         armed = 1;
         o.st = step == 0   ? projcurve_step_writer_add_surface(ctx, w, surface)
                : step == 1 ? projcurve_step_writer_add_curve(ctx, w, curve)
                : step == 2 ? projcurve_step_writer_add_result(ctx, w, surface, result)
+               : step == 3 ? projcurve_step_writer_add_shape_result(ctx, w, face_result)
                            : projcurve_step_writer_write(ctx, w, write_path);
         armed = 0;
-        if (o.st != PROJCURVE_OK && step < 3) {
+        if (o.st != PROJCURVE_OK && step < 4) {
             CHECK(projcurve_step_writer_write(ctx, w, write_path) == PROJCURVE_OK);
             if (file_hash(write_path) != before)
                 pc_test_fail_at(__FILE__, __LINE__, "a failed step %d changed the writer", step);
@@ -588,6 +592,9 @@ int main(int argc, char **argv)
         CHECK_OK(projcurve_face_create(ctx, surface, 2, loop_pieces, degrees, n_ctrl, ctrl,
                                        weights, kn, 0.0, &face));
     }
+    CHECK_OK(projcurve_project_face(ctx, face, curve, PROJCURVE_PROJECT_DIRECTIONAL, down, NULL,
+                                    &face_result));
+    CHECK(projcurve_shape_result_curve_count(face_result) > 0);
     static const entry entries[] = {
         {"project_face", call_project_face},
         {"project_face (conical, nearest)", call_project_face_nearest},
@@ -609,6 +616,7 @@ int main(int argc, char **argv)
         check_entry(&entries[i]);
     remove(write_path);
     projcurve_result_destroy(result);
+    projcurve_shape_result_destroy(face_result);
     projcurve_face_destroy(face);
     projcurve_options_destroy(ortho_opts);
     projcurve_options_destroy(nearest_opts);

@@ -1,17 +1,24 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """projcurve project --faces on the B-rep cases (tests/data/cases-brep):
 the JSON's connected curves (and, where the notes say, face pieces) against
-the MANIFEST's EXPECT, its fields, and the IGES and STEP files written
-re-read by `projcurve info`: one curve per input curve plus one per seam
-segment of each face piece (seams + 1: a curve on its face's surface per
-segment), and, where the Open CASCADE checkers were built
-(PC_OCCT_IGES_CHECK, PC_OCCT_STEP_CHECK name them), by Open CASCADE: one
-142 / SURFACE_CURVE per segment, the pcurve on its surface within twice
-eps_D of the 3D curve."""
+the MANIFEST's EXPECT, its fields, the SVG's paths (one per connected
+curve), and the IGES and STEP files written:
+the IGES holds one composite curve (102) per connected curve of the JSON,
+with as many members as the curve has face pieces (read from the file's
+records, iges_geometry.py), and `projcurve info` reads it as one curve per
+input curve plus one per connected curve (its members joined); the STEP
+holds one curve per input curve plus one per seam segment of each face
+piece (seams + 1: a curve on its face's surface per segment). Where the
+Open CASCADE checkers were built (PC_OCCT_IGES_CHECK, PC_OCCT_STEP_CHECK
+name them), Open CASCADE reads them too: the 102s with their member
+counts, and one SURFACE_CURVE per segment, the pcurve on its surface
+within twice eps_D of the 3D curve."""
 import json
 import os
 import re
 import subprocess
+
+from iges_geometry import read_entities
 
 START_KINDS = {"curve_start", "jump", "boundary", "silhouette", "curve_crossing", "trim",
                "visible", "max_distance"}
@@ -82,14 +89,24 @@ def info_counts(exe, path):
 OPEN_OCCT_STEP = {}
 
 
-def occt_check(out, segments, tol, name, check):
+def composite_members(path):
+    """The member count of each composite curve (102) of an IGES file, in
+    directory order."""
+    return [int(fields[0]) for _, (etype, _, fields) in sorted(read_entities(path).items())
+            if etype == 102]
+
+
+def occt_check(out, members, segments, tol, name, check):
     """Open CASCADE reads the written files (skipped where not built)."""
-    for ext, env, extra in (("igs", "PC_OCCT_IGES_CHECK", []),
-                            ("step", "PC_OCCT_STEP_CHECK", [str(tol)])):
+    counts = ",".join(str(m) for m in members)
+    for ext, env, args in (("igs", "PC_OCCT_IGES_CHECK", ["--composites", out["igs"], counts]),
+                           ("step", "PC_OCCT_STEP_CHECK",
+                            ["--file", out["step"], str(segments), str(tol)])):
         exe = os.environ.get(env)
         if not exe:
+            print(f"SKIP {name}: {env} not set (Open CASCADE checker not built)")
             continue
-        proc = subprocess.run([exe, "--file", out[ext], str(segments)] + extra,
+        proc = subprocess.run([exe] + args,
                               capture_output=True, text=True, timeout=120,
                               env=dict(os.environ, ASAN_OPTIONS="detect_leaks=0"))
         if ext == "step" and name in OPEN_OCCT_STEP:
@@ -138,19 +155,33 @@ def part_faces(exe, data, work, run, check):
         n_input = info_counts(exe, curves)[1]
         faces = {(r["shape"], p["shape_face"]) for r in result["runs"] for c in r["curves"]
                  for p in c["pieces"]}
+        # the SVG draws each connected curve as one path
+        with open(out["svg"]) as f:
+            paths = f.read().count('class="connected"')
+        check(paths == got_curves,
+              f"{name}: the SVG has {paths} connected-curve paths for {got_curves} curves")
+        # one composite curve per connected curve, a member per face piece
+        members = [len(c["pieces"]) for r in result["runs"] for c in r["curves"]]
+        written = composite_members(out["igs"])
+        check(written == members,
+              f"{name}: the IGES's composite curves (102) have {written} members, the JSON's "
+              f"connected curves {members} face pieces")
         for ext in ("igs", "step"):
             counts = info_counts(exe, out[ext])
             check(counts is not None, f"{name}: info reads the {ext} written")
             if counts is None:
                 continue
-            # every face piece is written, each seam segment of it as a
-            # curve on its surface
-            check(counts[1] == n_input + got_segments,
-                  f"{name}: {ext} holds {counts[1]} curves, expected {n_input} input + "
-                  f"{got_segments} segments of {got_pieces} pieces")
+            # IGES: each composite read as one curve (its members joined);
+            # STEP: every face piece, each seam segment of it as a curve on
+            # its surface
+            want = n_input + (got_curves if ext == "igs" else got_segments)
+            check(counts[1] == want,
+                  f"{name}: {ext} holds {counts[1]} curves, expected {want}: {n_input} input + "
+                  + (f"{got_curves} connected curves" if ext == "igs" else
+                     f"{got_segments} segments of {got_pieces} pieces"))
             # and the surfaces of the faces it lies on (faces may share one)
             check(counts[0] >= 1, f"{name}: {ext} holds no surface for {len(faces)} faces")
-        occt_check(out, got_segments, 2.0 * float(case["tol_dist"]), name, check)
+        occt_check(out, members, got_segments, 2.0 * float(case["tol_dist"]), name, check)
     # --faces picks shapes; --surface one surface: not both
     run([exe, "project", os.path.join(base, "shell_2x2.step"), "--faces", "--surface", "0",
          "--dir", "0,0,-1"], 2, "--faces with --surface")

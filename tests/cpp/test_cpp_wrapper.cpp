@@ -804,9 +804,11 @@ void test_seams_and_hits(pc::context &ctx)
 // The 2 x 2 shell of shell_2x2.step along the case's direction: one
 // connected curve of four face pieces, consecutive ones meeting on the
 // shared edge (same t, same point: the crossing is located to 1e-10 of the
-// model size); every traced point on its ray. Conical onto faces is not
+// model size); every traced point on its ray; written whole (one IGES 102,
+// one STEP COMPOSITE_CURVE) and read back: one joined curve from the IGES,
+// the four pieces' B-splines from the STEP. Conical onto faces is not
 // offered yet: UNSUPPORTED.
-void test_faces_and_shapes(pc::context &ctx)
+void test_faces_and_shapes(pc::context &ctx, const std::string &out_dir)
 {
     const std::string dir = std::string(PC_TEST_DATA_DIR) + "/cases-brep/";
     const pc::model m = pc::model::read_file(ctx, dir + "shell_2x2.step");
@@ -816,6 +818,14 @@ void test_faces_and_shapes(pc::context &ctx)
     const pc::shape_result r = pc::project_shape(ctx, m.shape(0), c, PROJCURVE_PROJECT_DIRECTIONAL, d);
     CHECK(r.complete() && r.curve_count() == 1 && r.open_end_count() == 0 && r.face_count() == 4);
     CHECK(r.chain_tolerance() > 0);
+    const std::string igs = out_dir + "/test_cpp_wrapper_shape.igs";
+    const std::string stp = out_dir + "/test_cpp_wrapper_shape.step";
+    pc::iges_writer(ctx).add_shape_result(ctx, r).write(ctx, igs);
+    pc::step_writer(ctx).add_shape_result(ctx, r).write(ctx, stp);
+    CHECK(pc::model::read_file(ctx, igs).curve_count() == 1);
+    CHECK(pc::model::read_file(ctx, stp).curve_count() == 4);
+    std::remove(igs.c_str());
+    std::remove(stp.c_str());
     const pc::connected_curve cc = r.curve(ctx, 0);
     CHECK(cc.n_pieces == 4 && !cc.closed);
     std::array<double, 3> last_end{};
@@ -972,7 +982,7 @@ int main(int argc, char **argv)
         test_step_round_trip(ctx, dir);
         test_many_curves(ctx);
         test_seams_and_hits(ctx);
-        test_faces_and_shapes(ctx);
+        test_faces_and_shapes(ctx, dir);
         test_model_shapes(ctx);
         test_adopt(ctx);
     } catch (const pc::error &e) {

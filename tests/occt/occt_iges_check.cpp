@@ -16,7 +16,9 @@
 // piece. (4) Branches joined across the seams of a full cylinder and a
 // torus: one 142 per seam segment, each pcurve inside OCCT's bounds of its
 // surface (to 1e-12 of the width) and OCCT's S(p(t)) within 2 eps_D of its
-// 3D curve (each compact form is within eps_D of the projection).
+// 3D curve (each compact form is within eps_D of the projection). (5) A
+// whole-shape result (projcurve_iges_writer_add_shape_result) on the 2x2
+// shell: one composite curve (102) of four members, transferred.
 #include <cstdlib>
 #include <BRep_Tool.hxx>
 #include <Geom_Curve.hxx>
@@ -26,6 +28,7 @@
 #include <Geom_Surface.hxx>
 #include <IGESGeom_BSplineCurve.hxx>
 #include <IGESGeom_BSplineSurface.hxx>
+#include <IGESGeom_CompositeCurve.hxx>
 #include <IGESGeom_CurveOnSurface.hxx>
 #include <IGESToBRep_BasicCurve.hxx>
 #include <IGESToBRep_BasicSurface.hxx>
@@ -558,10 +561,102 @@ int check_given_file(const std::string &path, int n)
     return pc_test_finish("occt_iges_check --file");
 }
 
+// The member counts of "4,5,1" (an empty list for "").
+std::vector<int> count_list(const std::string &text)
+{
+    std::vector<int> out;
+    size_t pos = 0;
+    while (pos < text.size() && out.size() < 100000) {
+        const size_t comma = text.find(',', pos);
+        const std::string item = text.substr(pos, comma == std::string::npos ? comma : comma - pos);
+        out.push_back(std::atoi(item.c_str()));
+        if (comma == std::string::npos)
+            break;
+        pos = comma + 1;
+    }
+    return out;
+}
+
+std::string list_text(const std::vector<int> &v)
+{
+    std::string s;
+    for (size_t i = 0; i < v.size(); ++i)
+        s += (i ? "," : "") + std::to_string(v[i]);
+    return s;
+}
+
+// occt_iges_check --composites PATH M1,M2,...: a file with the composite
+// curves of projcurve_iges_writer_add_shape_result (the command's --faces
+// -o out.igs): OCCT finds one 102 per connected curve, in file order with
+// M1, M2, ... members, and transfers at least one edge per member.
+void check_composites(const std::string &path, const std::vector<int> &members)
+{
+    IGESControl_Reader reader;
+    const IFSelect_ReturnStatus st = reader.ReadFile(path.c_str());
+    CHECK(st == IFSelect_RetDone);
+    if (st != IFSelect_RetDone)
+        return;
+    Handle(IGESData_IGESModel) model = reader.IGESModel();
+    std::vector<int> got;
+    int total = 0;
+    for (Standard_Integer i = 1; i <= model->NbEntities(); ++i) {
+        Handle(IGESGeom_CompositeCurve) cc = Handle(IGESGeom_CompositeCurve)::DownCast(model->Entity(i));
+        if (!cc.IsNull())
+            got.push_back(cc->NbCurves());
+    }
+    for (int m : members)
+        total += m;
+    if (got != members)
+        pc_test_fail_at(__FILE__, __LINE__, "%s: OCCT sees composite curves (102) of %s members, "
+                        "expected %s", path.c_str(), list_text(got).c_str(),
+                        list_text(members).c_str());
+    ++pc_test_checks;
+    CHECK(reader.TransferRoots() >= 1);
+    const int edges = count_shapes(reader.OneShape(), TopAbs_EDGE);
+    if (edges < total)
+        pc_test_fail_at(__FILE__, __LINE__, "%s: OCCT transfers %d edges for %d members",
+                        path.c_str(), edges, total);
+    ++pc_test_checks;
+    std::printf("%s: %zu composite curves (%s members), %d edges\n", path.c_str(), got.size(),
+                list_text(got).c_str(), edges);
+}
+
+// The U curve of shell_2x2_bspline_oblique onto the 2x2 shell (one
+// connected curve of four face pieces), written with
+// projcurve_iges_writer_add_shape_result: OCCT sees one 102 of four members.
+void check_shape_result(const std::string &dir)
+{
+    projcurve_model *shell = nullptr, *curves = nullptr;
+    CHECK_OK(projcurve_model_read_file(ctx, pc_test_data_path("cases-brep/shell_2x2.step"), &shell));
+    CHECK_OK(projcurve_model_read_file(
+        ctx, pc_test_data_path("cases-brep/shell_2x2_bspline_oblique.curves.igs"), &curves));
+    if (shell == nullptr || curves == nullptr)
+        return;
+    const double d[3] = {0.2, -0.1, -1.0};
+    projcurve_shape_result *r = nullptr;
+    CHECK_OK(projcurve_project_shape(ctx, projcurve_model_shape(shell, 0),
+                                     projcurve_model_curve(curves, 0),
+                                     PROJCURVE_PROJECT_DIRECTIONAL, d, nullptr, &r));
+    projcurve_iges_writer *w = nullptr;
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_OK(projcurve_iges_writer_add_shape_result(ctx, w, r));
+    const std::string path = dir + "/occt_shape_result.igs";
+    CHECK_OK(projcurve_iges_writer_write(ctx, w, path.c_str()));
+    projcurve_iges_writer_destroy(w);
+    check_composites(path, {4});
+    projcurve_shape_result_destroy(r);
+    projcurve_model_destroy(shell);
+    projcurve_model_destroy(curves);
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 4 && std::string(argv[1]) == "--file")
         return check_given_file(argv[2], std::atoi(argv[3]));
+    if (argc == 4 && std::string(argv[1]) == "--composites") {
+        check_composites(argv[2], count_list(argv[3]));
+        return pc_test_finish("occt_iges_check --composites");
+    }
     const std::string dir = argc > 1 ? argv[1] : ".";
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
     projcurve_surface *s1 = plane(), *s2 = quarter_cylinder();
@@ -596,6 +691,7 @@ int main(int argc, char **argv)
     check_seam_case(dir, "cylinder", pc_shape_cylinder(1.0, 2.0), cyl0, cyl1, 1);
     const double tor0[3] = {3, -1, -0.6}, tor1[3] = {3, 1, 0.4};
     check_seam_case(dir, "torus", pc_shape_torus(2.0, 0.5), tor0, tor1, 2);
+    check_shape_result(dir);
 
     projcurve_result_destroy(r);
     projcurve_curve_destroy(c);

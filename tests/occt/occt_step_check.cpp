@@ -17,7 +17,10 @@
 // uncertainty of each other (the two forms of one curve). Branches joined
 // across the seams of a full cylinder and a torus give one SURFACE_CURVE
 // per seam segment, each PCURVE inside OCCT's bounds of its surface (to
-// 1e-12 of the width).
+// 1e-12 of the width). A whole-shape result
+// (projcurve_step_writer_add_shape_result) on the 2x2 shell: one
+// COMPOSITE_CURVE of four segments over B-splines OCCT converts, meeting
+// within the chaining tolerance, transferred as four edges.
 #include <cstdlib>
 #include <BRep_Tool.hxx>
 #include <Geom2d_BSplineCurve.hxx>
@@ -30,6 +33,8 @@
 #include <StepData_StepModel.hxx>
 #include <StepGeom_BSplineCurve.hxx>
 #include <StepGeom_BSplineSurface.hxx>
+#include <StepGeom_CompositeCurve.hxx>
+#include <StepGeom_CompositeCurveSegment.hxx>
 #include <StepGeom_Pcurve.hxx>
 #include <StepGeom_PcurveOrSurface.hxx>
 #include <StepGeom_SurfaceCurve.hxx>
@@ -525,6 +530,67 @@ int check_given_file(const std::string &path, size_t n, double tol)
 
 } // namespace
 
+// A whole-shape result (projcurve_step_writer_add_shape_result): the U
+// curve of shell_2x2_bspline_oblique onto the 2x2 shell, one connected
+// curve of four face pieces. OCCT finds one COMPOSITE_CURVE of four
+// segments, each over a B-spline that OCCT converts, consecutive ones
+// meeting within the chaining tolerance (OCCT's own evaluation), and
+// transfers the set.
+void check_shape_result(const std::string &dir)
+{
+    projcurve_model *shell = nullptr, *curves = nullptr;
+    CHECK_OK(projcurve_model_read_file(ctx, pc_test_data_path("cases-brep/shell_2x2.step"), &shell));
+    CHECK_OK(projcurve_model_read_file(
+        ctx, pc_test_data_path("cases-brep/shell_2x2_bspline_oblique.curves.igs"), &curves));
+    if (shell == nullptr || curves == nullptr)
+        return;
+    const double d[3] = {0.2, -0.1, -1.0};
+    projcurve_shape_result *r = nullptr;
+    CHECK_OK(projcurve_project_shape(ctx, projcurve_model_shape(shell, 0),
+                                     projcurve_model_curve(curves, 0),
+                                     PROJCURVE_PROJECT_DIRECTIONAL, d, nullptr, &r));
+    projcurve_step_writer *w = nullptr;
+    CHECK_OK(projcurve_step_writer_create(ctx, &w));
+    CHECK_OK(projcurve_step_writer_add_shape_result(ctx, w, r));
+    const std::string path = dir + "/occt_shape_result.step";
+    CHECK_OK(projcurve_step_writer_write(ctx, w, path.c_str()));
+    projcurve_step_writer_destroy(w);
+    const double tol = projcurve_shape_result_chain_tolerance(r);
+
+    STEPControl_Reader reader;
+    const loaded l = load(reader, path);
+    std::vector<int> segments;
+    for (Standard_Integer i = 1; !l.model.IsNull() && i <= l.model->NbEntities(); ++i) {
+        Handle(StepGeom_CompositeCurve) cc = Handle(StepGeom_CompositeCurve)::DownCast(l.model->Value(i));
+        if (cc.IsNull())
+            continue;
+        segments.push_back(cc->NbSegments());
+        gp_Pnt last;
+        for (Standard_Integer k = 1; k <= cc->NbSegments(); ++k) {
+            Handle(StepGeom_BSplineCurve) b =
+                Handle(StepGeom_BSplineCurve)::DownCast(cc->SegmentsValue(k)->ParentCurve());
+            CHECK(!b.IsNull() && cc->SegmentsValue(k)->SameSense());
+            Handle(Geom_BSplineCurve) g = b.IsNull() ? nullptr : StepToGeom::MakeBSplineCurve(b);
+            CHECK(!g.IsNull());
+            if (g.IsNull())
+                continue;
+            if (k > 1)
+                CHECK(last.Distance(g->Value(g->FirstParameter())) <= tol);
+            last = g->Value(g->LastParameter());
+        }
+    }
+    CHECK(segments.size() == 1 && segments[0] == 4);
+    // the composite is transferred as a wire of one edge per segment
+    int edges = 0;
+    for (TopExp_Explorer e(reader.OneShape(), TopAbs_EDGE); e.More() && edges < 100000; e.Next())
+        ++edges;
+    CHECK(edges == 4);
+    std::printf("%s: %zu composite curves, %d edges\n", path.c_str(), segments.size(), edges);
+    projcurve_shape_result_destroy(r);
+    projcurve_model_destroy(shell);
+    projcurve_model_destroy(curves);
+}
+
 int main(int argc, char **argv)
 {
     if (argc == 5 && std::string(argv[1]) == "--file")
@@ -541,6 +607,7 @@ int main(int argc, char **argv)
     check_seam_case(dir, "cylinder", pc_shape_cylinder(1.0, 2.0), cyl0, cyl1, 1);
     const double tor0[3] = {3, -1, -0.6}, tor1[3] = {3, 1, 0.4};
     check_seam_case(dir, "torus", pc_shape_torus(2.0, 0.5), tor0, tor1, 2);
+    check_shape_result(dir);
     projcurve_context_destroy(ctx);
     return pc_test_finish("occt_step_check");
 }

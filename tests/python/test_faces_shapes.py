@@ -52,6 +52,25 @@ def test_shape_connected_curve(pc):
     assert [f.status for f in r.faces] == [pc.Status.OK] * 4
 
 
+def test_shape_result_written_whole(pc, tmp_path):
+    # one composite curve per connected curve: the IGES 102 is read back as
+    # its members joined (one curve), the STEP COMPOSITE_CURVE's B-splines
+    # as the four pieces, each starting where the one before ended
+    m, c = shell(pc)
+    r = pc.project_shape(m.shapes[0], c, DIR, tol_distance=1e-3)
+    w = pc.IgesWriter()
+    w.add_shape_result(r)
+    w.write(tmp_path / "shape.igs")
+    sw = pc.StepWriter()
+    sw.add_shape_result(r)
+    sw.write(tmp_path / "shape.step")
+    assert len(pc.Model.read(tmp_path / "shape.igs").curves) == 1
+    pieces = pc.Model.read(tmp_path / "shape.step").curves
+    assert len(pieces) == 4
+    for a, b in zip(pieces, pieces[1:]):
+        assert math.dist(a.point(a.domain[1]), b.point(b.domain[0])) <= r.chain_tolerance
+
+
 def test_face_with_a_hole(pc, bilinear):
     # the hole [0.4, 0.6]^2 of the domain; the line y = 0.5 crosses it
     square = [(0.4, 0.4), (0.6, 0.4), (0.6, 0.6), (0.4, 0.6), (0.4, 0.4)]
