@@ -1178,9 +1178,12 @@ typedef enum projcurve_shape_kind {
  * degrees[j] + 1 knots[j]; each runs from the end of the one before, the
  * last back to the start of the first, within 100 tol_uv. tol_uv (> 0) is the width of ON;
  * 0 takes 1e-9 of the domain's size. Arrays are copied; the surface is
- * borrowed. Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (tol_uv), BAD_DEGREE,
+ * borrowed. Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (tol_uv negative,
+ * not finite or wider than the domain), BAD_DEGREE,
  * BAD_COUNT, BAD_KNOTS, NOT_FINITE, BAD_WEIGHT, INVALID_ARGUMENT (an open
- * loop, a hole outside the outer loop, a loop of no area), LIMIT_REACHED
+ * loop, a loop of no area, two loops crossing, a hole outside the outer
+ * loop or inside another hole, an outer loop leaving the surface's domain
+ * by more than 100 tol_uv), LIMIT_REACHED
  * (a piece that needs more than 2^20 segments), NO_MEMORY; the message
  * names the loop and piece. Thread-safe. */
 PROJCURVE_API projcurve_status projcurve_face_create(

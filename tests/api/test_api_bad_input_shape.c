@@ -20,12 +20,14 @@ static projcurve_context *ctx;
 
 #define SENTINEL ((void *)&ctx)
 
-/* A call that must fail with `expected` and a message containing `needle`. */
+/* A call that must fail with `expected` and a message, one containing
+ * `needle`. */
 #define CHECK_FAILS(call, expected, needle)                                            \
     do {                                                                               \
         projcurve_context_clear(ctx);                                                  \
         CHECK_STATUS(call, expected);                                                  \
-        if (strstr(projcurve_context_message(ctx), needle) == NULL)                    \
+        if (projcurve_context_message(ctx)[0] == '\0' ||                               \
+            strstr(projcurve_context_message(ctx), needle) == NULL)                    \
             pc_test_fail_at(__FILE__, __LINE__, "%s: message \"%s\" lacks \"%s\"", #call, \
                             projcurve_context_message(ctx), needle);                   \
     } while (0)
@@ -270,12 +272,50 @@ static void test_face_queries(const projcurve_face *f)
     projcurve_face_destroy(NULL);
 }
 
+static int nan_fn(void *user, double t, double out[9])
+{
+    (void)user;
+    (void)t;
+    for (int i = 0; i < 9; ++i)
+        out[i] = NAN;
+    return 0;
+}
+
+static int failing_fn(void *user, double t, double out[9])
+{
+    (void)user;
+    (void)t;
+    (void)out;
+    return 1;
+}
+
 /* project_face and project_shape share their argument checks: each bad
  * input of the one, then the NULL shape of the other. */
 static void test_project_args(const projcurve_face *f, const projcurve_curve *line,
                               projcurve_curve *point_curve)
 {
     projcurve_shape_result *r = SENTINEL;
+    projcurve_curve *nan_curve = NULL, *failing_curve = NULL;
+    CHECK_OK(projcurve_curve_create_callback(ctx, nan_fn, NULL, 0, 1, &nan_curve));
+    CHECK_OK(projcurve_curve_create_callback(ctx, failing_fn, NULL, 0, 1, &failing_curve));
+    CHECK_FAILS(projcurve_project_face(ctx, f, nan_curve, PROJCURVE_PROJECT_DIRECTIONAL, down,
+                                       NULL, &r),
+                PROJCURVE_ERR_CALLBACK, "");
+    CHECK_FAILS(projcurve_project_face(ctx, f, failing_curve, PROJCURVE_PROJECT_ORTHOGONAL, NULL,
+                                       NULL, &r),
+                PROJCURVE_ERR_CALLBACK, "");
+    projcurve_curve_destroy(nan_curve);
+    projcurve_curve_destroy(failing_curve);
+    projcurve_options *bad_opts = NULL;
+    CHECK_OK(projcurve_options_create(ctx, &bad_opts));
+    CHECK_OK(projcurve_options_set_double(ctx, bad_opts, PROJCURVE_OPT_TIME_LIMIT, 1e-9));
+    projcurve_shape_result *partial = NULL;
+    CHECK_FAILS(projcurve_project_face(ctx, f, line, PROJCURVE_PROJECT_ORTHOGONAL, NULL,
+                                       bad_opts, &partial),
+                PROJCURVE_ERR_LIMIT_REACHED, "time limit");
+    CHECK(partial != NULL); /* the partial result is kept */
+    projcurve_shape_result_destroy(partial);
+    projcurve_options_destroy(bad_opts);
     const double zero[3] = {0, 0, 0}, nan_dir[3] = {0, NAN, -1}, inf_eye[3] = {INFINITY, 0, 0};
     CHECK_FAILS(projcurve_project_face(ctx, NULL, line, PROJCURVE_PROJECT_DIRECTIONAL, down,
                                        NULL, &r),
