@@ -1469,7 +1469,9 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_add_curve(projcurve_context
  * narrower than a curve's domain may be, as its traced points (a degree-1
  * pcurve, no 3D curve). On failure the writer is left as it was (none of
  * the result's entities added). Statuses: OK, NULL_ARGUMENT,
- * INVALID_ARGUMENT, NO_MEMORY. */
+ * INVALID_ARGUMENT (an implicit result, or a result of another surface: a
+ * branch starting outside s's domain, or its first composed point more
+ * than 4 eps_D from S there), NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
                                                                 projcurve_iges_writer *w,
                                                                 const projcurve_surface *s,
@@ -1541,8 +1543,9 @@ PROJCURVE_API projcurve_status projcurve_step_writer_add_curve(projcurve_context
  * largest distance between the two forms the fits measured (each is
  * within its measured error of the exact projection). On failure the
  * writer is left as it was (none of the result added). Statuses: OK,
- * NULL_ARGUMENT, INVALID_ARGUMENT (an implicit result, or a branch without
- * compact forms: not composed), NO_MEMORY, and those of
+ * NULL_ARGUMENT, INVALID_ARGUMENT (an implicit result, a branch without
+ * compact forms: not composed, or a result of another surface, as
+ * projcurve_iges_writer_add_result), NO_MEMORY, and those of
  * projcurve_result_branch_curve. */
 PROJCURVE_API projcurve_status projcurve_step_writer_add_result(projcurve_context *ctx,
                                                                 projcurve_step_writer *w,

@@ -391,6 +391,24 @@ static void test_shape_result(const projcurve_shape_result *r)
     projcurve_shape_result_destroy(NULL);
 }
 
+/* A face result, its branch cut at the loop: on the face's surface, so
+ * both writers take it. */
+static void test_write_face_result(const projcurve_surface *plane,
+                                   const projcurve_shape_result *r)
+{
+    const projcurve_result *fr = NULL;
+    CHECK_OK(projcurve_shape_result_face(ctx, r, 0, NULL, &fr, NULL, NULL));
+    projcurve_step_writer *sw = NULL;
+    projcurve_iges_writer *iw = NULL;
+    CHECK_OK(projcurve_step_writer_create(ctx, &sw));
+    CHECK_OK(projcurve_iges_writer_create(ctx, &iw));
+    CHECK_OK(projcurve_step_writer_add_result(ctx, sw, plane, fr));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, iw, plane, fr));
+    CHECK_OK(projcurve_iges_writer_add_result_pieces(ctx, iw, plane, fr));
+    projcurve_step_writer_destroy(sw);
+    projcurve_iges_writer_destroy(iw);
+}
+
 static void test_model_topology(const projcurve_model *m)
 {
     CHECK(projcurve_model_face_count(NULL) == 0 && projcurve_model_shape_count(NULL) == 0 &&
@@ -475,8 +493,31 @@ static void test_shape_model(const projcurve_curve *line)
     projcurve_model_destroy(m);
 }
 
-static void test_step_writer(const projcurve_surface *plane, const projcurve_curve *line,
-                             const projcurve_curve *callback_curve, const projcurve_result *traced,
+/* The IGES writer given a result of another surface: refused like the
+ * STEP writer's, traced-only results by their (u, v) leaving the domain. */
+static void test_iges_other_surface(const projcurve_surface *plane,
+                                    const projcurve_surface *lifted,
+                                    const projcurve_surface *shifted,
+                                    const projcurve_result *composed,
+                                    const projcurve_result *traced)
+{
+    projcurve_iges_writer *w = NULL;
+    CHECK_OK(projcurve_iges_writer_create(ctx, &w));
+    CHECK_FAILS(projcurve_iges_writer_add_result(ctx, w, lifted, composed),
+                PROJCURVE_ERR_INVALID_ARGUMENT, "not projected onto this surface");
+    CHECK_FAILS(projcurve_iges_writer_add_result_pieces(ctx, w, lifted, composed),
+                PROJCURVE_ERR_INVALID_ARGUMENT, "not projected onto this surface");
+    CHECK_FAILS(projcurve_iges_writer_add_result(ctx, w, shifted, traced),
+                PROJCURVE_ERR_INVALID_ARGUMENT, "outside the surface's domain");
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, plane, composed));
+    CHECK_OK(projcurve_iges_writer_add_result(ctx, w, plane, traced));
+    projcurve_iges_writer_destroy(w);
+}
+
+static void test_step_writer(const projcurve_surface *plane, const projcurve_surface *lifted,
+                             const projcurve_surface *shifted, const projcurve_curve *line,
+                             const projcurve_curve *callback_curve,
+                             const projcurve_result *composed, const projcurve_result *traced,
                              const projcurve_result *implicit)
 {
     projcurve_step_writer *w = NULL;
@@ -502,6 +543,12 @@ static void test_step_writer(const projcurve_surface *plane, const projcurve_cur
                 PROJCURVE_ERR_INVALID_ARGUMENT, "implicit");
     CHECK_FAILS(projcurve_step_writer_add_result(ctx, w, plane, traced),
                 PROJCURVE_ERR_INVALID_ARGUMENT, "no compact forms");
+    /* a result of another surface: its pcurves do not lie on this one */
+    CHECK_FAILS(projcurve_step_writer_add_result(ctx, w, lifted, composed),
+                PROJCURVE_ERR_INVALID_ARGUMENT, "not projected onto this surface");
+    CHECK_FAILS(projcurve_step_writer_add_result(ctx, w, shifted, composed),
+                PROJCURVE_ERR_INVALID_ARGUMENT, "outside the surface's domain");
+    CHECK_OK(projcurve_step_writer_add_result(ctx, w, plane, composed));
     const double bad[] = {NAN, INFINITY, -INFINITY};
     for (int k = 0; k < 3; ++k) {
         CHECK_FAILS(projcurve_step_writer_set_length_unit(ctx, w, bad[k]),
@@ -563,7 +610,7 @@ int main(void)
 {
     pc_test_hang_guard(60);
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
-    projcurve_surface *plane = NULL, *lifted = NULL;
+    projcurve_surface *plane = NULL, *lifted = NULL, *shifted = NULL;
     projcurve_curve *line = NULL, *point_curve = NULL, *callback_curve = NULL;
     const double lifted_net[] = {0, 0, 0.5, 1, 0, 0.5, 0, 1, 0.5, 1, 1, 0.5};
     const double point_net[] = {0.5, 0.5, 1, 0.5, 0.5, 1};
@@ -571,6 +618,10 @@ int main(void)
                                             &plane));
     CHECK_OK(projcurve_surface_create_nurbs(ctx, 1, 1, 2, 2, lifted_net, NULL, knots01, knots01,
                                             &lifted));
+    /* the plane over the domain [5, 6]^2: the same points, other (u, v) */
+    const double knots56[] = {5, 5, 6, 6};
+    CHECK_OK(projcurve_surface_create_nurbs(ctx, 1, 1, 2, 2, plane_net, NULL, knots56, knots56,
+                                            &shifted));
     CHECK_OK(projcurve_curve_create_nurbs(ctx, 1, 2, line_net, NULL, knots01, &line));
     CHECK_OK(projcurve_curve_create_nurbs(ctx, 1, 2, point_net, NULL, knots01, &point_curve));
     pc_shape_line above = {{0.1, 0.5, 1}, {0.8, 0, 0}};
@@ -599,13 +650,17 @@ int main(void)
             projcurve_shape_result *r = NULL;
             CHECK_OK(projcurve_project_face(ctx, f, line, PROJCURVE_PROJECT_DIRECTIONAL, down,
                                             NULL, &r));
-            if (r)
+            if (r) {
                 test_shape_result(r);
+                test_write_face_result(plane, r);
+            }
             projcurve_shape_result_destroy(r);
         }
         projcurve_face_destroy(f);
         test_shape_model(line);
-        test_step_writer(plane, line, callback_curve, traced, implicit);
+        test_step_writer(plane, lifted, shifted, line, callback_curve, composed, traced,
+                         implicit);
+        test_iges_other_surface(plane, lifted, shifted, composed, traced);
         test_compact_exact(plane, lifted, composed, traced, implicit);
     }
     projcurve_result_destroy(composed);
@@ -616,6 +671,7 @@ int main(void)
     projcurve_curve_destroy(callback_curve);
     projcurve_surface_destroy(plane);
     projcurve_surface_destroy(lifted);
+    projcurve_surface_destroy(shifted);
     projcurve_context_destroy(ctx);
     return pc_test_finish("test_api_bad_input_shape");
 }
