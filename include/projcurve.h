@@ -1181,9 +1181,9 @@ typedef enum projcurve_shape_kind {
  * borrowed. Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (tol_uv negative,
  * not finite or wider than the domain), BAD_DEGREE,
  * BAD_COUNT, BAD_KNOTS, NOT_FINITE, BAD_WEIGHT, INVALID_ARGUMENT (an open
- * loop, a loop of no area, two loops crossing, a hole outside the outer
- * loop or inside another hole, an outer loop leaving the surface's domain
- * by more than 100 tol_uv), LIMIT_REACHED
+ * loop, a loop of no area, a loop crossing another or itself, a hole
+ * outside the outer loop or inside another hole, an outer loop leaving the
+ * surface's domain by more than 100 tol_uv), LIMIT_REACHED
  * (a piece that needs more than 2^20 segments), NO_MEMORY; the message
  * names the loop and piece. Thread-safe. */
 PROJCURVE_API projcurve_status projcurve_face_create(

@@ -35,7 +35,7 @@ static size_t loop_of(const size_t *first, size_t n_loops, size_t i)
     return lo;
 }
 
-/* A crossing of two loops within one grid cell: any two crossing segments
+/* A crossing of two loops, or of a loop with itself, within one grid cell: any two crossing segments
  * share a cell (each is listed in every cell its box meets, and they meet
  * at a point of both). The work is the cells' pairs: a few segments a cell
  * by the grid's sizing (classify.h). */
@@ -48,10 +48,16 @@ static projcurve_status check_crossings(projcurve_context *ctx, const projcurve_
         for (size_t p = c->cell_start[cell]; p < c->cell_start[cell + 1]; ++p)
             for (size_t q = p + 1; q < c->cell_start[cell + 1]; ++q) {
                 const size_t i = c->cell_seg[p], j = c->cell_seg[q];
-                const size_t li = loop_of(first, f->n_loops, i), lj = loop_of(first, f->n_loops, j);
-                if (li == lj || !cross(c->seg + 4 * i, c->seg + 4 * j))
+                /* consecutive segments share an end, where orient is 0:
+                 * never a proper crossing */
+                if (!cross(c->seg + 4 * i, c->seg + 4 * j))
                     continue;
+                const size_t li = loop_of(first, f->n_loops, i), lj = loop_of(first, f->n_loops, j);
                 const double *s = c->seg + 4 * i;
+                if (li == lj)
+                    return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                                   "%s: loop %zu crosses itself (near (%.9g, %.9g))", what, li,
+                                   s[0], s[1]);
                 return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                                "%s: loops %zu and %zu cross (near (%.9g, %.9g))", what,
                                li < lj ? li : lj, li < lj ? lj : li, s[0], s[1]);
@@ -82,8 +88,6 @@ static projcurve_status check_nesting(projcurve_context *ctx, const projcurve_fa
 projcurve_status pc_face_check_loops_apart(projcurve_context *ctx, const projcurve_face *f,
                                            const char *what)
 {
-    if (f->n_loops < 2)
-        return PROJCURVE_OK;
     size_t *first = malloc((f->n_loops + 1) * sizeof *first);
     if (first == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory checking a face's loops");

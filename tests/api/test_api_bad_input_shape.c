@@ -90,6 +90,19 @@ static projcurve_status squares_face(const projcurve_surface *s, size_t n, const
     return projcurve_face_create(ctx, s, n, pieces, degrees, n_ctrl, ctrl, NULL, knots, 0.0, out);
 }
 
+/* A face of one loop: the polygon p[0..3] of 4 lines. */
+static projcurve_status quad_face(const projcurve_surface *s, const double p[4][2],
+                                  projcurve_face **out)
+{
+    square_loop L;
+    square(&L, 0.0, 1.0);
+    for (int k = 0; k < 4; ++k) {
+        L.ctrl[k][0] = p[k][0], L.ctrl[k][1] = p[k][1];
+        L.ctrl[k][2] = p[(k + 1) % 4][0], L.ctrl[k][3] = p[(k + 1) % 4][1];
+    }
+    return make_face(s, &L, 0.0, out);
+}
+
 /* Loops that overlap, or lie outside the domain: the classifier counts
  * winding numbers, so such a face would answer IN for points outside its
  * outer loop or inside two holes. */
@@ -122,7 +135,18 @@ static void test_face_loops(const projcurve_surface *plane)
     const double around[][4] = {{0.2, 0.8, 0.2, 0.8}, {0.1, 0.9, 0.1, 0.9}};
     CHECK_FAILS(squares_face(plane, 2, around, &f), PROJCURVE_ERR_INVALID_ARGUMENT,
                 "outside the outer loop");
+    /* a figure eight of unequal lobes (its signed area is not 0): the
+     * smaller lobe had winding number -1, so IN */
+    const double eight[4][2] = {{0.2, 0.2}, {0.8, 0.8}, {0.8, 0.3}, {0.2, 0.6}};
+    CHECK_FAILS(quad_face(plane, eight, &f), PROJCURVE_ERR_INVALID_ARGUMENT,
+                "loop 0 crosses itself");
     CHECK(f == SENTINEL);
+    /* a vertex on the line of its neighbours (two consecutive segments
+     * collinear) is no crossing */
+    const double kite[4][2] = {{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.8}, {0.5, 0.5}};
+    f = NULL;
+    CHECK_OK(quad_face(plane, kite, &f));
+    projcurve_face_destroy(f);
     /* two holes apart, and one touching the outer loop: a face, classified
      * as the squares say */
     const double apart[][4] = {{0.2, 0.8, 0.2, 0.8}, {0.3, 0.45, 0.3, 0.7},
