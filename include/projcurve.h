@@ -1178,9 +1178,12 @@ typedef enum projcurve_shape_kind {
  * degrees[j] + 1 knots[j]; each runs from the end of the one before, the
  * last back to the start of the first, within 100 tol_uv. tol_uv (> 0) is the width of ON;
  * 0 takes 1e-9 of the domain's size. Arrays are copied; the surface is
- * borrowed. Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (tol_uv), BAD_DEGREE,
+ * borrowed. Statuses: OK, NULL_ARGUMENT, OUT_OF_RANGE (tol_uv negative,
+ * not finite or wider than the domain), BAD_DEGREE,
  * BAD_COUNT, BAD_KNOTS, NOT_FINITE, BAD_WEIGHT, INVALID_ARGUMENT (an open
- * loop, a hole outside the outer loop, a loop of no area), LIMIT_REACHED
+ * loop, a loop of no area, a loop crossing another or itself, a hole
+ * outside the outer loop or inside another hole, an outer loop leaving the
+ * surface's domain by more than 100 tol_uv), LIMIT_REACHED
  * (a piece that needs more than 2^20 segments), NO_MEMORY; the message
  * names the loop and piece. Thread-safe. */
 PROJCURVE_API projcurve_status projcurve_face_create(
@@ -1467,7 +1470,9 @@ PROJCURVE_API projcurve_status projcurve_iges_writer_add_curve(projcurve_context
  * narrower than a curve's domain may be, as its traced points (a degree-1
  * pcurve, no 3D curve). On failure the writer is left as it was (none of
  * the result's entities added). Statuses: OK, NULL_ARGUMENT,
- * INVALID_ARGUMENT, NO_MEMORY. */
+ * INVALID_ARGUMENT (an implicit result, or a result of another surface: a
+ * branch starting outside s's domain, or its first composed point more
+ * than 4 eps_D from S there), NO_MEMORY. */
 PROJCURVE_API projcurve_status projcurve_iges_writer_add_result(projcurve_context *ctx,
                                                                 projcurve_iges_writer *w,
                                                                 const projcurve_surface *s,
@@ -1562,8 +1567,9 @@ PROJCURVE_API projcurve_status projcurve_step_writer_add_curve(projcurve_context
  * largest distance between the two forms the fits measured (each is
  * within its measured error of the exact projection). On failure the
  * writer is left as it was (none of the result added). Statuses: OK,
- * NULL_ARGUMENT, INVALID_ARGUMENT (an implicit result, or a branch without
- * compact forms: not composed), NO_MEMORY, and those of
+ * NULL_ARGUMENT, INVALID_ARGUMENT (an implicit result, a branch without
+ * compact forms: not composed, or a result of another surface, as
+ * projcurve_iges_writer_add_result), NO_MEMORY, and those of
  * projcurve_result_branch_curve. */
 PROJCURVE_API projcurve_status projcurve_step_writer_add_result(projcurve_context *ctx,
                                                                 projcurve_step_writer *w,

@@ -7,12 +7,30 @@
 #include <stdlib.h>
 
 #include "brep/face.h"
+#include "brep/loop_overlap.h"
 #include "common/error.h"
 
 /* The default ON tolerance of a caller's face, relative to its domain, and
  * the gap its pieces may leave, relative to the ON tolerance. */
 #define PC_FACE_DEFAULT_TOL_UV 1e-9
 #define PC_FACE_CLOSE_FACTOR 100.0
+
+/* The outer loop (and so the holes inside it) must lie in the surface's
+ * domain d, up to the gap its pieces may leave: outside it S is not
+ * defined, and a face there would only ever answer OUT and clip every
+ * projection away. */
+static projcurve_status check_in_domain(projcurve_context *ctx, const projcurve_face *face,
+                                        const double d[4], double margin)
+{
+    const double *b = face->box_uv;
+    if (b[0] >= d[0] - margin && b[1] <= d[1] + margin && b[2] >= d[2] - margin &&
+        b[3] <= d[3] + margin)
+        return PROJCURVE_OK;
+    return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
+                   "face: the outer loop spans [%.9g, %.9g] x [%.9g, %.9g], outside the "
+                   "surface's domain [%.9g, %.9g] x [%.9g, %.9g] (by more than %.3g)",
+                   b[0], b[1], b[2], b[3], d[0], d[1], d[2], d[3], margin);
+}
 
 projcurve_status projcurve_face_create(projcurve_context *ctx, const projcurve_surface *surface,
                                        size_t n_loops, const size_t *loop_pieces,
@@ -35,8 +53,15 @@ projcurve_status projcurve_face_create(projcurve_context *ctx, const projcurve_s
                        tol_uv);
     double d[4];
     projcurve_surface_domain(NULL, surface, d);
+    const double span = fmax(d[1] - d[0], d[3] - d[2]);
     if (tol_uv == 0.0)
-        tol_uv = PC_FACE_DEFAULT_TOL_UV * fmax(d[1] - d[0], d[3] - d[2]);
+        tol_uv = PC_FACE_DEFAULT_TOL_UV * span;
+    /* Wider than the domain every point of it is ON, and near DBL_MAX the
+     * gap allowed between pieces (PC_FACE_CLOSE_FACTOR tol_uv) overflows:
+     * such a width answers no question about the face. */
+    if (tol_uv > span)
+        return pc_fail(ctx, PROJCURVE_ERR_OUT_OF_RANGE,
+                       "tol_uv %g is wider than the surface's domain (%g)", tol_uv, span);
     size_t total = 0;
     for (size_t l = 0; l < n_loops; ++l) {
         if (loop_pieces[l] > ((size_t)-1) / 2 - total)
@@ -61,10 +86,20 @@ projcurve_status projcurve_face_create(projcurve_context *ctx, const projcurve_s
     }
     const pc_face_params fp = {.tol_uv = tol_uv, .close_tol = PC_FACE_CLOSE_FACTOR * tol_uv,
                                .same_sense = 1, .id = -1, .kind = "bspline", .what = "face"};
-    const projcurve_status st = pc_face_build(ctx, surface, loops, n_loops, &fp, out);
+    projcurve_face *face = NULL;
+    projcurve_status st = pc_face_build(ctx, surface, loops, n_loops, &fp, &face);
     free(pieces);
     free(loops);
-    return st;
+    if (st == PROJCURVE_OK)
+        st = check_in_domain(ctx, face, d, fp.close_tol);
+    if (st == PROJCURVE_OK)
+        st = pc_face_check_loops_apart(ctx, face, "face");
+    if (st != PROJCURVE_OK) {
+        pc_face_free(face);
+        return st;
+    }
+    *out = face;
+    return PROJCURVE_OK;
 }
 
 void projcurve_face_destroy(projcurve_face *face)

@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "api/branch_pcurve.h"
+#include "api/result_surface.h"
 #include "api/shape_member.h"
 #include "common/error.h"
 #include "geom/curve.h"
@@ -357,11 +358,14 @@ static projcurve_status add_result(projcurve_context *ctx, projcurve_iges_writer
     if (projcurve_result_point_dim(r) != 3)
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "the result is not on a parametric surface (implicit projection)");
+    projcurve_status st = pc_result_check_surface(ctx, r, s);
+    if (st != PROJCURVE_OK)
+        return st;
     /* All or nothing: a failure (memory) part of the way leaves the writer
      * as it was, not with half a result in it. */
     const size_t before = w->out.count;
     size_t surface_de;
-    projcurve_status st = add_surface(ctx, w, s, &surface_de);
+    st = add_surface(ctx, w, s, &surface_de);
     const size_t n = projcurve_result_branch_count(r);
     for (size_t b = 0; st == PROJCURVE_OK && b < n; ++b)
         st = add_branch(ctx, w, s, surface_de, r, b, compact);

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "api/result_surface.h"
 #include "api/shape_member.h"
 #include "common/error.h"
 #include "geom/curve.h"
@@ -208,11 +209,14 @@ projcurve_status projcurve_step_writer_add_result(projcurve_context *ctx,
         return pc_fail(ctx, PROJCURVE_ERR_INVALID_ARGUMENT,
                        "the result is not on a parametric surface (implicit projection): it "
                        "has no pcurves to write as STEP");
+    projcurve_status st = pc_result_check_surface(ctx, r, s);
+    if (st != PROJCURVE_OK)
+        return st;
     /* All or nothing: a failure part of the way leaves the writer as it
      * was, not with half a result in it. */
     const pc_step_mark mark = pc_step_out_mark(&w->out);
     long surface;
-    projcurve_status st = pc_step_out_surface(ctx, &w->out, &s->nurbs, &surface);
+    st = pc_step_out_surface(ctx, &w->out, &s->nurbs, &surface);
     double gap = 0.0;
     for (size_t b = 0; st == PROJCURVE_OK && b < r->n_branches; ++b) {
         st = add_branch(ctx, w, s, surface, r, b);
