@@ -14,8 +14,24 @@
  * traced branch crosses it over [ta, tb] (its hits are on that branch),
  * the step may jump over it. The test is conservative (boxes), exact for
  * the boxes; it costs one BVH walk pruned by the same sweep.
+ *
+ * A box swept along an oblique Dir is much wider than the thin piece of
+ * curve it holds (a chord of a step): on a surface of many small patches
+ * the box test alone flags the patches beside the branch at many checks.
+ * So a second necessary condition is asked of the same boxes: the
+ * separation along the chord's normal across the rays. Along Dir that is
+ * n = Dir x (P(tb) - P(ta)), and n.x is constant on every ray; from the
+ * eye E, n = (P(ta) - E) x (P(tb) - E) and the value n.(x - E) / m.(x - E)
+ * (m: the direction to the chord's middle), constant on every ray from E,
+ * projective, so the hull of the cut control points (all of positive
+ * depth m.(c - E)) bounds the curve's values and the box's 8 corners (all
+ * of positive depth) bound the box's. Disjoint ranges: no ray of the piece
+ * meets the box. Where the chord has no normal (a point, or along the
+ * ray) or a depth is not positive, only the box test holds.
  */
 #include "directional/line_seeds.h"
+
+#include <math.h>
 
 #include "bezier/bvh.h"
 #include "geom/box_reach.h"
@@ -34,7 +50,95 @@ typedef struct skip_walk {
     double ends[2][6];        /* the points at ta and tb, as boxes */
     const pc_sweep_trail *trail;
     int skip;
+    /* The chord's axis: valid when has_axis; the piece's range of values
+     * (padded) in piece_range. */
+    int has_axis;
+    pc_vec3 n, m;
+    double piece_range[2];
 } skip_walk;
+
+/* The value of x on the axis: n.x along Dir, n.(x - E) / m.(x - E) from
+ * the eye (*depth_ok cleared where m.(x - E) is not positive). */
+static double axis_value(const skip_walk *w, pc_vec3 x, int *depth_ok)
+{
+    if (w->eye == NULL)
+        return vec3_dot(w->n, x);
+    const pc_vec3 r = vec3_sub(x, *w->eye);
+    const double depth = vec3_dot(w->m, r);
+    if (!(depth > 0.0)) {
+        *depth_ok = 0;
+        return 0.0;
+    }
+    return vec3_dot(w->n, r) / depth;
+}
+
+typedef struct axis_user {
+    const skip_walk *w;
+    int *depth_ok;
+} axis_user;
+
+static double piece_value(const void *user, pc_vec3 c)
+{
+    const axis_user *a = user;
+    return axis_value(a->w, c, a->depth_ok);
+}
+
+/* 0 when box b (padded) and the piece are separated on the axis. */
+static int axis_meets(const skip_walk *w, const double b[6])
+{
+    if (!w->has_axis)
+        return 1;
+    double lo = INFINITY, hi = -INFINITY, min_depth = INFINITY;
+    int depth_ok = 1;
+    for (int k = 0; k < 8; ++k) {
+        const pc_vec3 x = vec3(k & 1 ? b[3] + w->pad : b[0] - w->pad,
+                               k & 2 ? b[4] + w->pad : b[1] - w->pad,
+                               k & 4 ? b[5] + w->pad : b[2] - w->pad);
+        const double v = axis_value(w, x, &depth_ok);
+        lo = fmin(lo, v);
+        hi = fmax(hi, v);
+        if (w->eye != NULL)
+            min_depth = fmin(min_depth, vec3_dot(w->m, vec3_sub(x, *w->eye)));
+    }
+    if (!depth_ok)
+        return 1;
+    /* the pad in the axis' units: model units along Dir, over the
+     * nearest depth from the eye */
+    const double pad = w->eye == NULL ? w->pad : w->pad / min_depth;
+    return lo <= w->piece_range[1] + pad && w->piece_range[0] - pad <= hi;
+}
+
+/* Sets the chord's axis of w from the piece's ends, and the piece's range
+ * on it; has_axis 0 where there is none. */
+static void chord_axis(skip_walk *w, const pc_line_finder *f, double ta, double tb,
+                       const pc_vec3 ends[2])
+{
+    w->has_axis = 0;
+    pc_vec3 n;
+    if (w->eye == NULL) {
+        n = vec3_cross(w->dir, vec3_sub(ends[1], ends[0]));
+    } else {
+        const pc_vec3 a = vec3_sub(ends[0], *w->eye), b = vec3_sub(ends[1], *w->eye);
+        const double la = vec3_norm(a), lb = vec3_norm(b);
+        if (!(la > 0.0) || !(lb > 0.0))
+            return;
+        n = vec3_cross(a, b);
+        w->m = vec3_add(vec3_scale(a, 1.0 / la), vec3_scale(b, 1.0 / lb));
+        const double lm = vec3_norm(w->m);
+        if (!(lm > 0.0))
+            return;
+        w->m = vec3_scale(w->m, 1.0 / lm);
+    }
+    const double ln = vec3_norm(n);
+    if (!(ln > 0.0) || !isfinite(ln))
+        return;
+    w->n = vec3_scale(n, 1.0 / ln);
+    int depth_ok = 1;
+    const axis_user user = {w, &depth_ok};
+    if (pc_curve_pieces_range(&f->pieces, ta, tb, piece_value, &user, w->piece_range) &&
+        depth_ok)
+        w->has_axis = 1;
+}
 
 /* 1 when the rays from box `from` meet box b padded. */
 static int reaches(const skip_walk *w, const double from[6], const double b[6])
@@ -51,7 +155,8 @@ static int reaches(const skip_walk *w, const double from[6], const double b[6])
 static int enter_node(void *user, size_t node)
 {
     const skip_walk *w = user;
-    return reaches(w, w->piece, w->s->bvh.nodes[node].box);
+    const double *box = w->s->bvh.nodes[node].box;
+    return reaches(w, w->piece, box) && axis_meets(w, box);
 }
 
 static int visit_patch(void *user, size_t patch)
@@ -59,7 +164,7 @@ static int visit_patch(void *user, size_t patch)
     skip_walk *w = user;
     const pc_bezier_patch *bp = &w->s->grid.patches[patch];
     if (!reaches(w, w->piece, bp->box) || reaches(w, w->ends[0], bp->box) ||
-        reaches(w, w->ends[1], bp->box))
+        reaches(w, w->ends[1], bp->box) || !axis_meets(w, bp->box))
         return 0;
     const double uv[4] = {bp->u0, bp->u1, bp->v0, bp->v1};
     if (w->trail != NULL && w->trail->crosses(w->trail, uv))
@@ -89,6 +194,7 @@ int pc_rays_step_may_skip(const pc_line_finder *f, const pc_vec3 *eye, double ta
     w.trail = trail;
     point_box(ends[0], w.ends[0]);
     point_box(ends[1], w.ends[1]);
+    chord_axis(&w, f, ta, tb, ends);
     pc_bvh_query_nodes(&w.s->bvh, enter_node, visit_patch, &w);
     return w.skip;
 }

@@ -4,6 +4,7 @@
  */
 #include "geom/curve_pieces.h"
 
+#include <math.h>
 #include <string.h>
 
 static int weights_positive(const pc_nurbs_curve *c)
@@ -64,9 +65,17 @@ static pc_vec3 point_of(const double *h)
     return vec3(h[0] / h[3], h[1] / h[3], h[2] / h[3]);
 }
 
-/* Adds the points of segment k over [a, b] (within its breaks) to box; the
- * end points into *first / *last when they are not NULL. */
-static void add_segment(const pc_bezier_curves *bz, size_t k, double a, double b, double box[6],
+/* What is done with the cut control points of a segment. */
+typedef struct cut_sink {
+    double *box;                /* grown by the points, or NULL */
+    pc_piece_value_fn value;    /* its range taken, or NULL */
+    const void *user;
+    double range[2];
+} cut_sink;
+
+/* Hands the control points of segment k cut to [a, b] (within its breaks)
+ * to the sink; its end points into *first / *last when they are not NULL. */
+static void add_segment(const pc_bezier_curves *bz, size_t k, double a, double b, cut_sink *sink,
                         pc_vec3 *first, pc_vec3 *last)
 {
     const int n = bz->degree + 1;
@@ -84,8 +93,15 @@ static void add_segment(const pc_bezier_curves *bz, size_t k, double a, double b
         cut(w, n, sb > 0.0 ? sb : 0.0, 0);
     for (int i = 0; i < n; ++i) {
         const pc_vec3 p = point_of(w + 4 * i);
-        const double c[3] = {p.x, p.y, p.z};
-        box_add_point(box, c);
+        if (sink->box != NULL) {
+            const double c[3] = {p.x, p.y, p.z};
+            box_add_point(sink->box, c);
+        }
+        if (sink->value != NULL) {
+            const double v = sink->value(sink->user, p);
+            sink->range[0] = fmin(sink->range[0], v);
+            sink->range[1] = fmax(sink->range[1], v);
+        }
     }
     if (first != NULL)
         *first = point_of(w);
@@ -93,8 +109,9 @@ static void add_segment(const pc_bezier_curves *bz, size_t k, double a, double b
         *last = point_of(w + 4 * (n - 1));
 }
 
-int pc_curve_pieces_box(const pc_curve_pieces *p, double ta, double tb, double box[6],
-                        pc_vec3 ends[2])
+/* Every segment over [ta, tb] into the sink; 0 when unbounded. */
+static int cut_all(const pc_curve_pieces *p, double ta, double tb, cut_sink *sink,
+                   pc_vec3 ends[2])
 {
     const pc_bezier_curves *bz = &p->bz;
     if (bz->n_segments == 0)
@@ -103,12 +120,31 @@ int pc_curve_pieces_box(const pc_curve_pieces *p, double ta, double tb, double b
     ta = ta < t0 ? t0 : (ta > t1 ? t1 : ta);
     tb = tb < ta ? ta : (tb > t1 ? t1 : tb);
     const size_t ka = segment_of(bz, ta), kb = segment_of(bz, tb);
-    box_empty(box);
     /* at most n_segments passes */
     for (size_t k = ka; k <= kb; ++k) {
         const double a = k == ka ? ta : bz->breaks[k];
         const double b = k == kb ? tb : bz->breaks[k + 1];
-        add_segment(bz, k, a, b, box, k == ka ? &ends[0] : NULL, k == kb ? &ends[1] : NULL);
+        add_segment(bz, k, a, b, sink, ends != NULL && k == ka ? &ends[0] : NULL,
+                    ends != NULL && k == kb ? &ends[1] : NULL);
     }
+    return 1;
+}
+
+int pc_curve_pieces_box(const pc_curve_pieces *p, double ta, double tb, double box[6],
+                        pc_vec3 ends[2])
+{
+    box_empty(box);
+    cut_sink sink = {box, NULL, NULL, {0.0, 0.0}};
+    return cut_all(p, ta, tb, &sink, ends);
+}
+
+int pc_curve_pieces_range(const pc_curve_pieces *p, double ta, double tb,
+                          pc_piece_value_fn value, const void *user, double range[2])
+{
+    cut_sink sink = {NULL, value, user, {INFINITY, -INFINITY}};
+    if (!cut_all(p, ta, tb, &sink, NULL))
+        return 0;
+    range[0] = sink.range[0];
+    range[1] = sink.range[1];
     return 1;
 }

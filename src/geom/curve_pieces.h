@@ -33,4 +33,13 @@ void pc_curve_pieces_free(pc_curve_pieces *p);
 int pc_curve_pieces_box(const pc_curve_pieces *p, double ta, double tb, double box[6],
                         pc_vec3 ends[2]);
 
+/* The range [range[0], range[1]] of value(user, c) over the cut control
+ * points c of the curve over [ta, tb] (as pc_curve_pieces_box). A value
+ * that is affine, or projective and positive-depth over those points,
+ * bounds the curve over [ta, tb] by that range (their hull holds the
+ * curve). Returns 1, or 0 when the curve has no bound. */
+typedef double (*pc_piece_value_fn)(const void *user, pc_vec3 c);
+int pc_curve_pieces_range(const pc_curve_pieces *p, double ta, double tb,
+                          pc_piece_value_fn value, const void *user, double range[2]);
+
 #endif /* PC_GEOM_CURVE_PIECES_H */
