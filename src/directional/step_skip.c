@@ -53,7 +53,7 @@ typedef struct skip_walk {
     /* The chord's axis: valid when has_axis; the piece's range of values
      * (padded) in piece_range. */
     int has_axis;
-    pc_vec3 n, m;
+    pc_vec3 n, m, d;          /* d: the chord's direction across the rays */
     double piece_range[2];
 } skip_walk;
 
@@ -83,29 +83,60 @@ static double piece_value(const void *user, pc_vec3 c)
     return axis_value(a->w, c, a->depth_ok);
 }
 
-/* 0 when box b (padded) and the piece are separated on the axis. */
+/* The value of corner k of box b on the chord's direction d, as
+ * axis_value on n (d.x along Dir, d.(x - E) / m.(x - E) from the eye). */
+static double along_value(const skip_walk *w, pc_vec3 x)
+{
+    if (w->eye == NULL)
+        return vec3_dot(w->d, x);
+    const pc_vec3 r = vec3_sub(x, *w->eye);
+    return vec3_dot(w->d, r) / vec3_dot(w->m, r);
+}
+
+/* 0 when box b and the piece are separated on the axis, or touch there
+ * (within the pad) at a single point of the box's image, a corner: a
+ * curve through the corner where a sphere's four patch boxes meet at its
+ * pole would else be approached by halvings down to the floor, for hits
+ * on a vanishing stretch (the sweep's own bound already leaves out
+ * branches shorter than about 2 ds). A touch along a side (the image's
+ * corners there spread along the chord: a curve along the edge two
+ * patches share) counts as meeting. */
 static int axis_meets(const skip_walk *w, const double b[6])
 {
     if (!w->has_axis)
         return 1;
-    double lo = INFINITY, hi = -INFINITY, min_depth = INFINITY;
+    double v[8], lo = INFINITY, hi = -INFINITY, min_depth = INFINITY;
+    pc_vec3 x[8];
     int depth_ok = 1;
     for (int k = 0; k < 8; ++k) {
-        const pc_vec3 x = vec3(k & 1 ? b[3] + w->pad : b[0] - w->pad,
-                               k & 2 ? b[4] + w->pad : b[1] - w->pad,
-                               k & 4 ? b[5] + w->pad : b[2] - w->pad);
-        const double v = axis_value(w, x, &depth_ok);
-        lo = fmin(lo, v);
-        hi = fmax(hi, v);
+        x[k] = vec3(k & 1 ? b[3] : b[0], k & 2 ? b[4] : b[1], k & 4 ? b[5] : b[2]);
+        v[k] = axis_value(w, x[k], &depth_ok);
+        lo = fmin(lo, v[k]);
+        hi = fmax(hi, v[k]);
         if (w->eye != NULL)
-            min_depth = fmin(min_depth, vec3_dot(w->m, vec3_sub(x, *w->eye)));
+            min_depth = fmin(min_depth, vec3_dot(w->m, vec3_sub(x[k], *w->eye)));
     }
     if (!depth_ok)
         return 1;
     /* the pad in the axis' units: model units along Dir, over the
      * nearest depth from the eye */
     const double pad = w->eye == NULL ? w->pad : w->pad / min_depth;
-    return lo <= w->piece_range[1] + pad && w->piece_range[0] - pad <= hi;
+    const double r0 = w->piece_range[0], r1 = w->piece_range[1];
+    if (lo > r1 + pad || hi < r0 - pad)
+        return 0; /* separated */
+    const int at_lo = r1 <= lo + pad, at_hi = r0 >= hi - pad;
+    if (at_lo == at_hi)
+        return 1; /* across the box's range (or the box thinner than the pad) */
+    /* a touch at one end: the corners there, spread along the chord? */
+    const double end = at_lo ? lo : hi;
+    double e_lo = INFINITY, e_hi = -INFINITY;
+    for (int k = 0; k < 8; ++k)
+        if (fabs(v[k] - end) <= pad) {
+            const double e = along_value(w, x[k]);
+            e_lo = fmin(e_lo, e);
+            e_hi = fmax(e_hi, e);
+        }
+    return e_hi - e_lo > pad;
 }
 
 /* Sets the chord's axis of w from the piece's ends, and the piece's range
@@ -133,6 +164,9 @@ static void chord_axis(skip_walk *w, const pc_line_finder *f, double ta, double 
     if (!(ln > 0.0) || !isfinite(ln))
         return;
     w->n = vec3_scale(n, 1.0 / ln);
+    /* along Dir: Dir x n, unit; from the eye: m x n (m is the depth
+     * direction, the along-chord value is d.(x - E) / m.(x - E)) */
+    w->d = vec3_cross(w->eye == NULL ? w->dir : w->m, w->n);
     int depth_ok = 1;
     const axis_user user = {w, &depth_ok};
     if (pc_curve_pieces_range(&f->pieces, ta, tb, piece_value, &user, w->piece_range) &&
