@@ -53,6 +53,8 @@ projcurve_status pc_conical_project(projcurve_context *ctx, const projcurve_surf
     pc_cone_finder_init(&finder, &proj, eye);
     projcurve_result *r = NULL;
     st = pc_result_create(ctx, 3, &r);
+    if (st == PROJCURVE_OK && p->jump_detection)
+        st = pc_cone_finder_bound_curve(ctx, &finder);
     if (st == PROJCURVE_OK) {
         const int need_length = p->param_step == 0.0 || p->jump_detection;
         /* ray 1: the tracer's lambda takes each point's own ray from

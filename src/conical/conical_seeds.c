@@ -114,6 +114,21 @@ void pc_cone_finder_init(pc_cone_finder *f, const pc_projector *proj, pc_vec3 ey
     f->base.state = f;
 }
 
+static int cone_step_may_skip(pc_seed_finder *self, double ta, double tb,
+                              const pc_sweep_trail *trail)
+{
+    const pc_cone_finder *f = self->state;
+    return pc_rays_step_may_skip(&f->line, &f->eye, ta, tb, trail);
+}
+
+projcurve_status pc_cone_finder_bound_curve(projcurve_context *ctx, pc_cone_finder *f)
+{
+    const projcurve_status st = pc_curve_pieces_build(ctx, f->proj->curve, &f->line.pieces);
+    if (st == PROJCURVE_OK && f->line.pieces.bz.n_segments > 0)
+        f->base.step_may_skip = cone_step_may_skip;
+    return st;
+}
+
 void pc_cone_finder_free(pc_cone_finder *f)
 {
     pc_hit_list_free(&f->hits);

@@ -32,6 +32,11 @@ typedef struct pc_cone_finder {
 void pc_cone_finder_init(pc_cone_finder *f, const pc_projector *proj, pc_vec3 eye);
 void pc_cone_finder_free(pc_cone_finder *f);
 
+/* The bounds of the curve's pieces and with them the finder's
+ * step_may_skip, from the eye (as pc_line_finder_bound_curve). Statuses:
+ * OK, NO_MEMORY, OVERFLOW. */
+projcurve_status pc_cone_finder_bound_curve(projcurve_context *ctx, pc_cone_finder *f);
+
 /* The projection's arc length estimated as for the directional projection
  * ([SY13] s3.3: the curve's polyline projected along its rays onto the
  * patches' control polygons); 0 when no sample meets them. */

@@ -39,6 +39,8 @@ projcurve_status pc_directional_project(projcurve_context *ctx, const projcurve_
     pc_line_finder_init(&finder, &proj, dir);
     projcurve_result *r = NULL;
     st = pc_result_create(ctx, 3, &r);
+    if (st == PROJCURVE_OK && p->jump_detection)
+        st = pc_line_finder_bound_curve(ctx, &finder);
     if (st == PROJCURVE_OK) {
         /* the arc-length step is needed for stepping and for the jump
          * sweep; constant parameter steps without jumps do without it */

@@ -68,6 +68,7 @@ void pc_line_finder_free(pc_line_finder *f)
     PC_ARRAY_FREE(&f->l1);
     PC_ARRAY_FREE(&f->l2);
     free(f->patches);
+    pc_curve_pieces_free(&f->pieces);
     *f = (pc_line_finder){0};
 }
 

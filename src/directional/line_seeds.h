@@ -10,6 +10,7 @@
 
 #include <stddef.h>
 
+#include "geom/curve_pieces.h"
 #include "intersect/intersect.h"
 #include "trace/trace.h"
 
@@ -43,11 +44,29 @@ typedef struct pc_line_finder {
      * memory, so the caller must fail the run with NO_MEMORY. */
     int no_memory;
     int have_l1;
+    /* The curve's Bezier segments, for the control boxes of the pieces
+     * between two checks (step_skip.c); built by pc_line_finder_bound_curve. */
+    pc_curve_pieces pieces;
 } pc_line_finder;
 
 /* Sets up the finder (no allocation until used). proj must be directional. */
 void pc_line_finder_init(pc_line_finder *f, const pc_projector *proj, pc_vec3 unit_dir);
 void pc_line_finder_free(pc_line_finder *f);
+
+/* Gives the finder the bounds of the curve's pieces and with them its
+ * step_may_skip (directional; the conical finder sets its own): needed by
+ * the jump sweep only. A curve without bounds (callback, weight <= 0)
+ * leaves step_may_skip NULL. Statuses: OK, NO_MEMORY, OVERFLOW. */
+projcurve_status pc_line_finder_bound_curve(projcurve_context *ctx, pc_line_finder *f);
+
+/* step_may_skip for rays along f->dir (eye NULL) or from *eye through the
+ * curve (step_skip.c): 1 when the control box of the curve over [ta, tb],
+ * swept along the rays (geom/box_reach.h), meets the box of a patch (the
+ * surface's BVH) that neither the ray at ta nor the one at tb meets and
+ * that no polyline of the trail crosses over [ta, tb] in (u, v). 0 when
+ * the curve has no bounds. */
+int pc_rays_step_may_skip(const pc_line_finder *f, const pc_vec3 *eye, double ta, double tb,
+                          const pc_sweep_trail *trail);
 
 /* The jump criteria of [SY13] s3.4 (jump_detect.c), the finder's
  * may_jump and reset. */

@@ -118,6 +118,10 @@ void pc_ortho_finder_init(pc_seed_finder *finder, pc_ortho_finder_state *state,
     finder->find = ortho_find;
     finder->may_jump = ortho_may_jump;
     finder->reset = ortho_reset;
+    /* a foot point needs no ray: no box of the patches bounds where the
+     * foot points of a curve piece lie without the patches' normal cones
+     * (docs/tracing.md, "Small patches between two checks") */
+    finder->step_may_skip = NULL;
     finder->state = state;
     ortho_reset(finder);
 }

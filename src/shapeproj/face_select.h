@@ -22,32 +22,13 @@
  * whenever it holds for a box inside it. An eye inside the curve's box
  * makes every face a candidate (the cone is all of space).
  * Orthogonal: every face (a foot point may lie on any face).
+ * The box tests themselves are geom/box_reach.h.
  */
 #ifndef PC_SHAPEPROJ_FACE_SELECT_H
 #define PC_SHAPEPROJ_FACE_SELECT_H
 
 #include "faceproj/surface_projection.h"
-
-/* 1 when the face box (6 doubles) may hold a projection of the curve box. */
-int pc_swept_box_meets(const double curve_box[6], pc_vec3 dir, const double face_box[6]);
-
-/* The same as a pc_box_test of the BVH, user a pc_swept_box. */
-typedef struct pc_swept_box {
-    double curve_box[6];
-    pc_vec3 dir;
-} pc_swept_box;
-int pc_swept_box_test(const void *user, const double box[6]);
-
-/* 1 when the face box may hold a conical projection from eye of the curve
- * box (the cone test above). */
-int pc_cone_box_meets(const double curve_box[6], pc_vec3 eye, const double face_box[6]);
-
-/* A pc_box_test of the BVH for the cone, user a pc_cone_box. */
-typedef struct pc_cone_box {
-    double curve_box[6];
-    pc_vec3 eye;
-} pc_cone_box;
-int pc_cone_box_test(const void *user, const double box[6]);
+#include "geom/box_reach.h"
 
 /* The curve's box from its control points: 1, or 0 for a callback curve. */
 int pc_curve_box(const projcurve_curve *curve, double box[6]);

@@ -112,6 +112,7 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
      * land there beside a fold let the corrector reach the other sheet
      * (linkrods.step surface 9, curve 100: a stretch missed). */
     pc_curve_breaks_init(&tr->breaks, c, PC_BREAK_ORDER_CORNER);
+    tr->narrow_capped_at = NAN;
 }
 
 static projcurve_branch_start start_reason(projcurve_branch_end backward_end)
@@ -185,21 +186,6 @@ static projcurve_status start_branch(pc_tracer *tr, const pc_seed *seed, seed_ki
     return st;
 }
 
-/* Index j of the segment [t_j, t_j+1] of b holding t (b has >= 2 points,
- * t within its range). */
-static size_t segment_at(const pc_branch *b, double t)
-{
-    size_t lo = 0, hi = b->n_points - 1;
-    while (hi - lo > 1) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (b->points[3 * mid] <= t)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 static int branch_covers(const pc_branch *b, double t)
 {
     return b->n_points >= 2 && b->points[0] <= t && t <= b->points[3 * (b->n_points - 1)];
@@ -214,7 +200,7 @@ static projcurve_status active_points(pc_tracer *tr, double t, pc_seed_list *out
         const pc_branch *b = &tr->r->branches[i];
         if (!branch_covers(b, t))
             continue;
-        const double *p = b->points + 3 * segment_at(b, t);
+        const double *p = b->points + 3 * pc_branch_segment_at(b, t);
         const double w = p[3] > p[0] ? (t - p[0]) / (p[3] - p[0]) : 0.0;
         projcurve_status st = pc_seed_list_push(tr->ctx, out, t, p[1] + w * (p[4] - p[1]),
                                                 p[2] + w * (p[5] - p[2]));
@@ -237,7 +223,7 @@ static void polish_active_points(pc_tracer *tr, double t, pc_seed_list *active)
         const pc_branch *b = &tr->r->branches[i];
         if (!branch_covers(b, t))
             continue;
-        const double *p = b->points + 3 * segment_at(b, t);
+        const double *p = b->points + 3 * pc_branch_segment_at(b, t);
         const double reach = sqrt((p[4] - p[1]) * (p[4] - p[1]) + (p[5] - p[2]) * (p[5] - p[2]));
         pc_seed *a = &active->items[k++];
         double uv[2] = {a->u, a->v};
@@ -261,7 +247,7 @@ static double sweep_step(const pc_tracer *tr, double t)
         const pc_branch *b = &tr->r->branches[i];
         if (!branch_covers(b, t))
             continue;
-        const double *p = b->points + 3 * segment_at(b, t);
+        const double *p = b->points + 3 * pc_branch_segment_at(b, t);
         if (!(p[3] > p[0]))
             continue;
         pc_vec3 a, c;
@@ -344,9 +330,10 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder, pc_stage_cl
     if (finder->reset)
         finder->reset(finder);
     /* every check advances t by at least span / PC_SWEEP_MAX_CHECKS (up to
-     * rounding of t), so this bound is reached only through rounding; the
-     * sweep then ends where it got to */
-    const size_t max_checks = 2 * (size_t)PC_SWEEP_MAX_CHECKS + 2;
+     * rounding of t), but the PC_SWEEP_MAX_NARROWED narrowed ones, so this
+     * bound is reached only through rounding; the sweep then ends where it
+     * got to */
+    const size_t max_checks = 2 * (size_t)PC_SWEEP_MAX_CHECKS + 2 + PC_SWEEP_MAX_NARROWED;
     double t = tr->t_begin;
     for (size_t check = 0; check < max_checks && t < tr->t_end && !tr->limit_hit; ++check) {
         /* a check (criteria, and maybe a full seed search) is a unit of
@@ -355,17 +342,22 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder, pc_stage_cl
             (1.0 - PC_SWEEP_SHARE_START) * (t - tr->t_begin) / (tr->t_end - tr->t_begin);
         if (pc_tracer_budget_spent(tr, t))
             break;
+        /* the step of the criteria (and of the resume window), then
+         * narrowed where it may jump over a small patch */
         const double dt = sweep_step(tr, t);
-        const double t_prev = t;
-        t = t + dt >= tr->t_end ? tr->t_end : t + dt;
+        int narrowed = 0;
+        const double step = pc_sweep_narrow(tr, finder, t, dt, &narrowed);
+        t = t + step >= tr->t_end ? tr->t_end : t + step;
         st = active_points(tr, t, &active);
         if (st != PROJCURVE_OK)
             break;
         /* the criteria run at every check (they keep the previous ray);
          * every PC_SWEEP_FULL_EVERY-th check searches regardless, unless
-         * the criteria alone are asked for */
+         * the criteria alone are asked for; a narrowed check always (it
+         * lands where a ray meets the small patch's box) */
         const int asked =
-            !finder->may_jump || finder->may_jump(finder, t, active.items, active.count, tr->ds);
+            (!finder->may_jump || finder->may_jump(finder, t, active.items, active.count, tr->ds)) ||
+            narrowed;
         const int periodic = !tr->criteria_only &&
                              check % PC_SWEEP_FULL_EVERY == PC_SWEEP_FULL_EVERY - 1;
         if (!asked && !periodic)
@@ -387,7 +379,7 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder, pc_stage_cl
         for (size_t k = 0; k < found.count && st == PROJCURVE_OK && !tr->limit_hit; ++k)
             if (!matched[k])
                 st = start_branch(tr, &found.items[k],
-                                  continues_branch(tr, &found.items[k], t - t_prev) ? SEED_RESUMED
+                                  continues_branch(tr, &found.items[k], dt) ? SEED_RESUMED
                                                                                    : SEED_BORN);
         if (clock != NULL)
             *births += pc_stage_clock_now(clock) - born_at;
@@ -502,5 +494,10 @@ projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *p
     else if (st == PROJCURVE_OK && tr.limit_hit)
         st = pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
                      "the limit of %zu traced points was reached", tr.max_points);
+    else if (st == PROJCURVE_OK && !isnan(tr.narrow_capped_at))
+        st = pc_fail(ctx, PROJCURVE_ERR_LIMIT_REACHED,
+                     "the jump sweep narrowed its step over small patches at %d checks, its "
+                     "cap, by t = %.17g; beyond it a patch smaller than a step may be missed",
+                     PC_SWEEP_MAX_NARROWED, tr.narrow_capped_at);
     return st;
 }

@@ -58,14 +58,35 @@ void pc_seed_list_free(pc_seed_list *list);
  *   calls it with increasing t and calls reset before a new sweep.
  *
  * reset (may be NULL): forgets the state of may_jump.
+ *
+ * step_may_skip (may be NULL: the sweep's steps are never narrowed): 1
+ *   when the rays of the curve over [ta, tb] (ta the last check, tb the
+ *   next one) may meet a patch that neither end's ray meets and that no
+ *   traced branch crosses over [ta, tb] (trail): a patch the step would
+ *   jump over. The sweep then halves the step (docs/tracing.md, "Small
+ *   patches between two checks"). It must be cheap (box tests), keep no
+ *   state, and answer 0 where it cannot bound the curve.
  */
 typedef struct pc_seed_finder pc_seed_finder;
+
+/* The traced branches over a stretch [ta, tb] of t, as the sweep shows
+ * them to step_may_skip: crosses says whether some branch's polyline over
+ * [ta, tb] passes through the (u, v) rectangle uv = {u0, u1, v0, v1}. */
+typedef struct pc_sweep_trail pc_sweep_trail;
+struct pc_sweep_trail {
+    int (*crosses)(const pc_sweep_trail *self, const double uv[4]);
+    const void *data;
+    double ta, tb;
+};
+
 struct pc_seed_finder {
     projcurve_status (*find)(pc_seed_finder *self, projcurve_context *ctx, double t,
                              pc_seed_list *out);
     int (*may_jump)(pc_seed_finder *self, double t, const pc_seed *active, size_t n_active,
                     double ds);
     void (*reset)(pc_seed_finder *self);
+    int (*step_may_skip)(pc_seed_finder *self, double ta, double tb,
+                         const pc_sweep_trail *trail);
     void *state;
 };
 
@@ -97,7 +118,10 @@ typedef struct pc_trace_config {
  * opts->budget (may be NULL) is polled once per step and per sweep check.
  * Statuses: OK; LIMIT_REACHED (max_points, or the budget's time or work
  * limit: the branches traced so far are kept, the one cut ends with
- * PROJCURVE_END_LIMIT); CANCELLED (the budget's progress callback, the
+ * PROJCURVE_END_LIMIT; or the sweep narrowed its step at
+ * PC_SWEEP_MAX_NARROWED checks and swept the rest without narrowing: all
+ * branches kept, a patch smaller than a step beyond may be missed);
+ * CANCELLED (the budget's progress callback, the
  * same partial result); NO_MEMORY; CALLBACK. */
 projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *proj,
                                    const pc_params *opts,

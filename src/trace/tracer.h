@@ -64,7 +64,43 @@ typedef struct pc_tracer {
     /* The curve's breaks (curve_breaks.h): every step lands exactly on the
      * next one, and the branch goes on with the derivatives of its side. */
     pc_curve_breaks breaks;
+    /* Checks of the sweep whose step was narrowed (sweep_narrow.c), and
+     * the t where their cap stopped the narrowing (NAN: it did not). */
+    size_t n_narrowed;
+    double narrow_capped_at;
 } pc_tracer;
+
+/* Most checks of one sweep whose step may be narrowed over a small patch
+ * (sweep_narrow.c): the sweep's own bound of 4096 checks again, four
+ * times. Beyond it the sweep goes on without narrowing and the call ends
+ * with LIMIT_REACHED (trace.h). */
+#define PC_SWEEP_MAX_NARROWED (4 * 4096)
+/* A narrowed step is at least 2^-this of the curve's domain. */
+#define PC_SWEEP_NARROW_FLOOR_LOG2 24
+
+/* Index j of the segment [t_j, t_j+1] of b holding t (b has >= 2 points,
+ * t within its range). */
+static inline size_t pc_branch_segment_at(const pc_branch *b, double t)
+{
+    size_t lo = 0, hi = b->n_points - 1;
+    while (hi - lo > 1) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (b->points[3 * mid] <= t)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* The sweep's step dt from the check at t, halved while the finder's
+ * step_may_skip says the rays over [t, t + dt] may jump over a patch, down
+ * to 2^-PC_SWEEP_NARROW_FLOOR_LOG2 of the domain (at most that many
+ * halvings past the floor of the unnarrowed step). *narrowed is set to 1
+ * when it was halved. Counts the narrowed checks against
+ * PC_SWEEP_MAX_NARROWED; past it returns dt unchanged. */
+double pc_sweep_narrow(pc_tracer *tr, pc_seed_finder *finder, double t, double dt,
+                       int *narrowed);
 
 /* Polls the call's budget in full at curve parameter t (after
  * pc_budget_tick said it is due); 1 (and limit_hit set) when the budget
