@@ -52,8 +52,9 @@ static void keep_constants(const pc_fit_resampled_input *in, size_t count, doubl
     }
 }
 
-/* 1 when the spline of `space` is within tol of every sample and of the
- * exact curve half way between neighbouring samples. */
+/* 1 when the spline of `space` is within tol of every sample and then of
+ * the exact curve half way between neighbouring samples (the samples
+ * first: a fit that fails costs no exact evaluation). */
 static int within(const pc_fit_resampled_input *in, const pc_lsq_space *space,
                   const double *poles, const double *t)
 {
@@ -63,8 +64,9 @@ static int within(const pc_fit_resampled_input *in, const pc_lsq_space *space,
         pc_lsq_eval(space, in->dim, poles, t[i], &hint, q);
         if (!(dist(in->dim, q, in->samples + (size_t)in->dim * i) <= in->tol))
             return 0;
-        if (i == in->n)
-            break;
+    }
+    hint = 0;
+    for (size_t i = 0; i < in->n; ++i) {
         const double mid = 0.5 * (t[i] + t[i + 1]);
         pc_lsq_eval(space, in->dim, poles, mid, &hint, q);
         in->exact(in->user, mid, x);

@@ -3,12 +3,17 @@
  * The pcurve of a STEP edge that has none on its face: the 3D curve
  * projected onto the face's surface point by point with the library's
  * closest-point projection ([Ook]), a degree-1 polyline whose error in 3D
- * is measured at every chord's middle.
+ * is measured at every chord's middle, then refitted as a cubic within a
+ * quarter of the face's (u, v) tolerance of the samples and of the
+ * projection half way between them (fit/resampled.h) when one is.
  */
 #include <math.h>
 #include <string.h>
 
+#include "brep/face.h"
 #include "common/error.h"
+#include "fit/resampled.h"
+#include "geom/curve.h"
 #include "io/step_topology.h"
 
 /* Samples to start with and the most; the chord midpoints must be within
@@ -87,6 +92,63 @@ static double project_samples(const projcurve_surface *s, const projcurve_curve 
     return err;
 }
 
+/* The edge projected at t: the exact curve the polyline is refitted to. */
+typedef struct projected_edge {
+    const projcurve_surface *s;
+    const projcurve_curve *c;
+} projected_edge;
+
+static void projected_at(const void *user, double t, double *uv)
+{
+    const projected_edge *e = user;
+    double p[3];
+    projcurve_curve_eval(NULL, e->c, t, 0, p);
+    if (projcurve_surface_closest_point(NULL, e->s, p, uv, NULL, NULL) != PROJCURVE_OK)
+        uv[0] = uv[1] = NAN; /* fails the fit's check: the polyline stays */
+}
+
+/* The breaks of the projection: the 3D curve's distinct knots inside
+ * (t0, t1), where its parametrisation (a rational circle's arcs) has a
+ * second derivative that jumps; PC_FIT_RESAMPLED_MAX_BREAKS + 1 when there
+ * are more (no fit then). */
+static size_t knot_breaks(const projcurve_curve *c, double t0, double t1, double *breaks)
+{
+    const pc_nurbs_curve *nc = &c->nurbs;
+    size_t nb = 0;
+    for (size_t i = (size_t)nc->degree + 1; i < nc->n_ctrl; ++i) {
+        const double k = nc->knots[i];
+        if (!(k > t0 && k < t1) || (nb > 0 && k <= breaks[nb - 1]))
+            continue;
+        if (nb == PC_FIT_RESAMPLED_MAX_BREAKS)
+            return nb + 1;
+        breaks[nb++] = k;
+    }
+    return nb;
+}
+
+/* The polyline uv (n + 1 samples over [t0, t1]) as a cubic in *out when one
+ * is within a quarter of the face's (u, v) tolerance. */
+static projcurve_status compact(const stopo *t, const projcurve_surface *s,
+                                const projcurve_curve *c, double t0, double t1, const double *uv,
+                                size_t n, pc_piece_input *out)
+{
+    double *poles = pc_arena_calloc(t->arena, 2 * PC_FIT_RESAMPLED_POLES, sizeof *poles);
+    double *knots = pc_arena_calloc(t->arena, PC_FIT_RESAMPLED_POLES + 4, sizeof *knots);
+    if (poles == NULL || knots == NULL)
+        return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    const projected_edge e = {s, c};
+    const double tol = 0.25 * pc_face_uv_tolerance(s, pc_step_precision(t, s));
+    double breaks[PC_FIT_RESAMPLED_MAX_BREAKS];
+    const pc_fit_resampled_input in = {.dim = 2, .samples = uv, .n = n, .t0 = t0, .t1 = t1,
+                                       .breaks = breaks, .n_breaks = knot_breaks(c, t0, t1, breaks),
+                                       .exact = projected_at, .user = &e, .tol = tol};
+    size_t n_poles = 0;
+    const projcurve_status st = pc_fit_resampled_cubic(t->f->ctx, &in, poles, knots, &n_poles);
+    if (st == PROJCURVE_OK && n_poles > 0 && n_poles < n + 1)
+        *out = (pc_piece_input){.degree = 3, .n_ctrl = n_poles, .ctrl = poles, .knots = knots};
+    return st;
+}
+
 /* The pcurve of an edge that has none: its 3D curve projected onto the
  * surface at n + 1 samples, n doubling from PC_STEP_PROJECT_SAMPLES until
  * the chords are within the precision or n reaches
@@ -119,15 +181,23 @@ projcurve_status pc_step_edge_projection(const stopo *t, const pc_step_located *
         if (err <= prec || n >= PC_STEP_PROJECT_MAX_SAMPLES || err > 0.5 * before)
             break;
     }
-    projcurve_curve_destroy(c);
     double *knots = uv ? pc_arena_calloc(t->arena, n + 3, sizeof *knots) : NULL;
-    if (knots == NULL)
+    if (knots == NULL) {
+        projcurve_curve_destroy(c);
         return pc_fail(t->f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading STEP");
+    }
     knots[0] = t0;
     for (size_t i = 0; i <= n; ++i)
         knots[i + 1] = t0 + (t1 - t0) * (double)i / (double)n;
     knots[n + 2] = t1;
     *out = (pc_piece_input){.degree = 1, .n_ctrl = n + 1, .ctrl = uv, .knots = knots};
+    /* a cubic may meet the precision where 4097 chords cannot (a small
+     * circle): it is checked against the projection itself */
+    st = off <= PC_STEP_PCURVE_CHECK_FACTOR * prec ? compact(t, s, c, t0, t1, uv, n, out)
+                                                   : PROJCURVE_OK;
+    projcurve_curve_destroy(c);
+    if (st != PROJCURVE_OK || out->degree == 3)
+        return st;
     if (err > prec || off > PC_STEP_PCURVE_CHECK_FACTOR * prec)
         return pc_model_add_skipped(t->f->ctx, t->model,
                                     "STEP #%ld: the edge projected onto its face at %zu samples "
