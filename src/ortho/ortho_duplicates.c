@@ -110,7 +110,7 @@ static size_t vertices_between(const pc_branch *b, double a, double c)
  * one or more, went
  * across a pair of folds onto that branch within one step (the fold test
  * sees det change sign twice: not at all) and followed it: it is cut at
- * its last vertex of its own and ends (starts) FAILED there, since the
+ * the first vertex of the run and ends (starts) FAILED there, since the
  * part of it up to the fold was not followed (a search beside the folds,
  * trace/branches.c, may have found that part as a branch of its own). On
  * linkrods.step surface 1, curve 74, a branch of minima 0.02 long in t
@@ -135,22 +135,19 @@ static void cut_retraced_runs(const pc_projector *proj, projcurve_result *r)
                 const double *from = at_start ? into + 3 : into - 3;
                 if (vertices_between(b, from[0], into[0]) < DUP_MIN_RUN)
                     continue;
-                /* one vertex of its own left carries no curve: the
-                 * branch goes (removed below, as empty) */
-                const size_t keep = a->n_points - run < 2 ? 0 : a->n_points - run;
-                if (keep == 0) {
-                    r->stats.points -= (double)a->n_points;
-                    a->n_points = 0;
-                    continue;
-                }
+                /* the step into the run stays: the refinement verifies
+                 * it, and cuts it where it is a jump (on a faceted surface
+                 * it may be a step onto the crease the other branch
+                 * follows: test_pipe_out_true surface 0, curve 2) */
+                const size_t keep = a->n_points - run + 1;
                 if (at_start) {
-                    memmove(a->points, a->points + 3 * run, 3 * keep * sizeof *a->points);
+                    memmove(a->points, a->points + 3 * (run - 1), 3 * keep * sizeof *a->points);
                     a->start = PROJCURVE_START_FAILED;
                 } else {
                     a->end = PROJCURVE_END_FAILED;
                 }
+                r->stats.points -= (double)(run - 1);
                 a->n_points = keep;
-                r->stats.points -= (double)run;
             }
 }
 
