@@ -40,6 +40,17 @@
 /* With jump detection, the share of the tracing stage's progress that the
  * branches seeded at the start of the curve take; the sweep has the rest. */
 #define PC_SWEEP_SHARE_START 0.5
+/* The full search beside a branch end at a fold (search_beside_folds)
+ * lies this fraction of the curve's domain inside the branch (at most half
+ * of it): closer to the fold than the partner fold of a pair is (1e-3 of
+ * the domain on linkrods.step surface 1), far enough that a branch ending
+ * at the same fold covers that t. */
+#define PC_FOLD_SEARCH_INSIDE 1e-4
+/* A point found there within this fraction of ds on S of a branch alive
+ * at its t is that branch's (search_beside_fold). */
+#define PC_FOLD_SAME 1e-2
+/* Most such searches per call (each 0.05 to 10 ms). */
+#define PC_FOLD_SEARCHES 32
 /* Floor of the length estimate the arc-length step is a fraction of,
  * relative to the model size: the step is then at least 1/64 of 1e-3 of
  * the model at the default ARC_STEP_FRACTION, a tenth of the default eps_D. */
@@ -104,6 +115,7 @@ static void tracer_setup(pc_tracer *tr, projcurve_context *ctx, const pc_project
     tr->budget = opts->budget;
     tr->progress_hi = 1.0;
     tr->ray = cfg->ray;
+    tr->jump_checks = !cfg->ray;
     tr->dir = cfg->dir;
     tr->lambda_tol = proj->newton_tol;
     tr->behind_tol = opts->tol_distance;
@@ -392,6 +404,111 @@ static projcurve_status sweep(pc_tracer *tr, pc_seed_finder *finder, pc_stage_cl
     return st;
 }
 
+/* 1 when the found point p lies within `radius` on S of a point of the
+ * list (a branch alive at its t). */
+static int near_any(const pc_tracer *tr, const pc_seed *p, const pc_seed_list *points,
+                    double radius)
+{
+    const pc_nurbs_surface *s = &tr->proj->surface->nurbs;
+    pc_vec3 a;
+    pc_nurbs_surface_eval(s, p->u, p->v, 0, NULL, NULL, &a);
+    for (size_t i = 0; i < points->count; ++i) {
+        pc_vec3 b;
+        pc_nurbs_surface_eval(s, points->items[i].u, points->items[i].v, 0, NULL, NULL, &b);
+        if (vec3_dist(a, b) <= radius)
+            return 1;
+    }
+    return 0;
+}
+
+/* The full search beside the fold end (start if `at_start`) of branch bi,
+ * a little inside it: each foot point found there that no branch alive at
+ * that t takes (the nearest within ds, as in the sweep) and that lies
+ * farther than PC_FOLD_SAME ds from all of them starts a branch. (Beside
+ * a degenerate centre of curvature, a whole circle of foot points at one
+ * t on a torus, the search returns clusters of points 1e-7 apart: one
+ * branch takes one of them, the rest are the same foot point.) */
+static projcurve_status search_beside_fold(pc_tracer *tr, pc_seed_finder *finder, size_t bi,
+                                           int at_start, pc_seed_list *active,
+                                           pc_seed_list *found, unsigned char **matched,
+                                           size_t *cap_matched)
+{
+    const pc_branch *b = &tr->r->branches[bi];
+    const double t0 = b->points[0], t1 = b->points[3 * (b->n_points - 1)];
+    const double inside =
+        fmin(0.5 * (t1 - t0), PC_FOLD_SEARCH_INSIDE * (tr->t_end - tr->t_begin));
+    const double t = at_start ? t0 + inside : t1 - inside;
+    if (!(inside > 0.0))
+        return PROJCURVE_OK;
+    projcurve_status st = active_points(tr, t, active);
+    if (st == PROJCURVE_OK)
+        st = finder->find(finder, tr->ctx, t, found);
+    if (st != PROJCURVE_OK)
+        return st;
+    drop_coincident(tr, found);
+    polish_active_points(tr, t, active);
+    void *items = *matched;
+    st = pc_array_reserve(tr->ctx, &items, cap_matched, 0, found->count, 1, 16, NULL,
+                          "the seed matches");
+    *matched = items;
+    if (st != PROJCURVE_OK)
+        return st;
+    pc_match_seeds(tr->proj->surface, active->items, active->count, found->items, found->count,
+                   tr->ds, *matched);
+    const double same = PC_FOLD_SAME * tr->ds;
+    for (size_t k = 0; k < found->count && st == PROJCURVE_OK && !tr->limit_hit; ++k) {
+        if ((*matched)[k] || near_any(tr, &found->items[k], active, same))
+            continue;
+        st = start_branch(tr, &found->items[k], SEED_BORN);
+        /* the branch just traced is alive at t too */
+        if (st == PROJCURVE_OK)
+            st = active_points(tr, t, active);
+        if (st == PROJCURVE_OK)
+            polish_active_points(tr, t, active);
+    }
+    return st;
+}
+
+/* Foot-point projections: a full search beside every end of a branch at a
+ * centre of curvature (a fold of the projection, where two foot points
+ * meet). The sweep searches for foot points only every 1/16 or 1/32 of
+ * the curve's domain (ortho_seeds.h), and where P(t) passes close to the
+ * focal surface, folds come in pairs 1e-3 apart in t: the minimum a
+ * branch ends at such a fold hands over to was born at its partner just
+ * before, beside it, so both are alive a little inside the fold's side of
+ * the branch; likewise the branch a birth at a fold continues from. Both
+ * can be born and gone between two searches of the sweep (linkrods.step
+ * surface 1, curve 74: two branches of minima, 0.065 and 0.02 long in t,
+ * between the sweep's searches 0.17 apart). A branch started here is
+ * searched beside in turn, up to PC_FOLD_SEARCHES searches. Ray
+ * projections need none of this: their sweep searches every ds. */
+static projcurve_status search_beside_folds(pc_tracer *tr, pc_seed_finder *finder)
+{
+    pc_seed_list active = {0}, found = {0};
+    unsigned char *matched = NULL;
+    size_t cap_matched = 0, searches = 0;
+    projcurve_status st = PROJCURVE_OK;
+    if (finder->reset)
+        finder->reset(finder);
+    for (size_t i = 0; i < tr->r->n_branches && st == PROJCURVE_OK && !tr->limit_hit; ++i)
+        for (int at_start = 1; at_start >= 0 && st == PROJCURVE_OK; --at_start) {
+            const pc_branch *b = &tr->r->branches[i];
+            const int at_fold = at_start ? b->start == PROJCURVE_START_SILHOUETTE
+                                         : b->end == PROJCURVE_END_SILHOUETTE;
+            if (!at_fold || b->n_points < 2 || searches >= PC_FOLD_SEARCHES)
+                continue;
+            if (pc_tracer_budget_spent(tr, b->points[at_start ? 0 : 3 * (b->n_points - 1)]))
+                break;
+            ++searches;
+            st = search_beside_fold(tr, finder, i, at_start, &active, &found, &matched,
+                                    &cap_matched);
+        }
+    free(matched);
+    pc_seed_list_free(&active);
+    pc_seed_list_free(&found);
+    return st;
+}
+
 /* Branches of a single vertex (a seed on a fold, a grazing hit) carry no
  * curve: they are dropped. */
 static void drop_single_points(projcurve_result *r)
@@ -484,6 +601,10 @@ projcurve_status pc_trace_branches(projcurve_context *ctx, const pc_projector *p
             clock->seconds[PC_STAGE_TRACING] += births;
             clock->seconds[PC_STAGE_JUMPS] -= births;
         }
+        since = pc_stage_clock_lap(clock, PC_STAGE_JUMPS, since);
+    }
+    if (st == PROJCURVE_OK && opts->jump_detection && !tr.ray && !tr.limit_hit) {
+        st = search_beside_folds(&tr, finder);
         since = pc_stage_clock_lap(clock, PC_STAGE_JUMPS, since);
     }
     drop_single_points(r);

@@ -152,6 +152,30 @@ static int jumped_on_surface(const pc_tracer *tr, const pc_proj_point *cur,
     return vec3_dist(next->s, cur->s) > PC_TRACE_MAX_MOVE * fmax(h * speed, tr->ds) + noise;
 }
 
+/* 1 when next lies farther on S from cur than the step can move along one
+ * smooth branch: the chord is at most the arc length, the integral of the
+ * speed |Q'|, so a chord longer than PC_TRACE_CHORD_SPEED times h
+ * max(|Q'| at either end) means the speed peaked between the two points.
+ * That happens next to a pair of folds the step passed over (a fold and
+ * its partner 1e-3 apart in t, where the branch turns back and forth), so
+ * the corrected point may lie on another branch of the same kind (the
+ * fold test sees the sign of det twice changed, i.e. not at all): on
+ * linkrods.step surface 1, curve 74, a step of 0.06 in t went from one
+ * branch of foot points to another across two such pairs, and the
+ * refinement could not verify the segment between. Cutting the step
+ * resolves a mere bump of the speed after a few halvings (the bound
+ * holds as h shrinks). */
+static int chord_beyond_speed(const pc_tracer *tr, const pc_proj_point *cur,
+                              const pc_proj_point *next)
+{
+    const double speed = fmax(cur->speed, next->speed);
+    if (!(speed > 0.0) || !isfinite(speed))
+        return 0;
+    const double noise = fmax(PC_TRACE_BOUNDARY_TOL * tr->proj->model_size, tr->proj->newton_tol);
+    return vec3_dist(next->s, cur->s) >
+           PC_TRACE_CHORD_SPEED * fabs(next->t - cur->t) * speed + noise;
+}
+
 /* Predicts and corrects one step from cur to the curve parameter t. On
  * ACCEPT and EXIT, *next holds the new point (with its derivatives). */
 static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
@@ -191,7 +215,8 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
         if (!left && !near_boundary(tr->dom, pred, sqrt(stride2)))
             return STEP_REJECT;
         const int found = pc_locate_exit(tr, cur, h, next);
-        if (found >= 0 && jumped_on_surface(tr, cur, next))
+        if (found >= 0 && (jumped_on_surface(tr, cur, next) ||
+                           (tr->jump_checks && chord_beyond_speed(tr, cur, next))))
             return STEP_REJECT;
         return found == 1 ? STEP_EXIT : (found == 0 ? STEP_ACCEPT : STEP_REJECT);
     }
@@ -210,7 +235,8 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     }
     if (derived == 0)
         derived = proj->derivatives(proj, t, uv[0], uv[1], next) ? 1 : -1;
-    if (derived < 0 || crosses_fold(cur, next) || jumped_on_surface(tr, cur, next))
+    if (derived < 0 || crosses_fold(cur, next) || jumped_on_surface(tr, cur, next) ||
+        (tr->jump_checks && chord_beyond_speed(tr, cur, next)))
         return STEP_REJECT;
     record_error(tr, residual_error);
     return STEP_ACCEPT;

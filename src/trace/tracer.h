@@ -22,6 +22,10 @@
  * without bound near a fold, and so does the correction the test above
  * allows). */
 #define PC_TRACE_MAX_MOVE 4.0
+/* A step whose chord on S is longer than this multiple of h max(|Q'|) at
+ * its two ends passed a peak of the speed (a pair of folds, or another
+ * branch reached across them): it is cut (tracer.c, chord_beyond_speed). */
+#define PC_TRACE_CHORD_SPEED 1.0
 /* Boundary exits are located until (u, v) is within this fraction of the
  * domain's width from the boundary, then snapped onto it. */
 #define PC_TRACE_BOUNDARY_TOL 1e-12
@@ -68,6 +72,13 @@ typedef struct pc_tracer {
      * the t where their cap stopped the narrowing (NAN: it did not). */
     size_t n_narrowed;
     double narrow_capped_at;
+    /* A step's chord on S must stay within the move its end speeds allow
+     * (chord_beyond_speed, PC_TRACE_CHORD_SPEED): for projections whose
+     * sweep searches seldom (foot points), where a branch a step passed
+     * over is not found again. Off for ray projections, whose sweep
+     * searches every ds (and whose constant-parameter steps keep the
+     * point counts of [SY13] Table 1). */
+    int jump_checks;
 } pc_tracer;
 
 /* Most checks of one sweep whose step may be narrowed over a small patch

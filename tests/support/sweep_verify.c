@@ -52,6 +52,12 @@
  * again (this bounds the verifier's time on results whose samples are
  * wrong by the hundred: ~7 s on the slowest linkrods.step case). */
 #define MAX_DESCENTS 8000
+/* The brute-force search of the nearest foot for a sample the scans do
+ * not clear (dense_nearest_foot): t values over the piece's widened range,
+ * local minima refined, and runs per result (each ~2e4 evaluations). */
+#define DENSE_T 2048
+#define DENSE_MINIMA 4
+#define MAX_DENSE_SCANS 32
 /* Units in the last place of u, v a converged Newton iterate may be off
  * (the rounding of the step and of the evaluation). */
 #define ULP_SLACK 4.0
@@ -108,6 +114,7 @@ typedef struct verifier {
     size_t n_pieces;
     size_t scans; /* global t* and nearest_exact searches so far (MAX_SCANS) */
     size_t descents; /* foot_descent runs so far (MAX_DESCENTS) */
+    size_t dense_scans; /* dense_nearest_foot runs so far (MAX_DENSE_SCANS) */
 } verifier;
 
 static void curve_point(const verifier *vf, double t, double out[3])
@@ -418,6 +425,67 @@ static double nearest_exact(verifier *vf, const double x[3], const double uv[2],
     return best;
 }
 
+/* The distance from x to the foot of P(t) in the basin of uv: the descent
+ * from uv (foot_descent, which cannot leave that basin across a fold as
+ * Newton can), HUGE_VAL where it finds no critical point. */
+static double basin_distance(const verifier *vf, const double x[3], const double uv[2],
+                             double t)
+{
+    double p[3], foot[3], fuv[2] = {uv[0], uv[1]};
+    int local_min = 0;
+    curve_point(vf, t, p);
+    return foot_descent(vf, p, fuv, foot, &local_min) ? dist3(x, foot) : HUGE_VAL;
+}
+
+/* The brute-force distance from x to the exact projection curve over t in
+ * [lo, hi], for the samples the searches above do not clear (orthogonal):
+ * basin_distance at DENSE_T + 1 even t, the DENSE_MINIMA smallest local
+ * minima refined by golden section between their neighbours. Where S
+ * folds (linkrods.step surface 11, its v lines reversing within 1e-3 of
+ * v) the foot moves by ~1e3 eps_D for a change of t that the 32-point
+ * scans step over, and Newton from the sample's (u, v) lands on the other
+ * sheet; the descent stays on the sample's. A foot found so is an exact
+ * critical point of |S - P(t)| (foot_newton's or critical_at's test), so
+ * the distance is never under-estimated: only the search is denser. */
+static double dense_nearest_foot(verifier *vf, const double x[3], const double uv[2],
+                                 double lo, double hi)
+{
+    double best = HUGE_VAL;
+    int at[DENSE_MINIMA];
+    double val[DENSE_MINIMA];
+    int kept = 0;
+    double prev2 = HUGE_VAL, prev = basin_distance(vf, x, uv, lo);
+    for (int k = 1; k <= DENSE_T + 1; ++k) {
+        const double cur = k <= DENSE_T ? basin_distance(vf, x, uv, lo + (hi - lo) * k / DENSE_T)
+                                        : HUGE_VAL;
+        best = fmin(best, prev);
+        /* prev (at k - 1) a local minimum: keep the smallest few */
+        if (prev < HUGE_VAL && prev <= prev2 && prev <= cur) {
+            int slot = kept < DENSE_MINIMA ? kept++ : -1;
+            for (int i = 0; slot < 0 && i < kept; ++i)
+                if (val[i] > prev)
+                    slot = i;
+            if (slot >= 0)
+                at[slot] = k - 1, val[slot] = prev;
+        }
+        prev2 = prev, prev = cur;
+    }
+    for (int i = 0; i < kept; ++i) {
+        double a = lo + (hi - lo) * (at[i] > 0 ? at[i] - 1 : 0) / DENSE_T;
+        double b = lo + (hi - lo) * (at[i] < DENSE_T ? at[i] + 1 : DENSE_T) / DENSE_T;
+        const double g = 0.5 * (sqrt(5.0) - 1.0);
+        for (int it = 0; it < GOLDEN_ITER && b > a; ++it) {
+            const double c = b - g * (b - a), d = a + g * (b - a);
+            if (basin_distance(vf, x, uv, c) <= basin_distance(vf, x, uv, d))
+                b = d;
+            else
+                a = c;
+        }
+        best = fmin(best, basin_distance(vf, x, uv, 0.5 * (a + b)));
+    }
+    return best;
+}
+
 /* The t range searched for a sample of a piece over `range`: the range
  * widened by half its length on each side, within the curve's domain. */
 static void search_range(const verifier *vf, const double range[2], double *lo, double *hi)
@@ -540,6 +608,12 @@ static void check_sample(verifier *vf, const double x[3], const double uv[2],
             ++vf->scans;
             err = fmin(err, nearest_exact(vf, x, uv, lo, hi, T_EXACT_SCAN));
         }
+    }
+    if (in->orthogonal && !(err <= bound) && vf->dense_scans < MAX_DENSE_SCANS) {
+        ++vf->dense_scans;
+        double lo, hi;
+        search_range(vf, range, &lo, &hi);
+        err = fmin(err, dense_nearest_foot(vf, x, uv, lo, hi));
     }
     if (err == HUGE_VAL) {
         ++rep->off_projection; /* no exact point near X for any t near t* */
@@ -730,7 +804,7 @@ void pc_sweep_verify(const pc_sweep_input *in, const projcurve_result *r,
 {
     memset(rep, 0, sizeof *rep);
     rep->wrong_t = rep->missed_t = rep->wrong_gap = rep->wrong_lambda = NAN;
-    verifier vf = {in, rep, 0.0, 0.0, {0, 0, 0}, NULL, 0, 0, 0};
+    verifier vf = {in, rep, 0.0, 0.0, {0, 0, 0}, NULL, 0, 0, 0, 0};
     if (projcurve_curve_domain(NULL, in->curve, &vf.t0, &vf.t1) != PROJCURVE_OK) {
         ++rep->accessor_failures;
         return;
