@@ -47,7 +47,7 @@ def library_path():
 
 
 def library_version():
-    """The loaded library's version string (e.g. "1.5.0")."""
+    """The loaded library's version string (e.g. "1.6.0")."""
     return _fn["projcurve_version_string"]().decode()
 
 

@@ -5,7 +5,7 @@
 # Type codes: see _lib.py (handle = an opaque pointer, 'x*' = pointer to x,
 # 'fn:name' = a callback type of CALLBACKS, string = const char *).
 
-VERSION = '1.5.0'
+VERSION = '1.6.0'
 
 ENUMS = {'projcurve_status': {'PROJCURVE_OK': 0,
                       'PROJCURVE_ERR_NULL_ARGUMENT': 1,
