@@ -93,7 +93,9 @@ projcurve_status pc_fit_resampled_cubic(projcurve_context *ctx, const pc_fit_res
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory fitting a resampled curve");
     }
     for (size_t i = 0; i <= in->n; ++i) {
-        t[i] = i == in->n ? in->t1 : in->t0 + (in->t1 - in->t0) * (double)i / (double)in->n;
+        t[i] = in->t != NULL ? in->t[i]
+               : i == in->n ? in->t1
+                            : in->t0 + (in->t1 - in->t0) * (double)i / (double)in->n;
         rows[i * row] = t[i];
         for (int k = 0; k < in->dim; ++k)
             rows[i * row + 1 + (size_t)k] = in->samples[(size_t)in->dim * i + (size_t)k];

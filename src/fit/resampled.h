@@ -10,8 +10,9 @@
  * within tol of every sample and of the exact curve half way between
  * samples. The spans of each interval double from one while 2 samples a
  * span remain, up to PC_FIT_RESAMPLED_MAX_SPANS in all; the first fit
- * accepted is kept. Used for pcurves mapped onto an analytic surface's
- * NURBS, which are otherwise polylines of up to 4097 points.
+ * accepted is kept. Used for the pcurves the readers make by sampling
+ * (mapped onto an analytic surface's NURBS, projected, inverted), which
+ * are otherwise polylines of up to 4097 points.
  */
 #ifndef PC_FIT_RESAMPLED_H
 #define PC_FIT_RESAMPLED_H
@@ -29,9 +30,12 @@ typedef void (*pc_fit_exact_fn)(const void *user, double t, double *out);
 
 typedef struct pc_fit_resampled_input {
     int dim;
-    const double *samples; /* n + 1 points of the curve at t0 + (t1 - t0) i / n */
+    const double *samples; /* n + 1 points of the curve at the parameters below */
     size_t n;
     double t0, t1;
+    /* the n + 1 parameters, increasing from t0 to t1; NULL: uniform,
+     * t0 + (t1 - t0) i / n */
+    const double *t;
     const double *breaks; /* increasing, inside (t0, t1); may be NULL when none */
     size_t n_breaks;      /* at most PC_FIT_RESAMPLED_MAX_BREAKS (else no fit) */
     pc_fit_exact_fn exact;

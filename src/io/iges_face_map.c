@@ -10,7 +10,10 @@
  * until every chord's middle is within PC_IGES_MAP_TOL_FRACTION of the
  * face's (u, v) tolerance of the inverted point half way, and every point
  * within PC_IGES_MAP_OFF_FACTOR model tolerances of the surface (a curve
- * farther off does not bound this surface: the face is not built).
+ * farther off does not bound this surface: the face is not built); then
+ * refitted as a cubic within the same tolerance of the samples and of the
+ * inverted curve between them, the curve's knots as breaks, when one is
+ * (fit/resampled.h; else the polyline stays).
  *
  * Where the NURBS is an affine map of (u, v) (a bilinear patch over a
  * parallelogram: the plane 108), the inverse is affine too, and the
@@ -30,6 +33,7 @@
 #include <string.h>
 
 #include "common/error.h"
+#include "fit/resampled.h"
 #include "geom/curve.h"
 #include "geom/surface.h"
 #include "io/iges.h"
@@ -251,6 +255,68 @@ static projcurve_status polyline(const pc_iges_file *f, const double *t, const d
     return PROJCURVE_OK;
 }
 
+/* The boundary inverted at t, from the (u, v) of the nearest sample (its
+ * seam side): the exact curve the polyline is refitted to. */
+typedef struct inverted_boundary {
+    const projcurve_surface *s;
+    const projcurve_curve *h;
+    const double *t, *uv; /* the n samples */
+    size_t n;
+    double off; /* the farthest a point may lie from the surface */
+} inverted_boundary;
+
+static void inverted_at(const void *user, double t, double *out)
+{
+    const inverted_boundary *b = user;
+    size_t lo = 0, hi = b->n - 1; /* b->t[lo] <= t <= b->t[hi] */
+    while (hi - lo > 1) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (b->t[mid] <= t)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    const size_t k = t - b->t[lo] <= b->t[hi] - t ? lo : hi;
+    out[0] = b->uv[2 * k], out[1] = b->uv[2 * k + 1];
+    double x[3];
+    if (projcurve_curve_eval(NULL, b->h, t, 0, x) != PROJCURVE_OK ||
+        !(pc_surface_minimize(&b->s->nurbs, (pc_vec3){x[0], x[1], x[2]}, b->s->size, out) <=
+          b->off * b->off))
+        out[0] = out[1] = NAN; /* fails the fit's check: the polyline stays */
+}
+
+/* The polyline through the even samples, out, as a cubic when one is
+ * within tol of every even sample and of the inverted boundary between
+ * them (fit/resampled.h), the curve's knots as breaks. */
+static projcurve_status compact(const pc_iges_file *f, const inverted_boundary *b,
+                                const double *brk, size_t n_brk, double tol, pc_io_curve *out)
+{
+    const size_t m = b->n / 2 + 1;
+    double *t = pc_arena_calloc(f->arena, m, sizeof *t);
+    double *uv = pc_arena_calloc(f->arena, 2 * m, sizeof *uv);
+    double *poles = pc_arena_calloc(f->arena, 2 * PC_FIT_RESAMPLED_POLES, sizeof *poles);
+    double *ctrl = pc_arena_calloc(f->arena, 3 * PC_FIT_RESAMPLED_POLES, sizeof *ctrl);
+    double *knots = pc_arena_calloc(f->arena, PC_FIT_RESAMPLED_POLES + 4, sizeof *knots);
+    if (t == NULL || uv == NULL || poles == NULL || ctrl == NULL || knots == NULL)
+        return pc_fail(f->ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory reading IGES");
+    for (size_t i = 0; i < m; ++i)
+        t[i] = b->t[2 * i], uv[2 * i] = b->uv[4 * i], uv[2 * i + 1] = b->uv[4 * i + 1];
+    const size_t n_breaks = n_brk > 2 ? n_brk - 2 : 0;
+    const pc_fit_resampled_input in = {.dim = 2, .samples = uv, .n = m - 1, .t0 = t[0],
+                                       .t1 = t[m - 1], .t = t, .breaks = brk + 1,
+                                       .n_breaks = n_breaks, .exact = inverted_at, .user = b,
+                                       .tol = tol};
+    size_t n_poles = 0;
+    const projcurve_status st = pc_fit_resampled_cubic(f->ctx, &in, poles, knots, &n_poles);
+    if (st != PROJCURVE_OK || n_poles == 0 || n_poles >= m)
+        return st;
+    for (size_t i = 0; i < n_poles; ++i)
+        ctrl[3 * i] = poles[2 * i], ctrl[3 * i + 1] = poles[2 * i + 1], ctrl[3 * i + 2] = 0.0;
+    *out = (pc_io_curve){.degree = 3, .n_ctrl = n_poles, .ctrl = ctrl, .weights = NULL,
+                         .knots = knots};
+    return PROJCURVE_OK;
+}
+
 projcurve_status pc_iges_boundary_by_inversion(const pc_iges_file *f, const projcurve_surface *s,
                                                const pc_io_curve *c, double tol_model,
                                                double tol_uv, const double *anchor,
@@ -303,6 +369,10 @@ projcurve_status pc_iges_boundary_by_inversion(const pc_iges_file *f, const proj
         if (err <= PC_IGES_MAP_TOL_FRACTION * tol_uv || n >= PC_IGES_MAP_MAX_SAMPLES)
             break;
     }
+    const inverted_boundary b = {s, h, t, uv, n, off};
+    if (st == PROJCURVE_OK && *reason == NULL && t != NULL && uv != NULL &&
+        err <= PC_IGES_MAP_TOL_FRACTION * tol_uv && (st = polyline(f, t, uv, n, out)) == PROJCURVE_OK)
+        st = compact(f, &b, brk, n_brk, PC_IGES_MAP_TOL_FRACTION * tol_uv, out);
     projcurve_curve_destroy(h);
     if (brk != NULL && n_brk < 2) {
         *reason = "its model-space curve has an empty domain";
@@ -320,5 +390,5 @@ projcurve_status pc_iges_boundary_by_inversion(const pc_iges_file *f, const proj
                   "not within the face's (u, v) tolerance";
         return PROJCURVE_OK;
     }
-    return polyline(f, t, uv, n, out);
+    return PROJCURVE_OK; /* the polyline or its cubic, made above */
 }

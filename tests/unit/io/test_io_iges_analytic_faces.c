@@ -11,7 +11,8 @@
  * written; points of known (theta, z) or (x, y) classified IN or OUT as the
  * trim says; every loop piece's 3D image S(q(t)) on the boundary written
  * (the arcs, lines and circle) within the model tolerance, its ends at the
- * boundary's corners. The same for bounded surfaces (143) on those bases,
+ * boundary's corners; the cylinder's inverted pieces are cubics of few
+ * poles (fit/resampled.h). The same for bounded surfaces (143) on those bases,
  * whose 141 boundaries' model-space curves (CRVPT) are mapped; a 141 with
  * no model-space curve leaves its face unbuilt, with the reason.
  */
@@ -254,6 +255,19 @@ static void cylinder_segment(int bounded)
     size_t pieces = 0;
     CHECK_OK(projcurve_face_loop_piece_count(ctx, face, 0, &pieces));
     CHECK(pieces == 4);
+    /* the inverted arcs are cubics (fit/resampled.h), not polylines */
+    size_t poles = 0, cubics = 0;
+    for (size_t k = 0; k < pieces; ++k) {
+        int degree = 0;
+        size_t n_ctrl = 0;
+        CHECK_OK(projcurve_face_piece_curve(ctx, face, 0, k, &degree, &n_ctrl, NULL, NULL, NULL,
+                                            NULL));
+        poles += n_ctrl;
+        cubics += degree == 3;
+    }
+    printf("cylinder segment (%s): %zu cubic pieces, %zu poles\n", bounded ? "143" : "144",
+           cubics, poles);
+    CHECK(cubics == 4 && poles <= 100);
     double tol_model = 0.0;
     CHECK_OK(projcurve_face_tolerance(ctx, face, NULL, &tol_model));
     CHECK(tol_model > 0.0 && tol_model < 1e-6);
