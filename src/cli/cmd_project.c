@@ -174,9 +174,9 @@ static int run_and_write(projcurve_context *ctx, cli_job *job, const project_arg
 }
 
 /* --faces: each curve of the job onto each shape of the files; the
- * outputs are written from the connected curves (JSON; IGES: one composite
- * curve each; SVG: one path each) and from the face results (STEP: each
- * face piece on its face's surface; the SVG's parameter panels). */
+ * outputs are written from the connected curves (JSON; IGES and STEP: one
+ * composite curve each; SVG: one path each) and from the face results (the
+ * SVG's parameter panels). */
 static int run_faces_and_write(projcurve_context *ctx, const cli_job *job, const cli_inputs *in,
                                const project_args *a, const char *title)
 {
@@ -207,7 +207,7 @@ static int run_faces_and_write(projcurve_context *ctx, const cli_job *job, const
                 sj.timeouts, a->timeout);
     int ok = 1;
     if (a->iges)
-        ok &= cli_is_step_path(a->iges) ? cli_write_step(ctx, &sj.view, a->iges)
+        ok &= cli_is_step_path(a->iges) ? cli_write_shape_step(ctx, &sj, a->iges)
                                         : cli_write_shape_iges(ctx, &sj, a->iges);
     if (a->json)
         ok &= cli_write_shape_json(ctx, &sj, a->json);

@@ -57,6 +57,13 @@ static inline size_t cli_shape_curve_number(const cli_shape_job *job, size_t c)
  * message. Returns 0 on a failure to write (reported on stderr). */
 int cli_write_shape_iges(projcurve_context *ctx, const cli_shape_job *job, const char *path);
 
+/* The STEP file of --faces (report_shape_step.c), the same: every surface
+ * of the view, every NURBS input curve, then each connected curve as one
+ * COMPOSITE_CURVE of its face pieces' 3D curves
+ * (projcurve_step_writer_add_shape_result); a run that cannot be written
+ * is left out with a message. Returns 0 on a failure to write. */
+int cli_write_shape_step(projcurve_context *ctx, const cli_shape_job *job, const char *path);
+
 /* The connected curves of every run, and the k-th of them (its run and
  * index in the run's result); 0 past the end. For the SVG's paths and
  * legend. */

@@ -17,6 +17,14 @@
  *     those B-splines as its curves, each equal to its piece at 41 samples
  *     to 1e-12), the transitions from the pieces' ends and the chaining
  *     tolerance, measured here, the open curve's last one discontinuous;
+ *   - a connected curve run against its pieces' parameter (the U's chain
+ *     turned round: its pieces in the other order, each entered at its t1
+ *     end): every IGES member is its piece run backwards, every STEP
+ *     segment says .F. over the piece's own B-spline. projcurve_project_shape
+ *     gives no such result (the tracer runs every branch with t increasing,
+ *     a branch born in mid-curve traced back and turned, and the chain
+ *     enters every piece at its start), so the test turns the result round
+ *     itself, in its internal form;
  *   - a result without connected curves adds nothing; NULL arguments.
  * The oracle of each piece is its 3D curve from the public result API
  * (the compact curve, else the pieces joined), evaluated by the library's
@@ -32,6 +40,7 @@
 #include "io/iges.h"
 #include "io/step.h"
 #include "projcurve.h"
+#include "shapeproj/shape_result.h"
 
 #define N_SAMPLES 41     /* per member: more than the 20 the checks ask for */
 #define REL_TOL 1e-12    /* of the model size: the files hold 17 digits */
@@ -107,7 +116,9 @@ static void check_same_curve(const projcurve_curve *got, const projcurve_curve *
         const double s = b0 + (b1 - b0) * i / (N_SAMPLES - 1.0);
         double p[3], q[3];
         CHECK_OK(projcurve_curve_eval(NULL, got, fmin(fmax(s, a0), a1), 0, p));
-        CHECK_OK(projcurve_curve_eval(NULL, want, reversed ? b0 + b1 - s : s, 0, q));
+        /* b0 + b1 - s may round past an end of the domain */
+        const double r = fmin(fmax(b0 + b1 - s, fmin(b0, b1)), fmax(b0, b1));
+        CHECK_OK(projcurve_curve_eval(NULL, want, reversed ? r : s, 0, q));
         worst = fmax(worst, dist3(p, q));
     }
     if (worst > REL_TOL * MODEL_SIZE)
@@ -348,6 +359,51 @@ static projcurve_curve *circle(void)
     return c;
 }
 
+/* Connected curve c of sr run the other way: its pieces in reverse order,
+ * each piece's trim ends swapped, so that the chain enters every piece at
+ * its t1 end and leaves it at its t0 end (the pieces still meet). */
+static void turn_round(projcurve_shape_result *sr, size_t c)
+{
+    const pc_connected *cc = &sr->curves[c];
+    pc_piece_ref *refs = sr->refs + cc->first;
+    for (size_t i = 0, k = cc->count - 1; i < k; ++i, --k) {
+        const pc_piece_ref x = refs[i];
+        refs[i] = refs[k];
+        refs[k] = x;
+    }
+    for (size_t i = 0; i < cc->count; ++i) {
+        pc_branch_trim *tr = &sr->parts[refs[i].part].trims[refs[i].branch];
+        const pc_trim_end x = tr->start;
+        tr->start = tr->end;
+        tr->end = x;
+    }
+}
+
+/* The U turned round, written alone: every member reversed. */
+static void check_turned_round(projcurve_shape_result *u)
+{
+    turn_round(u, 0);
+    expected_curve e[1];
+    const size_t n = expect_all(u, e, 1);
+    CHECK(n == 1 && e[0].n == 4 && !e[0].closed);
+    for (size_t k = 0; k < e[0].n; ++k)
+        CHECK(!e[0].forward[k]);
+    projcurve_iges_writer *iw = NULL;
+    projcurve_step_writer *sw = NULL;
+    CHECK_OK(projcurve_iges_writer_create(NULL, &iw));
+    CHECK_OK(projcurve_step_writer_create(NULL, &sw));
+    CHECK_OK(projcurve_iges_writer_add_shape_result(NULL, iw, u));
+    CHECK_OK(projcurve_step_writer_add_shape_result(NULL, sw, u));
+    CHECK_OK(projcurve_iges_writer_write(NULL, iw, path_igs));
+    CHECK_OK(projcurve_step_writer_write(NULL, sw, path_step));
+    projcurve_iges_writer_destroy(iw);
+    projcurve_step_writer_destroy(sw);
+    check_iges(e, n);
+    check_step(e, n);
+    free_expected(e, n);
+    turn_round(u, 0); /* as projected again */
+}
+
 /* A result without connected curves (the curve far beside the shell)
  * adds nothing; NULL arguments are refused with a message. */
 static void check_empty_and_null(const projcurve_shape *shape, const double dir[3])
@@ -437,6 +493,7 @@ int main(void)
     projcurve_step_writer_destroy(sw);
     check_iges(e, n);
     check_step(e, n);
+    check_turned_round(u);
     check_empty_and_null(shape, dir);
 
     free_expected(e, n);

@@ -7,12 +7,14 @@ the IGES holds one composite curve (102) per connected curve of the JSON,
 with as many members as the curve has face pieces (read from the file's
 records, iges_geometry.py), and `projcurve info` reads it as one curve per
 input curve plus one per connected curve (its members joined); the STEP
-holds one curve per input curve plus one per seam segment of each face
-piece (seams + 1: a curve on its face's surface per segment). Where the
-Open CASCADE checkers were built (PC_OCCT_IGES_CHECK, PC_OCCT_STEP_CHECK
-name them), Open CASCADE reads them too: the 102s with their member
-counts, and one SURFACE_CURVE per segment, the pcurve on its surface
-within twice eps_D of the 3D curve."""
+holds one COMPOSITE_CURVE per connected curve of the JSON, with as many
+segments (COMPOSITE_CURVE_SEGMENT) as the curve has face pieces (read from
+the file's text), and no SURFACE_CURVE, and `projcurve info` reads it as
+one curve per input curve plus one per face piece (the segments'
+B-splines; the composites listed as skipped). Where the Open CASCADE
+checkers were built (PC_OCCT_IGES_CHECK, PC_OCCT_STEP_CHECK name them),
+Open CASCADE reads them too: the 102s and the COMPOSITE_CURVEs with their
+member counts."""
 import json
 import os
 import re
@@ -96,12 +98,43 @@ def composite_members(path):
             if etype == 102]
 
 
-def occt_check(out, members, segments, tol, name, check):
+STEP_INSTANCE = re.compile(r"#(\d+)\s*=\s*([A-Z_0-9]*)\s*\((.*)\)\s*$", re.S)
+
+
+def step_instances(path):
+    """{id: (entity name, parameter text)} of a STEP file's DATA section
+    (a complex instance has the name '')."""
+    with open(path) as f:
+        text = f.read()
+    data = text[text.find("DATA;") + 5:text.rfind("ENDSEC;")]
+    out = {}
+    for record in data.split(";"):
+        m = STEP_INSTANCE.match(record.strip())
+        if m:
+            out[int(m.group(1))] = (m.group(2), m.group(3))
+    return out
+
+
+def step_composites(path):
+    """The segment count of each COMPOSITE_CURVE of a STEP file, in
+    instance order, and the number of SURFACE_CURVEs; a segment reference
+    that is no COMPOSITE_CURVE_SEGMENT counts as -1."""
+    inst = step_instances(path)
+    counts = []
+    for _, (name, params) in sorted(inst.items()):
+        if name != "COMPOSITE_CURVE":
+            continue
+        refs = [int(r) for r in re.findall(r"#(\d+)", params.split(")")[0])]
+        good = all(inst.get(r, ("",))[0] == "COMPOSITE_CURVE_SEGMENT" for r in refs)
+        counts.append(len(refs) if good else -1)
+    return counts, sum(1 for name, _ in inst.values() if name == "SURFACE_CURVE")
+
+
+def occt_check(out, members, name, check):
     """Open CASCADE reads the written files (skipped where not built)."""
     counts = ",".join(str(m) for m in members)
     for ext, env, args in (("igs", "PC_OCCT_IGES_CHECK", ["--composites", out["igs"], counts]),
-                           ("step", "PC_OCCT_STEP_CHECK",
-                            ["--file", out["step"], str(segments), str(tol)])):
+                           ("step", "PC_OCCT_STEP_CHECK", ["--composites", out["step"], counts])):
         exe = os.environ.get(env)
         if not exe:
             print(f"SKIP {name}: {env} not set (Open CASCADE checker not built)")
@@ -143,9 +176,6 @@ def part_faces(exe, data, work, run, check):
         want_curves, want_pieces = expected(case["notes"])
         got_curves = sum(len(r["curves"]) for r in result["runs"])
         got_pieces = sum(len(c["pieces"]) for r in result["runs"] for c in r["curves"])
-        # a piece across its face's seam is written per seam segment
-        got_segments = sum(p["seams"] + 1 for r in result["runs"] for c in r["curves"]
-                           for p in c["pieces"])
         check(got_curves == want_curves == result["connected_curves"],
               f"{name}: {got_curves} connected curves ({result['connected_curves']} counted), "
               f"MANIFEST expects {want_curves}")
@@ -166,22 +196,28 @@ def part_faces(exe, data, work, run, check):
         check(written == members,
               f"{name}: the IGES's composite curves (102) have {written} members, the JSON's "
               f"connected curves {members} face pieces")
+        # and in the STEP one COMPOSITE_CURVE per connected curve, a segment
+        # per face piece, no piece on its own
+        segments, surface_curves = step_composites(out["step"])
+        check(segments == members and surface_curves == 0,
+              f"{name}: the STEP's COMPOSITE_CURVEs have {segments} segments (and it holds "
+              f"{surface_curves} SURFACE_CURVEs), the JSON's connected curves {members} face "
+              f"pieces")
         for ext in ("igs", "step"):
             counts = info_counts(exe, out[ext])
             check(counts is not None, f"{name}: info reads the {ext} written")
             if counts is None:
                 continue
             # IGES: each composite read as one curve (its members joined);
-            # STEP: every face piece, each seam segment of it as a curve on
-            # its surface
-            want = n_input + (got_curves if ext == "igs" else got_segments)
+            # STEP: the composites' segments, each a face piece's B-spline
+            want = n_input + (got_curves if ext == "igs" else got_pieces)
             check(counts[1] == want,
                   f"{name}: {ext} holds {counts[1]} curves, expected {want}: {n_input} input + "
                   + (f"{got_curves} connected curves" if ext == "igs" else
-                     f"{got_segments} segments of {got_pieces} pieces"))
+                     f"{got_pieces} face pieces"))
             # and the surfaces of the faces it lies on (faces may share one)
             check(counts[0] >= 1, f"{name}: {ext} holds no surface for {len(faces)} faces")
-        occt_check(out, members, got_segments, 2.0 * float(case["tol_dist"]), name, check)
+        occt_check(out, members, name, check)
     # --faces picks shapes; --surface one surface: not both
     run([exe, "project", os.path.join(base, "shell_2x2.step"), "--faces", "--surface", "0",
          "--dir", "0,0,-1"], 2, "--faces with --surface")

@@ -591,8 +591,51 @@ void check_shape_result(const std::string &dir)
     projcurve_model_destroy(curves);
 }
 
+// occt_step_check --composites PATH M1,M2,...: a file with one
+// COMPOSITE_CURVE per connected curve (the command's --faces -o out.step
+// of tests/cli/check_faces.py): OCCT reads it and finds the composites in
+// instance order with M1, M2, ... segments, each over a B-spline it
+// converts.
+int check_given_composites(const std::string &path, const std::string &counts)
+{
+    std::vector<int> want;
+    for (size_t pos = 0; pos < counts.size() && want.size() < 100000;) {
+        const size_t comma = counts.find(',', pos);
+        want.push_back(std::atoi(counts.substr(pos, comma - pos).c_str()));
+        if (comma == std::string::npos)
+            break;
+        pos = comma + 1;
+    }
+    STEPControl_Reader reader;
+    const loaded l = load(reader, path);
+    std::vector<int> got;
+    for (Standard_Integer i = 1; !l.model.IsNull() && i <= l.model->NbEntities(); ++i) {
+        Handle(StepGeom_CompositeCurve) cc =
+            Handle(StepGeom_CompositeCurve)::DownCast(l.model->Value(i));
+        if (cc.IsNull())
+            continue;
+        got.push_back(cc->NbSegments());
+        for (Standard_Integer k = 1; k <= cc->NbSegments(); ++k) {
+            Handle(StepGeom_BSplineCurve) b =
+                Handle(StepGeom_BSplineCurve)::DownCast(cc->SegmentsValue(k)->ParentCurve());
+            CHECK(!b.IsNull() && !StepToGeom::MakeBSplineCurve(b).IsNull());
+        }
+    }
+    if (got != want) {
+        std::string text;
+        for (const int g : got)
+            text += (text.empty() ? "" : ",") + std::to_string(g);
+        pc_test_fail_at(__FILE__, __LINE__, "%s: OCCT finds COMPOSITE_CURVEs of %s segments, "
+                        "expected %s", path.c_str(), text.c_str(), counts.c_str());
+    }
+    ++pc_test_checks;
+    return pc_test_finish("occt_step_check --composites");
+}
+
 int main(int argc, char **argv)
 {
+    if (argc == 4 && std::string(argv[1]) == "--composites")
+        return check_given_composites(argv[2], argv[3]);
     if (argc == 5 && std::string(argv[1]) == "--file")
         return check_given_file(argv[2], std::strtoul(argv[3], nullptr, 10),
                                 std::strtod(argv[4], nullptr));

@@ -1,0 +1,47 @@
+/* SPDX-License-Identifier: BSD-3-Clause */
+#include "shape_job.h"
+
+/* The surfaces and input curves, as cli_write_step writes them. */
+static int add_inputs(projcurve_context *ctx, projcurve_step_writer *w, const cli_job *view)
+{
+    int ok = 1;
+    for (size_t s = 0; ok && s < view->n_surfaces; ++s)
+        ok = projcurve_step_writer_add_surface(ctx, w, view->surfaces[s]) == PROJCURVE_OK;
+    for (size_t c = 0; ok && c < view->n_curves; ++c) {
+        const projcurve_status st = projcurve_step_writer_add_curve(ctx, w, view->curves[c]);
+        ok = st == PROJCURVE_OK || st == PROJCURVE_ERR_WRONG_KIND;
+    }
+    return ok;
+}
+
+int cli_write_shape_step(projcurve_context *ctx, const cli_shape_job *job, const char *path)
+{
+    projcurve_step_writer *w = NULL;
+    if (projcurve_step_writer_create(ctx, &w) != PROJCURVE_OK)
+        return 0;
+    int ok = 1;
+    if (job->view.metres_per_unit > 0.0)
+        ok = projcurve_step_writer_set_length_unit(ctx, w, job->view.metres_per_unit) ==
+             PROJCURVE_OK;
+    if (ok)
+        ok = add_inputs(ctx, w, &job->view);
+    for (size_t i = 0; ok && i < job->n_runs; ++i) {
+        const cli_shape_run *r = &job->runs[i];
+        if (r->result == NULL)
+            continue;
+        const projcurve_status st = projcurve_step_writer_add_shape_result(ctx, w, r->result);
+        if (st == PROJCURVE_ERR_INVALID_ARGUMENT || st == PROJCURVE_ERR_OUT_OF_RANGE)
+            fprintf(stderr, "projcurve: %s: the connected curves of curve %zu onto shape %zu "
+                            "are not written: %s\n",
+                    path, cli_shape_curve_number(job, r->curve), r->shape,
+                    projcurve_context_message(ctx));
+        else
+            ok = st == PROJCURVE_OK;
+    }
+    if (ok)
+        ok = projcurve_step_writer_write(ctx, w, path) == PROJCURVE_OK;
+    if (!ok)
+        fprintf(stderr, "projcurve: writing %s: %s\n", path, projcurve_context_message(ctx));
+    projcurve_step_writer_destroy(w);
+    return ok;
+}
