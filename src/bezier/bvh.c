@@ -25,19 +25,72 @@ typedef struct build_item {
 
 static double centre(const double box[6], int axis) { return 0.5 * (box[axis] + box[axis + 3]); }
 
+/* Quickselect rounds before select_median sorts instead: about twice
+ * log2 of the patches on any input that is not adversarial. */
+#define PC_BVH_SELECT_ROUNDS 64
+
+static double centre_at(const uint32_t *order, size_t k, const pc_patch_grid *grid, int axis)
+{
+    return centre(grid->patches[order[k]].box, axis);
+}
+
+/* Moves order[k] down the heap order[lo, lo + n) (largest centre on top). */
+static void sift_down(uint32_t *order, size_t lo, size_t n, size_t k, const pc_patch_grid *grid,
+                      int axis)
+{
+    for (;;) { /* bounded: k at least doubles */
+        size_t big = k;
+        const size_t l = 2 * k + 1, r = l + 1;
+        if (l < n && centre_at(order, lo + l, grid, axis) > centre_at(order, lo + big, grid, axis))
+            big = l;
+        if (r < n && centre_at(order, lo + r, grid, axis) > centre_at(order, lo + big, grid, axis))
+            big = r;
+        if (big == k)
+            return;
+        const uint32_t tmp = order[lo + k];
+        order[lo + k] = order[lo + big];
+        order[lo + big] = tmp;
+        k = big;
+    }
+}
+
+/* Sorts order[lo, hi] by centre along axis: heapsort, O(n log n) on every
+ * input and in place. */
+static void sort_by_centre(uint32_t *order, size_t lo, size_t hi, const pc_patch_grid *grid,
+                           int axis)
+{
+    const size_t n = hi - lo + 1;
+    for (size_t k = n / 2; k-- > 0;)
+        sift_down(order, lo, n, k, grid, axis);
+    for (size_t m = n; m-- > 1;) {
+        const uint32_t tmp = order[lo];
+        order[lo] = order[lo + m];
+        order[lo + m] = tmp;
+        sift_down(order, lo, m, 0, grid, axis);
+    }
+}
+
 /* Rearranges order[begin, end) so that order[mid] has the median centre
- * along axis, smaller before, larger after (Hoare quickselect, iterative). */
+ * along axis, smaller before, larger after (Hoare quickselect, iterative).
+ * Its middle pivot is the smallest centre of a range made of runs already
+ * sorted (the patches of a long strip listed row by row), where each round
+ * removes one patch: after PC_BVH_SELECT_ROUNDS rounds the range left is
+ * sorted instead, so the build stays O(n log^2 n) on any surface. */
 static void select_median(uint32_t *order, size_t begin, size_t end, size_t mid,
                           const pc_patch_grid *grid, int axis)
 {
     size_t lo = begin, hi = end - 1;
-    while (lo < hi) {
-        const double pivot = centre(grid->patches[order[lo + (hi - lo) / 2]].box, axis);
+    for (int round = 0; lo < hi; ++round) {
+        if (round == PC_BVH_SELECT_ROUNDS) {
+            sort_by_centre(order, lo, hi, grid, axis);
+            return;
+        }
+        const double pivot = centre_at(order, lo + (hi - lo) / 2, grid, axis);
         size_t i = lo, j = hi;
         while (i <= j) {
-            while (centre(grid->patches[order[i]].box, axis) < pivot)
+            while (centre_at(order, i, grid, axis) < pivot)
                 ++i;
-            while (centre(grid->patches[order[j]].box, axis) > pivot)
+            while (centre_at(order, j, grid, axis) > pivot)
                 --j;
             if (i <= j) {
                 const uint32_t tmp = order[i];
