@@ -12,7 +12,10 @@
  * result said FAILED with the second branch and half the first missing:
  * the foot points of P(0.75653) 418 eps_D from every piece (the real-data
  * sweep, case #2667). Surface 5 and curve 76 are its mirror image (t and v
- * reversed).
+ * reversed). On surface 9, curve 38 the sweep found only the branch after
+ * a fold pair at t ~ 2.6608; its backward trace stalled there and the
+ * minima before it (t from 2.641) were missing with no failure reported
+ * (the foot of P(2.65072) 707 eps_D from the result, case #1387).
  *
  * Oracles, independent of the tracer: the sweep's verifier
  * (support/sweep_verify.c: every piece sample within eps_D of an exact foot
@@ -109,7 +112,30 @@ static int polish(const projcurve_surface *s, const double dom[4], const double 
     return 0;
 }
 
-/* Distance from x to the result's pieces, sampled densely. */
+/* Distance from x to the rational piece (deg, ctrl, w) at s (de Casteljau
+ * on the homogeneous points). */
+static double piece_point_distance(int deg, const double *ctrl, const double *w, double s,
+                                   const double x[3])
+{
+    double h[4 * PROJCURVE_MAX_PIECE_POINTS];
+    for (int j = 0; j <= deg; ++j) {
+        for (int c = 0; c < 3; ++c)
+            h[4 * j + c] = ctrl[3 * j + c] * w[j];
+        h[4 * j + 3] = w[j];
+    }
+    for (int q = 1; q <= deg; ++q)
+        for (int j = 0; j <= deg - q; ++j)
+            for (int c = 0; c < 4; ++c)
+                h[4 * j + c] = (1 - s) * h[4 * j + c] + s * h[4 * (j + 1) + c];
+    double dd = 0.0;
+    for (int c = 0; c < 3; ++c)
+        dd += (h[c] / h[3] - x[c]) * (h[c] / h[3] - x[c]);
+    return sqrt(dd);
+}
+
+/* Distance from x to the result's pieces: 64 samples a piece, the nearest
+ * polished by golden section over the two sample intervals beside it (a
+ * long piece's samples lie farther apart than eps_D). */
 static double piece_distance(const projcurve_result *r, const double x[3])
 {
     double best = HUGE_VAL;
@@ -120,24 +146,24 @@ static double piece_distance(const projcurve_result *r, const double x[3])
             int deg = 0;
             double ctrl[3 * PROJCURVE_MAX_PIECE_POINTS], w[PROJCURVE_MAX_PIECE_POINTS];
             projcurve_result_piece(NULL, r, b, k, &deg, ctrl, w, NULL, NULL);
+            double bs = 0.0, bd = HUGE_VAL;
             for (int i = 0; i <= 64; ++i) {
-                /* de Casteljau on the homogeneous points */
-                const double s = i / 64.0;
-                double h[4 * PROJCURVE_MAX_PIECE_POINTS];
-                for (int j = 0; j <= deg; ++j) {
-                    for (int c = 0; c < 3; ++c)
-                        h[4 * j + c] = ctrl[3 * j + c] * w[j];
-                    h[4 * j + 3] = w[j];
-                }
-                for (int q = 1; q <= deg; ++q)
-                    for (int j = 0; j <= deg - q; ++j)
-                        for (int c = 0; c < 4; ++c)
-                            h[4 * j + c] = (1 - s) * h[4 * j + c] + s * h[4 * (j + 1) + c];
-                double dd = 0.0;
-                for (int c = 0; c < 3; ++c)
-                    dd += (h[c] / h[3] - x[c]) * (h[c] / h[3] - x[c]);
-                best = fmin(best, sqrt(dd));
+                const double d = piece_point_distance(deg, ctrl, w, i / 64.0, x);
+                if (d < bd)
+                    bd = d, bs = i / 64.0;
             }
+            const double g = 0.5 * (sqrt(5.0) - 1.0);
+            double lo = fmax(0.0, bs - 1.0 / 64), hi = fmin(1.0, bs + 1.0 / 64);
+            for (int it = 0; it < 40; ++it) {
+                const double c = hi - g * (hi - lo), d = lo + g * (hi - lo);
+                if (piece_point_distance(deg, ctrl, w, c, x) <=
+                    piece_point_distance(deg, ctrl, w, d, x))
+                    hi = d;
+                else
+                    lo = c;
+            }
+            bd = fmin(bd, piece_point_distance(deg, ctrl, w, 0.5 * (lo + hi), x));
+            best = fmin(best, bd);
         }
     }
     return best;
@@ -276,9 +302,15 @@ int main(void)
     if (projcurve_model_read_file(NULL, pc_test_data_path("real/linkrods.step"), &m) !=
         PROJCURVE_OK)
         pc_test_missing_data("real/linkrods.step");
-    const foot_case cases[] = {{1, 74, 0.69, 0.80}, {5, 76, -0.80, -0.69}};
+    /* Surface 9 / curve 38: a minimum born at the boundary at t ~ 2.641,
+     * a fold pair at t ~ 2.6608; the sweep found only the branch after the
+     * pair, whose backward trace stalled there, and the feet before it
+     * (P(2.65072): 707 eps_D from the result) were missed with no failure
+     * reported. */
+    const foot_case cases[] = {
+        {1, 74, 0.69, 0.80}, {5, 76, -0.80, -0.69}, {9, 38, 2.635, 2.675}};
     /* the sanitizer and coverage builds check the first case only */
-    const int n = PC_TEST_SLOWDOWN > 1 ? 1 : 2;
+    const int n = PC_TEST_SLOWDOWN > 1 ? 1 : 3;
     for (int k = 0; k < n; ++k)
         check_case(m, &cases[k]);
     check_verifier_on_fold(m);
