@@ -6,24 +6,10 @@
 
 #include <math.h>
 
-/* Index j of the segment [t_j, t_j+1] of b holding t. */
-static size_t segment_at(const pc_branch *b, double t)
-{
-    size_t lo = 0, hi = b->n_points - 1;
-    while (hi - lo > 1) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (b->points[3 * mid] <= t)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 projcurve_status pc_hits_distance(const pc_projector *proj, const pc_branch *b, double t,
                                   double uv[2], double *out)
 {
-    const size_t j = segment_at(b, t);
+    const size_t j = pc_branch_segment_at(b, t);
     const double *a = b->points + 3 * j, *c = a + 3;
     const double w = c[0] > a[0] ? (t - a[0]) / (c[0] - a[0]) : 0.0;
     double guess[2] = {a[1] + w * (c[1] - a[1]), a[2] + w * (c[2] - a[2])};

@@ -79,23 +79,10 @@ projcurve_status pc_span_push(projcurve_context *ctx, pc_span_list *l, size_t tr
     return st;
 }
 
-static size_t segment_at(const pc_branch *b, double t)
-{
-    size_t lo = 0, hi = b->n_points - 1;
-    while (hi - lo > 1) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (b->points[3 * mid] <= t)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 projcurve_status pc_track_distance(const pc_track *k, double t, double uv[2], double *out)
 {
     const pc_branch *b = k->b;
-    const size_t j = segment_at(b, t);
+    const size_t j = pc_branch_segment_at(b, t);
     const double *a = b->points + 3 * j, *c = a + 3;
     const double *near = t - a[0] <= c[0] - t ? a : c;
     uv[0] = near[1];

@@ -70,6 +70,21 @@ typedef struct pc_branch {
     size_t n_seams;
 } pc_branch;
 
+/* Index j of the segment [t_j, t_j+1] of b holding t (b of (t, u, v)
+ * vertices, at least 2, t within its range). */
+static inline size_t pc_branch_segment_at(const pc_branch *b, double t)
+{
+    size_t lo = 0, hi = b->n_points - 1;
+    while (hi - lo > 1) {
+        const size_t mid = lo + (hi - lo) / 2;
+        if (b->points[3 * mid] <= t)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
 typedef struct pc_stats {
     double points, steps, newton_iterations, jumps, pieces;
     double error_sum, error_max; /* estimation error of each corrected step:

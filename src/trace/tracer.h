@@ -89,21 +89,6 @@ typedef struct pc_tracer {
 /* A narrowed step is at least 2^-this of the curve's domain. */
 #define PC_SWEEP_NARROW_FLOOR_LOG2 24
 
-/* Index j of the segment [t_j, t_j+1] of b holding t (b has >= 2 points,
- * t within its range). */
-static inline size_t pc_branch_segment_at(const pc_branch *b, double t)
-{
-    size_t lo = 0, hi = b->n_points - 1;
-    while (hi - lo > 1) {
-        const size_t mid = lo + (hi - lo) / 2;
-        if (b->points[3 * mid] <= t)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
 /* The sweep's step dt from the check at t, halved while the finder's
  * step_may_skip says the rays over [t, t + dt] may jump over a patch, down
  * to 2^-PC_SWEEP_NARROW_FLOOR_LOG2 of the domain (at most that many
