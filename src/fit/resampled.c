@@ -115,14 +115,18 @@ projcurve_status pc_fit_resampled_cubic(projcurve_context *ctx, const pc_fit_res
         const size_t count = knots_with_breaks(in, spans, knots);
         const pc_lsq_space space = {.degree = 3, .n_poles = count, .knots = knots};
         const size_t fixed[2] = {0, count - 1};
-        st = pc_lsq_fit(ctx, &space, in->dim, rows, rows + 1, row, in->n + 1, fixed, ends, 2,
+        /* no context: a singular system only means no fit of this size,
+         * which is no failure of the caller's call */
+        st = pc_lsq_fit(NULL, &space, in->dim, rows, rows + 1, row, in->n + 1, fixed, ends, 2,
                         poles);
-        if (st == PROJCURVE_ERR_SINGULAR) { /* these samples do not fix these poles */
+        if (st == PROJCURVE_ERR_SINGULAR) {
             st = PROJCURVE_OK;
             continue;
         }
-        if (st != PROJCURVE_OK)
+        if (st != PROJCURVE_OK) {
+            st = pc_fail(ctx, st, "out of memory fitting a resampled curve");
             break;
+        }
         keep_constants(in, count, poles);
         if (within(in, &space, poles, t)) {
             *n_poles = count;
