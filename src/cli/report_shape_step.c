@@ -14,6 +14,12 @@ static int add_inputs(projcurve_context *ctx, projcurve_step_writer *w, const cl
     return ok;
 }
 
+static projcurve_status add_shape(projcurve_context *ctx, void *writer,
+                                  const projcurve_shape_result *result)
+{
+    return projcurve_step_writer_add_shape_result(ctx, writer, result);
+}
+
 int cli_write_shape_step(projcurve_context *ctx, const cli_shape_job *job, const char *path)
 {
     projcurve_step_writer *w = NULL;
@@ -25,19 +31,8 @@ int cli_write_shape_step(projcurve_context *ctx, const cli_shape_job *job, const
              PROJCURVE_OK;
     if (ok)
         ok = add_inputs(ctx, w, &job->view);
-    for (size_t i = 0; ok && i < job->n_runs; ++i) {
-        const cli_shape_run *r = &job->runs[i];
-        if (r->result == NULL)
-            continue;
-        const projcurve_status st = projcurve_step_writer_add_shape_result(ctx, w, r->result);
-        if (st == PROJCURVE_ERR_INVALID_ARGUMENT || st == PROJCURVE_ERR_OUT_OF_RANGE)
-            fprintf(stderr, "projcurve: %s: the connected curves of curve %zu onto shape %zu "
-                            "are not written: %s\n",
-                    path, cli_shape_curve_number(job, r->curve), r->shape,
-                    projcurve_context_message(ctx));
-        else
-            ok = st == PROJCURVE_OK;
-    }
+    if (ok)
+        ok = cli_add_shape_results(ctx, job, path, add_shape, w);
     if (ok)
         ok = projcurve_step_writer_write(ctx, w, path) == PROJCURVE_OK;
     if (!ok)

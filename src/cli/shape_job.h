@@ -50,6 +50,17 @@ static inline size_t cli_shape_curve_number(const cli_shape_job *job, size_t c)
     return job->curve_numbers ? job->curve_numbers[c] : c;
 }
 
+/* Adds one run's shape result to a writer (IGES or STEP). */
+typedef projcurve_status (*cli_add_shape_fn)(projcurve_context *ctx, void *writer,
+                                             const projcurve_shape_result *result);
+
+/* Adds every run's result to writer through add, for the --faces files: a
+ * run whose pieces cannot all be written (INVALID_ARGUMENT, OUT_OF_RANGE:
+ * one not composed, or too narrow) is left out with a message naming
+ * path. Returns 0 on any other failure. */
+int cli_add_shape_results(projcurve_context *ctx, const cli_shape_job *job, const char *path,
+                          cli_add_shape_fn add, void *writer);
+
 /* The IGES file of --faces (report_shape_iges.c): every surface of the
  * view, every NURBS input curve, then each connected curve as one
  * composite curve (projcurve_iges_writer_add_shape_result). A run whose

@@ -213,3 +213,22 @@ size_t cli_shape_connected_of(const cli_shape_job *job, const projcurve_result *
     }
     return SIZE_MAX;
 }
+
+int cli_add_shape_results(projcurve_context *ctx, const cli_shape_job *job, const char *path,
+                          cli_add_shape_fn add, void *writer)
+{
+    for (size_t i = 0; i < job->n_runs; ++i) {
+        const cli_shape_run *r = &job->runs[i];
+        if (r->result == NULL)
+            continue;
+        const projcurve_status st = add(ctx, writer, r->result);
+        if (st == PROJCURVE_ERR_INVALID_ARGUMENT || st == PROJCURVE_ERR_OUT_OF_RANGE)
+            fprintf(stderr, "projcurve: %s: the connected curves of curve %zu onto shape %zu "
+                            "are not written: %s\n",
+                    path, cli_shape_curve_number(job, r->curve), r->shape,
+                    projcurve_context_message(ctx));
+        else if (st != PROJCURVE_OK)
+            return 0;
+    }
+    return 1;
+}
