@@ -6,7 +6,8 @@
  *
  * Both curves share their end points, so the distance profile
  * d(t) = dist(Q(t), C) vanishes at both ends and, for a short segment, is a
- * smooth bump. It is sampled at PC_DEVIATION_SAMPLES interior values of t
+ * smooth bump. It is sampled at PC_DEVIATION_SAMPLES (straight pcurves) or
+ * PC_DEVIATION_SAMPLES_CUBIC (cubic ones: b->in_cubic) interior values of t
  * (each: the exact point by the corrector, then its foot on C by Newton),
  * and the largest sample is refined by one parabolic step. The traced
  * vertices inside the segment are exact points too and are measured as well:
@@ -19,7 +20,14 @@
 #include "compose/compose.h"
 #include "refine/refine_internal.h"
 
+/* Interior samples: 3 for a straight pcurve (its error is a quadratic
+ * bump), 7 for a cubic one (a quartic bump, skewed by the next term), as
+ * the verification pass takes them (verify_piece.c, 2 d + 1): with 3, a
+ * cubic piece whose profile peaked between them was accepted at 0.9 eps_D
+ * and failed verification at 1.03 eps_D, and its branch was lost
+ * (bearing.iges surface 196, the sweep's lifted orthogonal curve). */
 #define PC_DEVIATION_SAMPLES 3
+#define PC_DEVIATION_SAMPLES_CUBIC 7
 #define PC_DEVIATION_GUIDE_MAX 4
 /* A traced vertex whose distance to the chord-parameter point is below this
  * fraction of the bound needs no foot search. */
@@ -218,12 +226,13 @@ static double guide_deviation(pc_refiner *r, int n, const double *cw, const pc_r
 double pc_refine_deviation(pc_refiner *r, int n, const double *cw, const pc_rvertex *a,
                            const pc_rvertex *b, double limit, double *t_far)
 {
-    const double h = 1.0 / (PC_DEVIATION_SAMPLES + 1);
-    double d[PC_DEVIATION_SAMPLES + 2];
-    d[0] = d[PC_DEVIATION_SAMPLES + 1] = 0.0;
+    const int m = b->in_cubic ? PC_DEVIATION_SAMPLES_CUBIC : PC_DEVIATION_SAMPLES;
+    const double h = 1.0 / (m + 1);
+    double d[PC_DEVIATION_SAMPLES_CUBIC + 2];
+    d[0] = d[m + 1] = 0.0;
     int k_max = 1;
     *t_far = 0.5 * (a->t + b->t);
-    for (int k = 1; k <= PC_DEVIATION_SAMPLES; ++k) {
+    for (int k = 1; k <= m; ++k) {
         d[k] = profile(r, n, cw, a, b, k * h);
         if (d[k] < 0.0)
             return INFINITY;

@@ -40,13 +40,19 @@
 /* Halvings in a row of a candidate whose cubic cannot be built before the
  * stretch goes to the straight march: 1/64 of the step. */
 #define PC_CUBIC_MAX_INVALID 6
-/* A run end without q' (a pole of S, where Su = 0 and the (u, v) tangent
- * is singular: the sphere's collapsed edge; a fold) is approached by
- * cubics until the rest of the run is this fraction of the step that first
- * reached it; the rest goes to the straight march. Halving alone never
- * got there: every cubic reaching the end was invalid, every halved one
- * was accepted, and the march made pieces of half the distance left, one
- * after another, to the piece limit (a line across a sphere's pole). */
+/* A run end where no cubic can be built — q' is not available there (a
+ * pole of S, where Su = 0 and the (u, v) tangent is singular: the
+ * sphere's collapsed edge) or every cubic reaching it is invalid (a fold
+ * end of the orthogonal projection, where q' is finite but grows without
+ * bound) — is approached by cubics until the rest of the run is this
+ * fraction of the step that first reached it; the rest goes to the
+ * straight march. Halving alone never got there: every cubic reaching the
+ * end was invalid, every halved one was accepted, and the march made
+ * pieces of half the distance left, one after another, to the piece limit
+ * (a line across a sphere's pole), or down to 5e-9 before a fold, where
+ * the cubics failed verification and the corrector its step (the
+ * parabolic cylinder of test_ortho_events: 7 branches with FAILED ends,
+ * against 3 whole ones with straight pieces). */
 #define PC_CUBIC_END_APPROACH (1.0 / 64.0)
 
 /* 1 when the directions a and b are within the angle whose cosine is
@@ -199,10 +205,13 @@ projcurve_status pc_refine_march_cubic(pc_refiner *r, const pc_rvertex *a, const
         const cubic_verdict v =
             patch != NULL ? try_cubic(r, &m, patch, &cand, &ratio_d, &end_dir, &no_end_tangent)
                           : CUBIC_INVALID;
-        const int at_end_without_tangent = no_end_tangent && cand.t == b->t;
-        if (at_end_without_tangent && end_step == 0.0)
+        /* an end without q', or with one no cubic can use (a fold end of
+         * the orthogonal projection, where q' is finite but huge: every
+         * cubic reaching it fails the reach test) */
+        const int at_unusable_end = cand.t == b->t && (no_end_tangent || v == CUBIC_INVALID);
+        if (at_unusable_end && end_step == 0.0)
             end_step = hh;
-        if (at_end_without_tangent && hh <= PC_CUBIC_END_APPROACH * end_step) {
+        if (at_unusable_end && hh <= PC_CUBIC_END_APPROACH * end_step) {
             const projcurve_status st = straight_rest(r, &m, b, out);
             if (st != PROJCURVE_OK)
                 return st;

@@ -104,12 +104,14 @@ static projcurve_curve *make_line(const scenario *sc)
 }
 
 static projcurve_result *project(projcurve_context *ctx, const scenario *sc,
-                                 const projcurve_surface *s, const projcurve_curve *c, int join)
+                                 const projcurve_surface *s, const projcurve_curve *c, int join,
+                                 int degree)
 {
     pc_params p;
     pc_budget budget;
     CHECK_OK(pc_projection_params(ctx, NULL, s->size, &budget, &p));
     p.join_seams = join;
+    p.pcurve_degree = degree; /* 1 or 3: every scenario runs in both */
     projcurve_result *r = NULL;
     const double n = norm3(sc->dir);
     const pc_vec3 d = {sc->dir[0] / (n > 0 ? n : 1), sc->dir[1] / (n > 0 ? n : 1),
@@ -219,7 +221,7 @@ static void check_compact(projcurve_context *ctx, const scenario *sc, const proj
     projcurve_curve_destroy(c3);
 }
 
-static void run(const scenario *sc)
+static void run(const scenario *sc, int degree)
 {
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
@@ -228,8 +230,8 @@ static void run(const scenario *sc)
     CHECK(s != NULL && c != NULL);
     if (s == NULL || c == NULL)
         return;
-    projcurve_result *joined = project(ctx, sc, s, c, 1);
-    projcurve_result *split = project(ctx, sc, s, c, 0);
+    projcurve_result *joined = project(ctx, sc, s, c, 1, degree);
+    projcurve_result *split = project(ctx, sc, s, c, 0, degree);
     CHECK(joined != NULL && split != NULL);
     if (joined == NULL || split == NULL)
         return;
@@ -389,11 +391,13 @@ int main(void)
     const scenario tor_dir = {"torus, directional", TORUS, {4, -1, -0.3}, {4, 1, 0.2},
                               0, {-1, 0, 0}, 4, 4, 2, {{0.5, -1, 0}, {0.6, 0, -1}},
                               SEAM_JUMP_TOL};
-    run(&cyl_dir);
-    run(&sph_dir);
-    run(&tor_dir);
-    run(&cyl_ortho);
-    run(&sph_ortho);
-    run(&tor_ortho);
+    for (int degree = 1; degree <= 3; degree += 2) {
+        run(&cyl_dir, degree);
+        run(&sph_dir, degree);
+        run(&tor_dir, degree);
+        run(&cyl_ortho, degree);
+        run(&sph_ortho, degree);
+        run(&tor_ortho, degree);
+    }
     return pc_test_finish("test_seam_join");
 }
