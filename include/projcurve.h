@@ -217,21 +217,23 @@ typedef enum projcurve_option {
     PROJCURVE_OPT_JUMP_DETECTION = 11,
     /* integer: degree of each composed piece's pcurve (u, v)(s), 1 or 3
      * (2 is rejected with OUT_OF_RANGE; projcurve_option_info gives the
-     * bounds [1, 3]). 1 (default): straight segments in (u, v), composed
-     * pieces of degree p + q ([SY13] s4). 3: the cubic Hermite through
-     * two exact points of the projection with the exact tangents there,
+     * bounds [1, 3]). 1: straight segments in (u, v), composed pieces of
+     * degree p + q ([SY13] s4). 3 (default): the cubic Hermite through two
+     * exact points of the projection with the exact tangents there,
      * composed pieces of degree 3 (p + q); far fewer pieces at tight eps_D
      * (error O(h^4) instead of O(h^2)) and joints G1 wherever S is smooth.
-     * Surfaces with 3 (p + q) > 2 PROJCURVE_MAX_DEGREE use degree 1; a piece
-     * whose cubic would leave its Bezier patch (or where q' is not
-     * available, e.g. at a fold) is a straight segment: read each piece's
-     * degree with projcurve_result_piece_pcurve. The default stays 1:
-     * degree 3 took 0.5-0.9 of the time on 11 of the benchmark's 12
-     * projecting cases at their eps_D (1.13 on the last) and 0.04-0.19 at
-     * 1e-4 of it, but over the real-data sweep's 5,585 calls
-     * (tests/realdata) it ran 27 past 2 s of CPU, all directional onto
-     * one model (linkrods.step), where degree 1 takes at most ~0.3 s a
-     * call (docs/refine_compose.md, "Cubic pcurves"). */
+     * The rule: with 3, a surface of degrees p x q gets cubic pcurves where
+     * 3 (p + q) <= PROJCURVE_MAX_DEGREE (p + q <= 10, e.g. bicubic and
+     * biquintic surfaces) and straight ones (degree 1) above, where each
+     * cubic piece costs too much (degree 6 x 8, composed degree 42: calls
+     * of the real-data sweep (tests/realdata) ran past 2 s of CPU where
+     * straight pieces take 0.3 s); also a piece whose cubic would leave its
+     * Bezier patch, or where q' is not available or not usable (a fold, a
+     * pole of S), is a straight segment: read each piece's degree with
+     * projcurve_result_piece_pcurve. Cubic pcurves took 0.5-0.9 of the
+     * time of straight ones on 11 of the benchmark's 12 projecting cases
+     * at their eps_D (1.13 on the last) and 0.04-0.19 at 1e-4 of it
+     * (docs/refine_compose.md, "Cubic pcurves"). */
     PROJCURVE_OPT_PCURVE_DEGREE = 12,
     /* integer: which foot points projcurve_project_orthogonal returns,
      * PROJCURVE_FOOT_POINTS_MINIMA or PROJCURVE_FOOT_POINTS_ALL.

@@ -375,9 +375,14 @@ static void refiner_init(pc_refiner *r, projcurve_context *ctx, const pc_project
     r->min_move = PC_REFINE_MIN_MOVE_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
     r->snap = PC_REFINE_SNAP_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
     r->snap_far = PC_REFINE_SNAP_FAR_REL * hypot(dom[1] - dom[0], dom[3] - dom[2]);
-    /* cubic pcurves only where the composed degree fits (projcurve.h) */
+    /* cubic pcurves only where the composed degree 3 (p + q) is at most
+     * PROJCURVE_MAX_DEGREE (projcurve.h): such pieces are as cheap as a few
+     * straight ones and a branch of them joins into one NURBS curve; on
+     * surfaces of degree 6 x 8 (composed degree 42) each cubic candidate
+     * cost so much more that real-data calls ran past 2 s where straight
+     * pieces take 0.3 s */
     const int sum = s->nurbs.deg_u + s->nurbs.deg_v;
-    r->pcurve_degree = o->pcurve_degree == 3 && 3 * sum <= 2 * PROJCURVE_MAX_DEGREE ? 3 : 1;
+    r->pcurve_degree = o->pcurve_degree == 3 && 3 * sum <= PROJCURVE_MAX_DEGREE ? 3 : 1;
     r->budget = o->budget;
 }
 

@@ -155,10 +155,16 @@ static void test_piece_limit(const projcurve_surface *s, const projcurve_curve *
     static const double down[3] = {0.0, 0.0, -1.0};
     projcurve_context *ctx = NULL;
     CHECK_OK(projcurve_context_create(PROJCURVE_VERSION_MAJOR, &ctx));
+    /* straight pieces: the curve needs more than the default piece limit
+     * of them (of cubic ones, the default, it needs 37,615) */
+    projcurve_options *o = NULL;
+    CHECK_OK(projcurve_options_create(ctx, &o));
+    CHECK_OK(projcurve_options_set_int(ctx, o, PROJCURVE_OPT_PCURVE_DEGREE, 1));
     projcurve_result *r = NULL;
     const double before = peak_rss_mib();
-    CHECK_STATUS(projcurve_project_directional(ctx, s, c, down, NULL, &r),
+    CHECK_STATUS(projcurve_project_directional(ctx, s, c, down, o, &r),
                  PROJCURVE_ERR_LIMIT_REACHED);
+    projcurve_options_destroy(o);
     const double growth = peak_rss_mib() - before;
     printf("piece limit: %s; peak RSS grew by %.1f MiB\n", projcurve_context_message(ctx), growth);
     CHECK(growth < MEMORY_FACTOR * MEMORY_LIMIT_MIB);

@@ -377,8 +377,9 @@ void check_vertical_result(pc::context &ctx, const pc::result &r)
         const std::array<double, 3> p0 = line_at(piece.range[0]);
         CHECK(dist3(first, saddle(p0[0], p0[1])) <= corrector_tol);
         const pc::piece_pcurve q = r.pcurve(ctx, 0, k);
-        CHECK(q.degree == 1 && q.uv_ctrl.size() == 4 && near(q.uv_ctrl[0], piece.uv_range[0], 0) &&
-              near(q.uv_ctrl[3], piece.uv_range[3], 0));
+        // cubic pcurves by default: 4 (u, v) control points from the piece's first to last
+        CHECK(q.degree == 3 && q.uv_ctrl.size() == 8 && near(q.uv_ctrl[0], piece.uv_range[0], 0) &&
+              near(q.uv_ctrl[7], piece.uv_range[3], 0));
     }
     CHECK_THROWS(r.piece(ctx, 0, b.n_pieces), PROJCURVE_ERR_INDEX, nullptr);
 

@@ -98,13 +98,18 @@ def test_directional_result(pc, bilinear, segment):
     pieces = b.pieces
     assert len(pieces) == b.n_pieces >= 1
     for piece in pieces:
-        assert piece.degree == 2 and piece.pcurve_degree == 1 and piece.weights == [1.0] * 3
-        (u0, v0), (u1, v1) = piece.pcurve_control_points
-        assert close(piece.uv_range, (u0, v0, u1, v1), 1e-15)
+        # cubic pcurves by default (3 (p + q) = 6 on a bilinear patch)
+        d, n = piece.pcurve_degree, piece.degree
+        assert d == 3 and n == 2 * d and piece.weights == [1.0] * (n + 1)
+        uv_ctrl = piece.pcurve_control_points
+        assert len(uv_ctrl) == d + 1
+        assert close(piece.uv_range, uv_ctrl[0] + uv_ctrl[-1], 1e-15)
         for s in (0.0, 0.3, 1.0):  # the Bezier piece is S o pcurve
-            bez = [sum(math.comb(2, i) * s ** i * (1 - s) ** (2 - i) * piece.control_points[i][k]
-                       for i in range(3)) for k in range(3)]
-            assert close(bez, bilinear.point(u0 + (u1 - u0) * s, v0 + (v1 - v0) * s), 1e-13)
+            uv = [sum(math.comb(d, i) * s ** i * (1 - s) ** (d - i) * uv_ctrl[i][k]
+                      for i in range(d + 1)) for k in range(2)]
+            bez = [sum(math.comb(n, i) * s ** i * (1 - s) ** (n - i) * piece.control_points[i][k]
+                       for i in range(n + 1)) for k in range(3)]
+            assert close(bez, bilinear.point(*uv), 1e-13)
     joined = b.curve()
     assert joined.domain == b.t_range
     for curve in (joined, b.compact_curve()):

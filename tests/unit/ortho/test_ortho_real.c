@@ -12,6 +12,7 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "on_surface.h"
 
 #define GRID 100          /* brute-force grid per direction */
 #define T_SAMPLES 25      /* values of t checked against the brute force */
@@ -73,41 +74,59 @@ static double dist3(const double *a, const double *b)
                 (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-/* Distance from q to the chords S(v_i) S(v_i+1) of a branch's vertices
- * whose t-range comes within T_WINDOW of t (the exact foot point of P(t)
- * lies on the branch, not necessarily at the vertex-interpolated t);
- * INFINITY when no segment is near t. */
+/* Distance from q to the segment x y. */
+static double segment_distance(const double x[3], const double y[3], const double q[3])
+{
+    double ab[3], aq[3], l2 = 0.0, w = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        ab[k] = y[k] - x[k];
+        aq[k] = q[k] - x[k];
+        l2 += ab[k] * ab[k];
+        w += ab[k] * aq[k];
+    }
+    w = l2 > 0.0 ? fmin(1.0, fmax(0.0, w / l2)) : 0.0;
+    const double c[3] = {x[0] + w * ab[0], x[1] + w * ab[1], x[2] + w * ab[2]};
+    return dist3(c, q);
+}
+
+/* Distance from q to the composed pieces of branch b whose t-range comes
+ * within T_WINDOW of t (the exact foot point of P(t) lies on the branch,
+ * not necessarily at the piece's matching t), each sampled at
+ * PIECE_SAMPLES + 1 points joined by chords (a piece's chords are far
+ * within MATCH_REL of it: pieces are short against the curvature radii
+ * here, and straight or cubic pcurves alike); INFINITY when no piece is
+ * near t. */
 #define T_WINDOW 0.02
-static double branch_distance(const projcurve_surface *s, const double *pts, size_t n, double t,
-                              const double q[3])
+#define PIECE_SAMPLES 32
+static double branch_distance(const projcurve_result *r, size_t b, double t, const double q[3])
 {
     double best = INFINITY;
-    for (size_t i = 0; i + 1 < n; ++i) {
-        const double *a = pts + 3 * i, *b = a + 3;
-        if (b[0] < t - T_WINDOW || a[0] > t + T_WINDOW)
+    size_t n_pieces = 0;
+    projcurve_result_branch_info(NULL, r, b, NULL, NULL, NULL, NULL, &n_pieces);
+    for (size_t k = 0; k < n_pieces; ++k) {
+        int degree = 0;
+        double ctrl[3 * PROJCURVE_MAX_PIECE_POINTS], w[PROJCURVE_MAX_PIECE_POINTS], range[2];
+        CHECK_OK(projcurve_result_piece(NULL, r, b, k, &degree, ctrl, w, range, NULL));
+        if (fmax(range[0], range[1]) < t - T_WINDOW || fmin(range[0], range[1]) > t + T_WINDOW)
             continue;
-        double x[3], y[3], ab[3], aq[3], l2 = 0.0, w = 0.0;
-        point_at(s, a[1], a[2], x);
-        point_at(s, b[1], b[2], y);
-        for (int k = 0; k < 3; ++k) {
-            ab[k] = y[k] - x[k];
-            aq[k] = q[k] - x[k];
-            l2 += ab[k] * ab[k];
-            w += ab[k] * aq[k];
+        double x[3], y[3];
+        pc_test_piece_point(degree, ctrl, w, 0.0, x);
+        for (int i = 1; i <= PIECE_SAMPLES; ++i) {
+            pc_test_piece_point(degree, ctrl, w, (double)i / PIECE_SAMPLES, y);
+            best = fmin(best, segment_distance(x, y, q));
+            x[0] = y[0];
+            x[1] = y[1];
+            x[2] = y[2];
         }
-        w = l2 > 0.0 ? fmin(1.0, fmax(0.0, w / l2)) : 0.0;
-        const double c[3] = {x[0] + w * ab[0], x[1] + w * ab[1], x[2] + w * ab[2]};
-        best = fmin(best, dist3(c, q));
     }
     return best;
 }
 
 /* Every interior grid-local minimum of |S - P(t)|, polished by Newton,
- * must be within MATCH_REL of the model size of a branch near t (the
- * chords between vertices are within ~eps_D of the branch). */
+ * must be within MATCH_REL of the model size of a branch near t (its
+ * composed pieces). */
 static int missed_minima(const projcurve_surface *s, const projcurve_curve *c,
-                         const projcurve_result *r, double **pts, const size_t *n, double t,
-                         double size)
+                         const projcurve_result *r, double t, double size)
 {
     static double d[GRID + 1][GRID + 1];
     double dom[4], p[3];
@@ -145,7 +164,7 @@ static int missed_minima(const projcurve_surface *s, const projcurve_curve *c,
             double q[3], best = INFINITY;
             point_at(s, uv[0], uv[1], q);
             for (size_t b = 0; b < projcurve_result_branch_count(r); ++b)
-                best = fmin(best, branch_distance(s, pts[b], n[b], t, q));
+                best = fmin(best, branch_distance(r, b, t, q));
             if (best > MATCH_REL * size) {
                 printf("  t = %.6f: foot point (%.6f, %.6f) at distance %.3g from every branch\n", t,
                        uv[0], uv[1], best);
@@ -209,7 +228,7 @@ static void run(const char *file)
     }
     int missed = 0;
     for (int i = 0; i < T_SAMPLES; ++i)
-        missed += missed_minima(s, c, r, pts, n, (i + 0.5) / T_SAMPLES, size);
+        missed += missed_minima(s, c, r, (i + 0.5) / T_SAMPLES, size);
     printf("%s: %zu branches, %zu pieces, worst foot residual beyond its rounding floor %.1e (size %.3g), %d minima missed\n",
            file, nb, pieces_total, worst, size, missed);
     CHECK(worst <= RESIDUAL_REL * size);

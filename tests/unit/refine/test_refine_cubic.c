@@ -240,28 +240,41 @@ static void test_shared_cases(void)
     fclose(f);
 }
 
-/* 3 (p + q) > 2 PROJCURVE_MAX_DEGREE: straight pcurves, degree p + q. */
-static void test_degree_fallback(void)
+/* Cubic pcurves where 3 (p + q) <= PROJCURVE_MAX_DEGREE (composed degree
+ * 3 (p + q)), straight ones above (degree p + q): a p x q plane. */
+static void check_degree_rule(int p, int q)
 {
-    pc_shape_surface plane = pc_shape_plane(12, 10, 1, 1);
+    pc_shape_surface plane = pc_shape_plane(p, q, 1, 1);
     projcurve_surface *s = pc_shape_surface_create(&plane);
     pc_shape_surface_free(&plane);
     CHECK(s != NULL);
     if (s == NULL)
         return;
     const double line[6] = {0.1, 0.2, 5.0, 0.8, 0.7, 5.0};
-    projection_case c = {"plane 12x10", s, shape_bspline_curve(1, 2, line), 0, {0, 0, -1}};
+    projection_case c = {"plane p x q", s, shape_bspline_curve(1, 2, line), 0, {0, 0, -1}};
     projcurve_result *r = project(&c, 1e-4, 1.0, 3);
     CHECK(r != NULL && r->n_branches == 1);
     if (r != NULL && r->n_branches == 1) {
+        const int cubic_ok = 3 * (p + q) <= PROJCURVE_MAX_DEGREE;
         size_t cubic = 0, straight = 0;
-        check_pcurves(r, s, 1, &cubic, &straight);
-        CHECK(cubic == 0 && straight > 0);
-        CHECK(r->branches[0].pieces[0].degree == 22);
+        check_pcurves(r, s, cubic_ok ? 3 : 1, &cubic, &straight);
+        if (cubic_ok)
+            CHECK(cubic > 0 && straight == 0);
+        else
+            CHECK(cubic == 0 && straight > 0);
+        CHECK(r->branches[0].pieces[0].degree == (cubic_ok ? 3 : 1) * (p + q));
     }
     projcurve_result_destroy(r);
     projcurve_curve_destroy((projcurve_curve *)(void *)c.curve);
     projcurve_surface_destroy(s);
+}
+
+static void test_degree_fallback(void)
+{
+    check_degree_rule(5, 5);   /* composed degree 30: cubic */
+    check_degree_rule(6, 5);   /* 33: straight */
+    check_degree_rule(6, 8);   /* 42, the linkrods.step surfaces: straight */
+    check_degree_rule(12, 10); /* 66: straight */
 }
 
 /* The sphere |x|^2 = 100 as an implicit surface. */

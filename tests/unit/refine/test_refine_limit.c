@@ -163,7 +163,7 @@ static void check_partial(const limit_case *c, const projcurve_result *full,
     CHECK(cut < nb); /* some branch says where the limit stopped it */
     CHECK(total <= max_pieces && total > 0);
     CHECK(stat == (double)total);
-    pc_on_surface_check(c->name, r, c->surface, 1);
+    pc_on_surface_check(c->name, r, c->surface, 3); /* the default degree: 3 */
 
     pc_oracle_dir d;
     pc_projector proj;

@@ -133,6 +133,20 @@ static size_t check_traced(const manifest_row *row, const projcurve_surface *s,
     return nb;
 }
 
+/* The pcurve of a piece (Bezier of degree 1 or 3 in (u, v)) at s, by de
+ * Casteljau. */
+static void pcurve_point(int degree, const double *ctrl, double s, double uv[2])
+{
+    double w[2 * PROJCURVE_MAX_PCURVE_POINTS];
+    for (int k = 0; k < 2 * (degree + 1); ++k)
+        w[k] = ctrl[k];
+    for (int level = degree; level > 0; --level)
+        for (int k = 0; k < 2 * level; ++k)
+            w[k] += s * (w[k + 2] - w[k]);
+    uv[0] = w[0];
+    uv[1] = w[1];
+}
+
 /* Composed with the manifest's tolerances: each piece is S composed with
  * the straight (u, v) segment of its range, so the joined curve at
  * t0 + s (t1 - t0) equals S at the (u, v) interpolated with s. */
@@ -158,14 +172,16 @@ static void check_composed(const manifest_row *row, const projcurve_surface *s,
             continue; /* a degree above PROJCURVE_MAX_DEGREE cannot be joined */
         ++joined_count;
         for (size_t k = 0; k < n_pieces; ++k) {
-            double range[2], uv[4];
-            projcurve_result_piece(NULL, r, i, k, NULL, NULL, NULL, range, uv);
+            double range[2], ctrl[2 * PROJCURVE_MAX_PCURVE_POINTS];
+            int degree = 0;
+            projcurve_result_piece(NULL, r, i, k, NULL, NULL, NULL, range, NULL);
+            CHECK_OK(projcurve_result_piece_pcurve(NULL, r, i, k, &degree, ctrl));
             for (int j = 0; j <= 4; ++j) {
                 const double f = j / 4.0;
-                double x[3], y[3];
+                double x[3], y[3], uv[2];
+                pcurve_point(degree, ctrl, f, uv);
                 projcurve_curve_eval(NULL, joined, range[0] + f * (range[1] - range[0]), 0, x);
-                projcurve_surface_eval(NULL, s, uv[0] + f * (uv[2] - uv[0]),
-                                       uv[1] + f * (uv[3] - uv[1]), 0, y);
+                projcurve_surface_eval(NULL, s, uv[0], uv[1], 0, y);
                 worst = fmax(worst, fmax(fabs(x[0] - y[0]), fmax(fabs(x[1] - y[1]), fabs(x[2] - y[2]))));
             }
         }
