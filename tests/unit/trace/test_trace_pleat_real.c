@@ -3,8 +3,8 @@
  * A pleated surface seen along Dir: linkrods.step surface 11 is a fillet
  * whose parametrisation folds in v inside its last span (Sv vanishes and
  * reverses at v ~ -0.0270, -0.0215 and -0.0124 for u ~ -1.28), so S
- * doubles back on itself in a pleat of three layers about 1e-4 apart (two
- * eps_D). The circles curves 78 and 79 (z = 1.34993) projected along
+ * doubles back on itself in a pleat of three layers 1e-5 to 1e-4 apart (eps_D
+ * is 7.4e-5). The circles curves 78 and 79 (z = 1.34993) projected along
  * (0, 0, -1) meet it for t in [0.6, 1.95]; for t in [1.659, 1.739] each ray
  * meets all three layers, born and gone at the cusps of the
  * parametrisation, where the normalised det J jumps from about -0.33 to
