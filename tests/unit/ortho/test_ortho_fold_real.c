@@ -183,8 +183,8 @@ int main(void)
     size_t su = 1, sv = 1;
     projcurve_surface_info(NULL, b.s, NULL, NULL, NULL, NULL, &su, &sv, NULL);
     /* The sweep's mesh: 8 cells per span, 48 to 256 per side. */
-    const int cu = su * 8 < 48 ? 48 : (su * 8 > 256 ? 256 : (int)su * 8);
-    const int cv = sv * 8 < 48 ? 48 : (sv * 8 > 256 ? 256 : (int)sv * 8);
+    const int cu = pc_sweep_mesh_cells(su);
+    const int cv = pc_sweep_mesh_cells(sv);
     pc_oracle_mesh mesh;
     CHECK(pc_oracle_mesh_build(&mesh, pc_sweep_surface_eval, (void *)b.s, b.dom, cu, cv));
     const pc_sweep_input in = {b.s, b.c, 1, {0, 0, 0}, &mesh, eps_d, sqrt(d2(box, box + 3)),

@@ -91,8 +91,8 @@ int main(void)
     size_t su = 1, sv = 1;
     projcurve_surface_info(NULL, s, NULL, NULL, NULL, NULL, &su, &sv, NULL);
     /* the sweep's mesh: 8 cells per span, 48 to 256 per side */
-    const int cu = su * 8 < 48 ? 48 : (su * 8 > 256 ? 256 : (int)su * 8);
-    const int cv = sv * 8 < 48 ? 48 : (sv * 8 > 256 ? 256 : (int)sv * 8);
+    const int cu = pc_sweep_mesh_cells(su);
+    const int cv = pc_sweep_mesh_cells(sv);
     pc_oracle_mesh mesh;
     CHECK(pc_oracle_mesh_build(&mesh, pc_sweep_surface_eval, (void *)s, dom, cu, cv));
     double diag = 0.0;
