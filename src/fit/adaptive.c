@@ -49,6 +49,7 @@ typedef struct fit_state {
     pc_fit_samples cache; /* check points, in blocks (never sorted) */
     check_block *blocks;
     size_t n_blocks, cap_blocks;
+    pc_lsq_rows rows; /* the basis at the fitted samples, for the solve and the error pass */
 } fit_state;
 
 static pc_lsq_space space_of(const fit_state *f)
@@ -62,11 +63,8 @@ static pc_lsq_space space_of(const fit_state *f)
  * (du, dv) its offset from q(t): the error of that is of the order of
  * |S''| |dq|^2, far below eps_D where the fit is near, and knots are only
  * placed by it (the check, which accepts, evaluates S). */
-static double distance(fit_state *f, const pc_fit_sample *x, size_t *hint, int exact)
+static double distance_of(const fit_state *f, const pc_fit_sample *x, const double c[3], int exact)
 {
-    const pc_lsq_space sp = space_of(f);
-    double c[3];
-    pc_lsq_eval(&sp, f->goal->dim, f->poles, x->t, hint, c);
     double y[3] = {c[0], c[1], c[2]};
     if (f->goal->dim == 2 && exact) {
         pc_fit_surface_point(f->fb, c, y);
@@ -77,6 +75,14 @@ static double distance(fit_state *f, const pc_fit_sample *x, size_t *hint, int e
     }
     const double d[3] = {y[0] - x->x[0], y[1] - x->x[1], y[2] - x->x[2]};
     return sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+static double distance(fit_state *f, const pc_fit_sample *x, size_t *hint, int exact)
+{
+    const pc_lsq_space sp = space_of(f);
+    double c[3];
+    pc_lsq_eval(&sp, f->goal->dim, f->poles, x->t, hint, c);
+    return distance_of(f, x, c, exact);
 }
 
 /* The span (index into brk) holding t. */
@@ -209,9 +215,17 @@ static projcurve_status solve(fit_state *f)
     const pc_lsq_space sp = space_of(f);
     const pc_fit_sample *d0 = f->data->items;
     const size_t stride = sample_stride(f);
-    projcurve_status st = pc_lsq_fit(NULL, &sp, f->goal->dim, &d0->t, sample_coords(f, d0),
-                                     PC_FIT_SAMPLE_STRIDE * stride, f->data->count / stride, idx,
-                                     val, n_fixed, f->poles);
+    /* the rows of every sample the error pass measures (one past the
+     * fitted ones when the stride does not divide the count) */
+    projcurve_status st =
+        pc_lsq_rows_fill(f->ctx, &sp, &d0->t, PC_FIT_SAMPLE_STRIDE * stride,
+                         (f->data->count + stride - 1) / stride, &f->rows);
+    if (st == PROJCURVE_OK) /* SINGULAR is the fit's to handle, not the caller's message */
+        st = pc_lsq_fit_rows(NULL, &sp, f->goal->dim, &f->rows, sample_coords(f, d0),
+                             PC_FIT_SAMPLE_STRIDE * stride, f->data->count / stride, idx, val,
+                             n_fixed, f->poles);
+    if (st == PROJCURVE_ERR_NO_MEMORY)
+        pc_fail(f->ctx, st, "out of memory for a fit of %zu poles", f->n_poles);
     free(idx);
     free(val);
     if (st == PROJCURVE_OK && f->goal->dim == 2) { /* q stays in the domain (convex hull) */
@@ -231,11 +245,12 @@ static double sample_errors(fit_state *f)
     for (size_t j = 0; j + 1 < f->n_brk; ++j)
         f->err[j] = 0.0;
     double worst = 0.0;
-    size_t hint = 0;
     const size_t stride = sample_stride(f);
-    for (size_t i = 0; i < f->data->count; i += stride) {
+    for (size_t i = 0, k = 0; i < f->data->count; i += stride, ++k) {
         const pc_fit_sample *x = &f->data->items[i];
-        const double d = distance(f, x, &hint, 0);
+        double c[3];
+        pc_lsq_eval_row(&f->rows, k, f->goal->dim, f->poles, c);
+        const double d = distance_of(f, x, c, 0);
         const size_t j = span_of(f, x->t);
         f->err[j] = fmax(f->err[j], d);
         worst = fmax(worst, d);
@@ -432,7 +447,7 @@ projcurve_status pc_fit_adaptive(projcurve_context *ctx, pc_fit_branch *fb,
 {
     *ok = 0;
     fit_state f = {ctx, fb, goal, weights, data, NULL, n_knots, 0, NULL, NULL, 0, NULL,
-                   {NULL, 0, 0, 0, 0}, NULL, 0, 0};
+                   {NULL, 0, 0, 0, 0}, NULL, 0, 0, {0, 0, NULL, NULL, 0, 0}};
     f.knots = malloc(n_knots * sizeof *f.knots);
     if (f.knots == NULL)
         return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit");
@@ -451,7 +466,10 @@ projcurve_status pc_fit_adaptive(projcurve_context *ctx, pc_fit_branch *fb,
         st = fill_spans(&f, &going);
         if (st != PROJCURVE_OK || !going)
             break;
-        if (solve(&f) != PROJCURVE_OK)
+        const projcurve_status solved = solve(&f);
+        if (solved == PROJCURVE_ERR_NO_MEMORY) /* a singular system only fails the fit */
+            st = solved;
+        if (solved != PROJCURVE_OK)
             break;
         if (sample_errors(&f) > goal->target) {
             if (!goal->refine)
@@ -502,6 +520,7 @@ projcurve_status pc_fit_adaptive(projcurve_context *ctx, pc_fit_branch *fb,
     pc_fit_samples_sort(data);
     free(f.blocks);
     pc_fit_samples_free(&f.cache);
+    pc_lsq_rows_free(&f.rows);
     return st;
 }
 

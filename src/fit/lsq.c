@@ -2,6 +2,7 @@
 #include "fit/lsq.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -120,6 +121,44 @@ static void hold_pole(double *a, double *rhs, size_t n, size_t w, int dim, size_
     memcpy(rhs + i * (size_t)dim, value, (size_t)dim * sizeof *rhs);
 }
 
+/* Adds one sample's terms to the normal equations: the basis values r of
+ * poles first .. first + w, the point xi (d coordinates). */
+static void accumulate(double *a, double *rhs, size_t w, size_t d, size_t first, const double *r,
+                       const double *xi)
+{
+    for (size_t p = 0; p <= w; ++p) {
+        for (size_t q = p; q <= w; ++q)
+            BAND(a, w, first + p, first + q) += r[p] * r[q];
+        for (size_t c = 0; c < d; ++c)
+            rhs[(first + p) * d + c] += r[p] * xi[c];
+    }
+}
+
+/* Adds the ridge, holds the fixed poles and solves the normal equations
+ * (band a, right-hand sides in poles) in place. */
+static projcurve_status solve_normal(projcurve_context *ctx, double *a, size_t n, size_t w,
+                                     int dim, const size_t *fixed_index,
+                                     const double *fixed_value, size_t n_fixed, double *poles)
+{
+    double diag = 0.0;
+    for (size_t i = 0; i < n; ++i)
+        diag = fmax(diag, BAND(a, w, i, i));
+    const double ridge = PC_LSQ_RIDGE * (diag > 0.0 ? diag : 1.0);
+    for (size_t i = 0; i + 1 < n; ++i) { /* ridge * |P_(i+1) - P_i|^2 */
+        BAND(a, w, i, i) += ridge;
+        BAND(a, w, i + 1, i + 1) += ridge;
+        BAND(a, w, i, i + 1) -= ridge;
+    }
+    for (size_t k = 0; k < n_fixed; ++k)
+        hold_pole(a, poles, n, w, dim, fixed_index[k], fixed_value + k * (size_t)dim);
+    if (!band_cholesky(a, n, w))
+        return pc_fail(ctx, PROJCURVE_ERR_SINGULAR,
+                       "the samples do not determine a fit of %zu poles", n);
+    for (size_t c = 0; c < (size_t)dim; ++c)
+        band_solve(a, n, w, poles + c, (size_t)dim);
+    return PROJCURVE_OK;
+}
+
 projcurve_status pc_lsq_fit(projcurve_context *ctx, const pc_lsq_space *space, int dim,
                             const double *t, const double *x, size_t stride, size_t n_data,
                             const size_t *fixed_index, const double *fixed_value,
@@ -134,30 +173,79 @@ projcurve_status pc_lsq_fit(projcurve_context *ctx, const pc_lsq_space *space, i
     for (size_t i = 0; i < n_data; ++i) {
         double r[PC_MAX_ORDER];
         const size_t first = basis_at(space, t[i * stride], &hint, r);
-        for (size_t p = 0; p <= w; ++p) {
-            for (size_t q = p; q <= w; ++q)
-                BAND(a, w, first + p, first + q) += r[p] * r[q];
-            for (size_t c = 0; c < d; ++c)
-                poles[(first + p) * d + c] += r[p] * x[i * stride + c];
-        }
+        accumulate(a, poles, w, d, first, r, x + i * stride);
     }
-    double diag = 0.0;
-    for (size_t i = 0; i < n; ++i)
-        diag = fmax(diag, BAND(a, w, i, i));
-    const double ridge = PC_LSQ_RIDGE * (diag > 0.0 ? diag : 1.0);
-    for (size_t i = 0; i + 1 < n; ++i) { /* ridge * |P_(i+1) - P_i|^2 */
-        BAND(a, w, i, i) += ridge;
-        BAND(a, w, i + 1, i + 1) += ridge;
-        BAND(a, w, i, i + 1) -= ridge;
-    }
-    for (size_t k = 0; k < n_fixed; ++k)
-        hold_pole(a, poles, n, w, dim, fixed_index[k], fixed_value + k * d);
-    const int ok = band_cholesky(a, n, w);
-    if (ok)
-        for (size_t c = 0; c < d; ++c)
-            band_solve(a, n, w, poles + c, d);
+    const projcurve_status st =
+        solve_normal(ctx, a, n, w, dim, fixed_index, fixed_value, n_fixed, poles);
     free(a);
-    return ok ? PROJCURVE_OK
-              : pc_fail(ctx, PROJCURVE_ERR_SINGULAR,
-                        "the samples do not determine a fit of %zu poles", n);
+    return st;
+}
+
+projcurve_status pc_lsq_fit_rows(projcurve_context *ctx, const pc_lsq_space *space, int dim,
+                                 const pc_lsq_rows *rows, const double *x, size_t stride,
+                                 size_t n_data, const size_t *fixed_index,
+                                 const double *fixed_value, size_t n_fixed, double *poles)
+{
+    const size_t n = space->n_poles, w = (size_t)space->degree, d = (size_t)dim;
+    double *a = calloc(n * (w + 1), sizeof *a);
+    if (a == NULL)
+        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for a fit of %zu poles", n);
+    memset(poles, 0, n * d * sizeof *poles);
+    for (size_t i = 0; i < n_data && i < rows->n; ++i)
+        accumulate(a, poles, w, d, rows->first[i], rows->values + i * (w + 1), x + i * stride);
+    const projcurve_status st =
+        solve_normal(ctx, a, n, w, dim, fixed_index, fixed_value, n_fixed, poles);
+    free(a);
+    return st;
+}
+
+projcurve_status pc_lsq_rows_fill(projcurve_context *ctx, const pc_lsq_space *space,
+                                  const double *t, size_t stride, size_t n, pc_lsq_rows *rows)
+{
+    const size_t order = (size_t)space->degree + 1;
+    rows->n = 0;
+    const size_t n_values = n <= SIZE_MAX / sizeof(double) / order ? n * order : SIZE_MAX;
+    if (n > rows->cap_first || n_values > rows->cap_values) {
+        size_t *first = malloc(n * sizeof *first);
+        double *values = n_values < SIZE_MAX ? malloc(n_values * sizeof *values) : NULL;
+        if (first == NULL || values == NULL) {
+            free(first);
+            free(values);
+            return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY,
+                           "out of memory for the basis of %zu fit samples", n);
+        }
+        pc_lsq_rows_free(rows);
+        rows->first = first;
+        rows->values = values;
+        rows->cap_first = n;
+        rows->cap_values = n_values;
+    }
+    rows->degree = space->degree;
+    size_t hint = 0;
+    for (size_t i = 0; i < n; ++i)
+        rows->first[i] = basis_at(space, t[i * stride], &hint, rows->values + i * order);
+    rows->n = n;
+    return PROJCURVE_OK;
+}
+
+void pc_lsq_rows_free(pc_lsq_rows *rows)
+{
+    free(rows->first);
+    free(rows->values);
+    rows->first = NULL;
+    rows->values = NULL;
+    rows->n = rows->cap_first = rows->cap_values = 0;
+}
+
+void pc_lsq_eval_row(const pc_lsq_rows *rows, size_t i, int dim, const double *poles,
+                     double *out)
+{
+    const size_t order = (size_t)rows->degree + 1;
+    const double *r = rows->values + i * order;
+    const double *p = poles + rows->first[i] * (size_t)dim;
+    for (int c = 0; c < dim; ++c)
+        out[c] = 0.0;
+    for (size_t a = 0; a < order; ++a)
+        for (int c = 0; c < dim; ++c)
+            out[c] += r[a] * p[a * (size_t)dim + (size_t)c];
 }

@@ -42,4 +42,34 @@ projcurve_status pc_lsq_fit(projcurve_context *ctx, const pc_lsq_space *space, i
                             const size_t *fixed_index, const double *fixed_value,
                             size_t n_fixed, double *poles);
 
+/* The basis of a spline space at n sample parameters, computed once for a
+ * fit and the error pass after it (the knot span search and the basis
+ * recurrence were half the cost of an adaptive fit when done twice):
+ * sample i touches poles first[i] .. first[i] + degree, with the values
+ * values[i * (degree + 1) ..]. Zero-initialise before the first fill. */
+typedef struct pc_lsq_rows {
+    int degree;
+    size_t n;
+    size_t *first;  /* cap_first entries */
+    double *values; /* cap_values entries */
+    size_t cap_first, cap_values;
+} pc_lsq_rows;
+
+/* Fills rows with the basis of `space` at the n parameters t, each
+ * `stride` doubles after the previous, reusing the arrays of an earlier
+ * fill. Statuses: OK, NO_MEMORY (rows keeps its old arrays, n = 0). */
+projcurve_status pc_lsq_rows_fill(projcurve_context *ctx, const pc_lsq_space *space,
+                                  const double *t, size_t stride, size_t n, pc_lsq_rows *rows);
+void pc_lsq_rows_free(pc_lsq_rows *rows);
+
+/* Value of the spline at row i's parameter, as pc_lsq_eval there. */
+void pc_lsq_eval_row(const pc_lsq_rows *rows, size_t i, int dim, const double *poles,
+                     double *out);
+
+/* pc_lsq_fit over the first n_data rows (the samples' points x as there). */
+projcurve_status pc_lsq_fit_rows(projcurve_context *ctx, const pc_lsq_space *space, int dim,
+                                 const pc_lsq_rows *rows, const double *x, size_t stride,
+                                 size_t n_data, const size_t *fixed_index,
+                                 const double *fixed_value, size_t n_fixed, double *poles);
+
 #endif /* PC_FIT_LSQ_H */
