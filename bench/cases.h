@@ -22,7 +22,7 @@ typedef struct pcb_case {
     double tol_dist;             /* eps_D in model units; 0 = left unset (automatic) */
     double tol_angle_deg;        /* eps_T */
     int expected_branches;       /* -1 when not known */
-    int pcurve_degree;           /* PROJCURVE_OPT_PCURVE_DEGREE; 0 = the default (1) */
+    int pcurve_degree;           /* PROJCURVE_OPT_PCURVE_DEGREE; 0 = the default (3) */
     const projcurve_surface *surface;
     const projcurve_curve *curve;
     char error[PCB_CASE_ERROR_MAX]; /* non-empty: the case could not be loaded */

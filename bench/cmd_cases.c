@@ -37,7 +37,7 @@ static const char *const table2_cases[] = {"song_yong_example1", "real_lens_dire
 typedef struct case_row {
     const pcb_case *c;
     pcb_measurement m;
-    pcb_measurement cubic; /* the same with cubic pcurves (PCURVE_DEGREE 3) */
+    pcb_measurement straight; /* the same with straight pcurves (PCURVE_DEGREE 1) */
     pcb_method_pair methods;
     char status[PCB_CASE_ERROR_MAX + 16];
 } case_row;
@@ -78,20 +78,20 @@ static void write_case_json(pcb_json *j, const case_row *r)
     pcb_json_number(j, "deviation", m->deviation.hausdorff);
     pcb_json_number(j, "result_to_exact", m->deviation.result_to_exact);
     pcb_json_number(j, "exact_to_result", m->deviation.exact_to_result);
-    pcb_json_number(j, "cubic_ms", r->cubic.ms);
-    pcb_json_number(j, "cubic_pieces", r->cubic.pieces);
-    pcb_json_number(j, "cubic_control_points", r->cubic.control_points);
-    pcb_json_number(j, "cubic_max_joint_angle_deg", r->cubic.max_joint_deg);
-    pcb_json_number(j, "cubic_deviation", r->cubic.deviation.hausdorff);
+    pcb_json_number(j, "straight_ms", r->straight.ms);
+    pcb_json_number(j, "straight_pieces", r->straight.pieces);
+    pcb_json_number(j, "straight_control_points", r->straight.control_points);
+    pcb_json_number(j, "straight_max_joint_angle_deg", r->straight.max_joint_deg);
+    pcb_json_number(j, "straight_deviation", r->straight.deviation.hausdorff);
     pcb_json_number(j, "compact_poles", m->compact_poles);
     pcb_json_number(j, "compact_degree", m->compact_degree);
     pcb_json_number(j, "compact_deviation", m->compact_deviation.hausdorff);
     pcb_json_number(j, "pcurve_poles", m->pcurve_poles);
     pcb_json_number(j, "pcurve_degree", m->pcurve_degree);
     pcb_json_number(j, "fit_ms", m->fit_ms);
-    pcb_json_number(j, "cubic_compact_poles", r->cubic.compact_poles);
-    pcb_json_number(j, "cubic_pcurve_poles", r->cubic.pcurve_poles);
-    pcb_json_number(j, "cubic_fit_ms", r->cubic.fit_ms);
+    pcb_json_number(j, "straight_compact_poles", r->straight.compact_poles);
+    pcb_json_number(j, "straight_pcurve_poles", r->straight.pcurve_poles);
+    pcb_json_number(j, "straight_fit_ms", r->straight.fit_ms);
     pcb_json_object_end(j);
 }
 
@@ -272,31 +272,33 @@ int pcb_cmd_cases(const pcb_args *args)
         print_case(r);
         fflush(stdout);
     }
-    printf("\ncubic pcurves (PCURVE_DEGREE 3) against straight ones, same tolerances\n");
-    printf("%-30s %9s %9s %7s %7s %9s %11s %11s %8s\n", "case", "line_ms", "cubic_ms", "line_pc",
-           "cubic_pc", "joint_deg", "deviation", "eps_D", "line/cub");
+    printf("\nstraight pcurves (PCURVE_DEGREE 1) against the default (cubic) ones, same "
+           "tolerances\n");
+    printf("%-30s %9s %9s %7s %7s %9s %11s %11s %8s\n", "case", "cubic_ms", "line_ms", "cub_pc",
+           "line_pc", "joint_deg", "deviation", "eps_D", "line/cub");
     for (size_t i = 0; i < list.n; ++i) {
         case_row *r = &rows[i];
-        pcb_measurement_clear(&r->cubic);
+        pcb_measurement_clear(&r->straight);
         if (r->c->error[0])
             continue;
-        pcb_case cubic = *r->c;
-        cubic.pcurve_degree = 3;
+        pcb_case straight = *r->c;
+        straight.pcurve_degree = 1;
         char status[PCB_CASE_ERROR_MAX + 16] = "";
-        if (pcb_measure_case(&cubic, &timing, &sampling, 0, &r->cubic, status, sizeof status) !=
-            0) {
-            fprintf(stderr, "cases: cubic %s: %s\n", r->c->name, status);
+        if (pcb_measure_case(&straight, &timing, &sampling, 0, &r->straight, status,
+                             sizeof status) != 0) {
+            fprintf(stderr, "cases: straight %s: %s\n", r->c->name, status);
             rc = 1;
         }
         printf("%-30s %9.3f %9.3f %7.0f %7.0f %9.2f %11.3e %11.3e %8.2f\n", r->c->name, r->m.ms,
-               r->cubic.ms, r->m.pieces, r->cubic.pieces, r->cubic.max_joint_deg,
-               r->cubic.deviation.hausdorff, r->c->tol_dist, r->m.ms / r->cubic.ms);
+               r->straight.ms, r->m.pieces, r->straight.pieces, r->straight.max_joint_deg,
+               r->straight.deviation.hausdorff, r->c->tol_dist, r->straight.ms / r->m.ms);
         fflush(stdout);
     }
     printf("\ncompact results (src/fit/): poles and degree of the 3D curves and pcurves "
-           "(all branches), their deviation, the time the fits add; straight / cubic pieces\n");
+           "(all branches), their deviation, the time the fits add; default (cubic) / "
+           "straight pieces\n");
     printf("%-30s %8s %9s %6s %9s %6s %11s %9s %8s %9s %9s\n", "case", "ctrl", "3d_poles",
-           "3d_deg", "uv_poles", "uv_deg", "deviation", "fit_ms", "fit_%", "cub_3d", "cub_uv");
+           "3d_deg", "uv_poles", "uv_deg", "deviation", "fit_ms", "fit_%", "str_3d", "str_uv");
     for (size_t i = 0; i < list.n; ++i) {
         const case_row *r = &rows[i];
         if (r->c->error[0])
@@ -305,7 +307,7 @@ int pcb_cmd_cases(const pcb_args *args)
         printf("%-30s %8.0f %9.0f %6.0f %9.0f %6.0f %11.3e %9.3f %8.1f %9.0f %9.0f\n",
                r->c->name, m->control_points, m->compact_poles, m->compact_degree,
                m->pcurve_poles, m->pcurve_degree, m->compact_deviation.hausdorff, m->fit_ms,
-               100.0 * m->fit_ms / m->ms, r->cubic.compact_poles, r->cubic.pcurve_poles);
+               100.0 * m->fit_ms / m->ms, r->straight.compact_poles, r->straight.pcurve_poles);
     }
     printf("\nsecond order against RK4, whole projection, same tolerances\n");
     printf("%-30s %10s %10s %8s %9s %9s\n", "case", "second_ms", "rk4_ms", "rk4/2nd", "pts_2nd",

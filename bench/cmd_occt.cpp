@@ -255,7 +255,7 @@ struct row {
     std::string name, mode, status;
     ours_run at_case_tol;   /* the case's eps_D */
     ours_run matched;       /* eps_D = Open CASCADE's measured deviation */
-    ours_run cubic_at_case_tol, cubic_matched; /* the same with cubic pcurves */
+    ours_run straight_at_case_tol, straight_matched; /* the same with straight pcurves */
     /* Ours at eps_D = Open CASCADE's deviation also where ours was the more
      * accurate at the case's eps_D: the compact poles at equal accuracy
      * (not timed). */
@@ -268,9 +268,9 @@ struct row {
     {
         return std::isfinite(matched.ms) ? matched : at_case_tol;
     }
-    const ours_run &cubic_reported() const
+    const ours_run &straight_reported() const
     {
-        return std::isfinite(cubic_matched.ms) ? cubic_matched : cubic_at_case_tol;
+        return std::isfinite(straight_matched.ms) ? straight_matched : straight_at_case_tol;
     }
 };
 
@@ -463,15 +463,15 @@ bool run_case(const pcb_args *args, const pcb_case *c, row &r)
     if (ok && occt_ok && !args->quick && std::isfinite(r.occt_dev) &&
         r.occt_dev < r.at_case_tol.dev)
         ok = run_ours(args, c, std::max(r.occt_dev, floor_tol), ex, &oc, r.matched, ours_status);
-    /* The same two runs with cubic pcurves (PROJCURVE_OPT_PCURVE_DEGREE 3). */
-    pcb_case cubic = *c;
-    cubic.pcurve_degree = 3;
+    /* The same two runs with straight pcurves (PROJCURVE_OPT_PCURVE_DEGREE 1). */
+    pcb_case straight = *c;
+    straight.pcurve_degree = 1;
     if (ok)
-        ok = run_ours(args, &cubic, c->tol_dist, ex, occt_ok ? &oc : nullptr,
-                      r.cubic_at_case_tol, ours_status);
+        ok = run_ours(args, &straight, c->tol_dist, ex, occt_ok ? &oc : nullptr,
+                      r.straight_at_case_tol, ours_status);
     if (ok && occt_ok && !args->quick && std::isfinite(r.occt_dev) &&
-        r.occt_dev < r.cubic_at_case_tol.dev)
-        ok = run_ours(args, &cubic, std::max(r.occt_dev, floor_tol), ex, &oc, r.cubic_matched,
+        r.occt_dev < r.straight_at_case_tol.dev)
+        ok = run_ours(args, &straight, std::max(r.occt_dev, floor_tol), ex, &oc, r.straight_matched,
                       ours_status);
     if (ok && occt_ok && !args->quick && std::isfinite(r.occt_dev)) {
         const pcb_sampling dense = pcb_sampling_for(0);
@@ -514,16 +514,16 @@ void write_json(const pcb_args *args, const std::vector<row> &rows)
         pcb_json_number(&j, "case_tol_occt_ms", r.at_case_tol.occt_ms);
         pcb_json_number(&j, "case_tol_ours_over_occt", r.at_case_tol.ratio);
         pcb_json_number(&j, "case_tol_ours_deviation", r.at_case_tol.dev);
-        const ours_run &cub = r.cubic_reported();
+        const ours_run &line = r.straight_reported();
         pcb_json_number(&j, "ours_poles", rep.poles);
         pcb_json_number(&j, "ours_pcurve_poles_timed", rep.pcurve_poles);
         pcb_json_number(&j, "case_tol_ours_poles", r.at_case_tol.poles);
-        pcb_json_number(&j, "cubic_ours_ms", cub.ms);
-        pcb_json_number(&j, "cubic_occt_ms", cub.occt_ms);
-        pcb_json_number(&j, "cubic_ours_over_occt", cub.ratio);
-        pcb_json_number(&j, "cubic_ours_deviation", cub.dev);
-        pcb_json_number(&j, "cubic_ours_tol_dist", cub.tol);
-        pcb_json_number(&j, "cubic_ours_poles", cub.poles);
+        pcb_json_number(&j, "straight_ours_ms", line.ms);
+        pcb_json_number(&j, "straight_occt_ms", line.occt_ms);
+        pcb_json_number(&j, "straight_ours_over_occt", line.ratio);
+        pcb_json_number(&j, "straight_ours_deviation", line.dev);
+        pcb_json_number(&j, "straight_ours_tol_dist", line.tol);
+        pcb_json_number(&j, "straight_ours_poles", line.poles);
         const ours_run &pol =
             std::isfinite(r.poles_at_occt_dev.tol) ? r.poles_at_occt_dev : r.reported();
         pcb_json_number(&j, "ours_compact_tol_dist", pol.tol);
@@ -601,9 +601,10 @@ extern "C" int pcb_cmd_occt(const pcb_args *args)
                   r.status.empty() ? "ok" : r.status.c_str());
         if (std::isfinite(r.matched.ms))
             print_run(r, "", r.matched, "eps_D = Open CASCADE's deviation");
-        print_run(r, "", r.cubic_at_case_tol, "cubic pcurves");
-        if (std::isfinite(r.cubic_matched.ms))
-            print_run(r, "", r.cubic_matched, "cubic pcurves, eps_D = Open CASCADE's deviation");
+        print_run(r, "", r.straight_at_case_tol, "straight pcurves");
+        if (std::isfinite(r.straight_matched.ms))
+            print_run(r, "", r.straight_matched,
+                      "straight pcurves, eps_D = Open CASCADE's deviation");
         std::fflush(stdout);
         rows.push_back(r);
     }
