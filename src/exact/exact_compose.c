@@ -3,10 +3,14 @@
  * The driver of the exact composition (exact.h): q's Bezier segments by
  * blossoming, each cut at the seam jumps inside it and moved into the
  * domain, then cut where it crosses a knot line of S (sign_changes.c),
- * each part composed with the patch it lies in, the parts joined.
+ * each part composed with the patch it lies in, the parts joined and
+ * their join knots reduced (join_removal.c) where the two sides are not
+ * C0 by construction.
  */
 #include "exact/exact.h"
 
+#include <float.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,10 +26,16 @@
 #define PC_EXACT_ROOTS_PER_LINE 8
 
 /* One part of q to compose: over [t0, t1], in patch `patch`, with its
- * (u, v) Bezier control points in the domain. */
+ * (u, v) Bezier control points in the domain. smooth: 0 where the part
+ * meets the one before only C0 by construction (at a seam or pole jump,
+ * where the two sides are different curves of S's homogeneous space, or
+ * at a crease of q: a knot of multiplicity its degree); 1 where it
+ * starts at a knot of q of lower multiplicity, or at a knot line of S
+ * (whether S is C0 there is told by the patches, patches_smooth). */
 typedef struct exact_part {
     double t0, t1;
     size_t patch;
+    unsigned char smooth;
     double uv[2 * PC_EXACT_ORDER];
 } exact_part;
 
@@ -186,9 +196,11 @@ static void into_domain(int d, double *uv, const double shift[2], const double d
 }
 
 /* The parts of one domain-side stretch uv over [t0, t1]: cut at the knot
- * lines it crosses, each in the patch holding its middle. */
+ * lines it crosses, each in the patch holding its middle; the first
+ * starts smooth or not as the caller says, the others at knot lines. */
 static projcurve_status side_parts(projcurve_context *ctx, const pc_patch_grid *g, int d,
-                                   const double *uv, double t0, double t1, exact_parts *parts)
+                                   const double *uv, double t0, double t1, int smooth,
+                                   exact_parts *parts)
 {
     exact_cuts cuts = {NULL, 0, 0};
     projcurve_status st = line_cuts(ctx, d, uv, 0, g->breaks_u, g->spans_u, &cuts);
@@ -205,6 +217,7 @@ static projcurve_status side_parts(projcurve_context *ctx, const pc_patch_grid *
         bezier_part(d, uv, a, b, p->uv);
         p->t0 = a == 0.0 ? t0 : t0 + a * (t1 - t0);
         p->t1 = b == 1.0 ? t1 : t0 + b * (t1 - t0);
+        p->smooth = (unsigned char)(i > 0 || smooth);
         double mid[2 * PC_EXACT_ORDER];
         memcpy(mid, p->uv, sizeof mid);
         bezier_split(d, mid, 0.5, 0);
@@ -231,6 +244,15 @@ static projcurve_status span_parts(projcurve_context *ctx, const projcurve_surfa
             st = add_cut(ctx, &cuts, (b->seams[k].t - t0) / (t1 - t0));
     if (st == PROJCURVE_OK)
         st = close_cuts(ctx, &cuts);
+    /* q is C^(d - m) at its knot of multiplicity m where the span starts;
+     * a jump there (or merged into it by close_cuts) makes it C0 */
+    size_t m = 1;
+    while (m < span && q->knots[span - m] == t0)
+        ++m;
+    const double near = PC_EXACT_MIN_GAP * (q->knots[q->n_poles] - q->knots[(size_t)d]);
+    for (size_t k = 0; k < b->n_seams; ++k)
+        if (fabs(b->seams[k].t - t0) <= near)
+            m = (size_t)d;
     for (size_t i = 0; st == PROJCURVE_OK && i + 1 < cuts.count; ++i) {
         const double a = cuts.items[i], c = cuts.items[i + 1];
         const double ta = a == 0.0 ? t0 : t0 + a * (t1 - t0);
@@ -239,57 +261,140 @@ static projcurve_status span_parts(projcurve_context *ctx, const projcurve_surfa
         bezier_part(d, uv, a, c, side);
         pc_seam_unwrap_shift(b, 0.5 * (ta + tc), shift);
         into_domain(d, side, shift, s->nurbs.domain);
-        st = side_parts(ctx, &s->grid, d, side, ta, tc, parts);
+        st = side_parts(ctx, &s->grid, d, side, ta, tc, i == 0 && m < (size_t)d, parts);
     }
     PC_ARRAY_FREE(&cuts);
     return st;
 }
 
-/* The parts composed and joined into out: a piece's homogeneous points
- * are scaled (which leaves a rational Bezier curve unchanged) so that its
- * first weight is the previous piece's last, whose pole it shares. */
-static projcurve_status join_parts(projcurve_context *ctx, const projcurve_surface *s, int d,
-                                   const exact_parts *parts, pc_bspline *out)
+/* Whether two parts' patches meet smoother than C0: not across a knot
+ * line where S may be only C0 (the grid's creases: a knot of S of
+ * multiplicity its degree). */
+static int patches_smooth(const pc_patch_grid *g, size_t a, size_t b)
 {
-    const int n = d * (s->nurbs.deg_u + s->nurbs.deg_v);
-    const size_t nd = (size_t)n, np = parts->count;
-    if (np > (SIZE_MAX / (4 * sizeof(double)) - 2 * nd - 2) / nd)
-        return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "%zu parts of degree %d overflow", np, n);
-    const size_t n_poles = np * nd + 1;
-    out->degree = n;
-    out->dim = 3;
-    out->n_poles = n_poles;
-    out->knots = malloc((n_poles + nd + 1) * sizeof *out->knots);
-    out->poles = malloc(3 * n_poles * sizeof *out->poles);
-    out->weights = s->nurbs.rational ? malloc(n_poles * sizeof *out->weights) : NULL;
-    double *cw = malloc(4 * (nd + 1) * sizeof *cw);
-    if (!out->knots || !out->poles || (s->nurbs.rational && !out->weights) || !cw) {
-        free(cw);
-        pc_bspline_free(out);
-        return pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for an exact composition");
-    }
+    const size_t ua = a % g->spans_u, va = a / g->spans_u;
+    const size_t ub = b % g->spans_u, vb = b / g->spans_u;
+    for (size_t k = (ua < ub ? ua : ub) + 1; k <= (ua < ub ? ub : ua); ++k)
+        if (g->crease_u[k])
+            return 0;
+    for (size_t k = (va < vb ? va : vb) + 1; k <= (va < vb ? vb : va); ++k)
+        if (g->crease_v[k])
+            return 0;
+    return 1;
+}
+
+/* The parts composed and joined into c (poles of dim 4, homogeneous,
+ * when S is rational, else 3), knots of multiplicity the degree at the
+ * joins, and smooth[k] for join k: a piece's homogeneous points are
+ * scaled (which leaves a rational Bezier curve unchanged) so that its
+ * first weight is the previous piece's last, whose pole it shares. cw:
+ * scratch for one composed part. */
+static void compose_parts(const projcurve_surface *s, int d, const exact_parts *parts,
+                          pc_knot_curve *c, unsigned char *smooth, double *cw)
+{
+    const size_t nd = (size_t)c->degree, np = parts->count, dim = (size_t)c->dim;
     double w_join = 1.0;
     for (size_t i = 0; i < np; ++i) {
         const exact_part *p = &parts->items[i];
         pc_compose_poly(&s->grid.patches[p->patch], d, p->uv, cw);
         const double scale = w_join / cw[3];
         for (size_t j = i == 0 ? 0 : 1; j <= nd; ++j) {
-            const size_t at = i * nd + j;
-            const double w = cw[4 * j + 3] * scale;
-            for (int c = 0; c < 3; ++c)
-                out->poles[3 * at + (size_t)c] = cw[4 * j + (size_t)c] / cw[4 * j + 3];
-            if (out->weights)
-                out->weights[at] = w;
+            double *at = c->poles + dim * (i * nd + j);
+            for (size_t k = 0; k < 3; ++k)
+                at[k] = dim == 4 ? cw[4 * j + k] * scale : cw[4 * j + k] / cw[4 * j + 3];
+            if (dim == 4)
+                at[3] = cw[4 * j + 3] * scale;
         }
         w_join = cw[4 * nd + 3] * scale;
         for (size_t j = 0; j < nd; ++j)
-            out->knots[1 + i * nd + j] = p->t0;
+            c->knots[1 + i * nd + j] = p->t0;
+        if (i > 0)
+            smooth[i - 1] = (unsigned char)(p->smooth &&
+                                            patches_smooth(&s->grid, parts->items[i - 1].patch,
+                                                           p->patch));
     }
-    out->knots[0] = parts->items[0].t0;
+    c->knots[0] = parts->items[0].t0;
     for (size_t j = 0; j <= nd; ++j)
-        out->knots[np * nd + 1 + j] = parts->items[np - 1].t1;
-    free(cw);
-    return PROJCURVE_OK;
+        c->knots[np * nd + 1 + j] = parts->items[np - 1].t1;
+}
+
+/* The bound of the join removal in c's space: PC_EXACT_REMOVAL_ULPS of
+ * the largest Cartesian pole, tol. Homogeneous poles X, w moved by at most
+ * delta (each of |dX|, |dw| <= delta) move C = X / w by at most
+ * delta (1 + |C|) / (w - delta), w >= the smallest weight: delta =
+ * tol w_min / (1 + |C|_max + tol) keeps C within tol. 0 (no removal)
+ * where a weight is not positive. */
+static double removal_tol(const pc_knot_curve *c)
+{
+    const size_t dim = (size_t)c->dim;
+    double c_max = 0.0, w_min = INFINITY;
+    for (size_t i = 0; i < c->n_poles; ++i) {
+        const double *x = c->poles + dim * i, w = dim == 4 ? x[3] : 1.0;
+        c_max = fmax(c_max, sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) / w);
+        w_min = fmin(w_min, w);
+    }
+    const double tol = PC_EXACT_REMOVAL_ULPS * DBL_EPSILON * c_max;
+    if (!(w_min > 0.0 && tol < INFINITY))
+        return 0.0;
+    return dim == 4 ? tol * w_min / (1.0 + c_max + tol) : tol;
+}
+
+/* c's homogeneous poles as out's Cartesian poles and weights. */
+static void to_cartesian(const pc_knot_curve *c, pc_bspline *out)
+{
+    for (size_t i = 0; i < c->n_poles; ++i) {
+        const double *x = c->poles + 4 * i;
+        for (size_t k = 0; k < 3; ++k)
+            out->poles[3 * i + k] = x[k] / x[3];
+        out->weights[i] = x[3];
+    }
+}
+
+/* The parts composed, joined and reduced into out. */
+static projcurve_status join_parts(projcurve_context *ctx, const projcurve_surface *s, int d,
+                                   const exact_parts *parts, pc_bspline *out)
+{
+    const int n = d * (s->nurbs.deg_u + s->nurbs.deg_v);
+    const size_t nd = (size_t)n, np = parts->count, dim = s->nurbs.rational ? 4 : 3;
+    if (np > (SIZE_MAX / (4 * sizeof(double)) - 2 * nd - 2) / nd)
+        return pc_fail(ctx, PROJCURVE_ERR_OVERFLOW, "%zu parts of degree %d overflow", np, n);
+    pc_knot_curve c = {n, (int)dim, np * nd + 1, NULL, NULL};
+    c.knots = malloc((c.n_poles + nd + 1) * sizeof *c.knots);
+    c.poles = malloc(dim * c.n_poles * sizeof *c.poles);
+    double *work = malloc((4 * (nd + 1) + 2 * np + 1) * sizeof *work);
+    unsigned char *smooth = malloc(np);
+    projcurve_status st = PROJCURVE_OK;
+    if (!c.knots || !c.poles || !work || !smooth)
+        st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY, "out of memory for an exact composition");
+    if (st == PROJCURVE_OK) {
+        compose_parts(s, d, parts, &c, smooth, work);
+        pc_exact_reduce_joins(&c, smooth, np, removal_tol(&c), work);
+        out->degree = n;
+        out->dim = 3;
+        out->n_poles = c.n_poles;
+        out->knots = c.knots;
+        c.knots = NULL;
+        out->weights = NULL;
+        if (dim == 3) {
+            out->poles = c.poles;
+            c.poles = NULL;
+        } else {
+            out->poles = malloc(3 * c.n_poles * sizeof *out->poles);
+            out->weights = malloc(c.n_poles * sizeof *out->weights);
+            if (out->poles && out->weights)
+                to_cartesian(&c, out);
+            else
+                st = pc_fail(ctx, PROJCURVE_ERR_NO_MEMORY,
+                             "out of memory for an exact composition");
+        }
+    }
+    if (st != PROJCURVE_OK)
+        pc_bspline_free(out);
+    free(c.knots);
+    free(c.poles);
+    free(work);
+    free(smooth);
+    return st;
 }
 
 projcurve_status pc_exact_compose(projcurve_context *ctx, const projcurve_surface *s,
