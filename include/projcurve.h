@@ -1074,8 +1074,8 @@ PROJCURVE_API projcurve_status projcurve_result_branch_compact_info(
  * checked against the branch's pieces. Computed on each call (no cache).
  * Statuses: OK, NULL_ARGUMENT, INDEX, INVALID_ARGUMENT (no compact forms,
  * as projcurve_result_branch_compact_pcurve; or another surface),
- * UNSUPPORTED (the compact pcurve is in the curve's own space, rational
- * or above cubic: read projcurve_result_branch_curve; or the degree
+ * UNSUPPORTED (the compact pcurve is in the curve's own space above
+ * cubic: read projcurve_result_branch_curve; or the degree
  * d (p + q) is above PROJCURVE_MAX_DEGREE), NO_MEMORY, OVERFLOW,
  * NOT_CONVERGED (a piece crossing one knot line more often than a cubic
  * can: not expected). Thread-safe (the result and the surface are only

@@ -154,7 +154,8 @@ class Branch:
     def compact_exact(self, surface=None):
         """The compact pcurve composed with the surface exactly: one NURBS
         Curve on the surface to rounding, of degree 3 (p + q) for the
-        cubic pcurve (rational when the surface is; above 25 on surfaces
+        cubic pcurve (rational when the surface or the pcurve is, as a
+        circle's onto a plane, of degree 2 (p + q); above 25 on surfaces
         with p + q > 8, which Open CASCADE cannot read). Its Bezier parts
         are joined with knots of multiplicity the degree where they meet
         only C0 (seams, poles, creases of the pcurve or the surface) and

@@ -29,14 +29,16 @@
  * test_api_compact_exact.c), so that the curve stays on S to rounding. */
 #define PC_EXACT_REMOVAL_ULPS 256.0
 
-/* S o q for b's compact pcurve q (polynomial, degree 1..3; unwrapped
- * across b's seams, seam/seam.h) on surface s, into *out (dim 3, degree
- * deg(q) (p + q), weights NULL when S is polynomial; the knots inside of
- * multiplicity the degree at the joins where the two sides meet only C0
- * by construction, lower where the curve is smoother, join_removal.c;
- * within PC_EXACT_REMOVAL_ULPS of the parts as composed). Statuses: OK, NO_MEMORY, OVERFLOW,
- * UNSUPPORTED (q rational or above cubic: the curve's own space; or a
- * degree above PROJCURVE_MAX_DEGREE), NOT_CONVERGED (more knot-line
+/* S o q for b's compact pcurve q (degree 1..3, polynomial or rational
+ * with positive weights; unwrapped across b's seams, seam/seam.h) on
+ * surface s, into *out (dim 3, degree deg(q) (p + q), weights NULL when S
+ * and q are polynomial; the knots inside of multiplicity the degree at
+ * the joins where the two sides meet only C0 by construction, lower
+ * where the curve is smoother, join_removal.c; within
+ * PC_EXACT_REMOVAL_ULPS of the parts as composed). Statuses: OK,
+ * NO_MEMORY, OVERFLOW, UNSUPPORTED (q above cubic or with a weight <= 0:
+ * the curve's own space; or a degree above PROJCURVE_MAX_DEGREE),
+ * NOT_CONVERGED (more knot-line
  * crossings in one piece than a cubic has roots: not expected), each
  * recorded in ctx. */
 projcurve_status pc_exact_compose(projcurve_context *ctx, const projcurve_surface *s,
