@@ -1058,9 +1058,15 @@ PROJCURVE_API projcurve_status projcurve_result_branch_compact_info(
  * pcurve moved back into the domain, see Seams above: one curve across
  * them) and where it crosses a knot line of S; each piece of degree d
  * composed with its Bezier patch is a Bezier curve of degree d (p + q)
- * (rational when S is), and the pieces are joined with knots of
- * multiplicity that degree (C0 in form; the curve is as smooth as S o q
- * is). For the fitted cubic (d = 3): degree 18 on a bicubic surface, 6 on
+ * (rational when S is); the pieces are joined with knots of
+ * multiplicity that degree, then copies of each join's knot are removed
+ * where S o q is smoother than C0 there (C^(d - m) at a knot of q of
+ * multiplicity m inside a patch, C^(p - m) across a knot line of S of
+ * multiplicity m) while the curve moves by at most 256 ulps of its
+ * largest pole: on S to rounding still, with fewer poles. Joins where the
+ * two sides meet only C0 by construction (seam and pole jumps, creases of
+ * q, knot lines where S may be only C0) keep their full multiplicity.
+ * For the fitted cubic (d = 3): degree 18 on a bicubic surface, 6 on
  * a plane of degrees (1, 1), 9 on the rational cylinder (2, 1), 12 on the
  * sphere (2, 2); degrees above 25 (surfaces with p + q > 8) are given but
  * cannot be read by Open CASCADE (Geom_BSplineCurve's limit). surface must be the one the result was
@@ -1068,8 +1074,8 @@ PROJCURVE_API projcurve_status projcurve_result_branch_compact_info(
  * checked against the branch's pieces. Computed on each call (no cache).
  * Statuses: OK, NULL_ARGUMENT, INDEX, INVALID_ARGUMENT (no compact forms,
  * as projcurve_result_branch_compact_pcurve; or another surface),
- * UNSUPPORTED (the compact pcurve is in the curve's own space, rational
- * or above cubic: read projcurve_result_branch_curve; or the degree
+ * UNSUPPORTED (the compact pcurve is in the curve's own space above
+ * cubic: read projcurve_result_branch_curve; or the degree
  * d (p + q) is above PROJCURVE_MAX_DEGREE), NO_MEMORY, OVERFLOW,
  * NOT_CONVERGED (a piece crossing one knot line more often than a cubic
  * can: not expected). Thread-safe (the result and the surface are only

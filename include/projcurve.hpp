@@ -1168,8 +1168,17 @@ public:
     }
     /** \brief Branch b's compact pcurve composed exactly with s, the
      *  surface the result was projected onto
-     *  (projcurve_result_branch_compact_exact): on s to rounding, degree
-     *  3 (p + q) for the cubic pcurve. */
+     *  (projcurve_result_branch_compact_exact): one NURBS curve on s to
+     *  rounding, of degree 3 (p + q) for the cubic pcurve (rational when
+     *  s or the pcurve is: a pcurve in a rational curve's space, degree
+     *  2 (p + q) for a circle onto a plane). Its Bezier parts (q cut at
+     *  its knots, seam jumps and the knot lines of s) are joined with
+     *  knots of multiplicity the degree
+     *  where they meet only C0 (seams, poles, creases of q or s) and of
+     *  lower multiplicity where S o q is smoother (C2 at a simple knot of
+     *  q inside a patch, C^(p - m) across a knot line of multiplicity m):
+     *  the copies removed move the curve by at most 256 ulps of its
+     *  size. */
     curve compact_exact(context &ctx, surface_view s, std::size_t b) const
     {
         projcurve_curve *raw = nullptr;

@@ -152,11 +152,18 @@ class Branch:
         return self._curve("projcurve_result_branch_compact_curve")
 
     def compact_exact(self, surface=None):
-        """The compact pcurve composed with the surface exactly: a NURBS
+        """The compact pcurve composed with the surface exactly: one NURBS
         Curve on the surface to rounding, of degree 3 (p + q) for the
-        cubic pcurve (above 25 on surfaces with p + q > 8, which Open
-        CASCADE cannot read). surface: the one the result was projected
-        onto (the default)."""
+        cubic pcurve (rational when the surface or the pcurve is, as a
+        circle's onto a plane, of degree 2 (p + q); above 25 on surfaces
+        with p + q > 8, which Open CASCADE cannot read). Its Bezier parts
+        are joined with knots of multiplicity the degree where they meet
+        only C0 (seams, poles, creases of the pcurve or the surface) and
+        of lower multiplicity where the curve is smoother (C2 at a simple
+        knot of the pcurve inside a patch, C^(p - m) across a knot line of
+        multiplicity m): the copies removed move it by at most 256 ulps of
+        its size. surface: the one the result was projected onto (the
+        default)."""
         s = self.result.surface if surface is None else surface
         out = ctypes.c_void_p()
         call("projcurve_result_branch_compact_exact", self.result._ptr, s._ptr, self.index,

@@ -28,6 +28,13 @@ void pc_compose_segment(const pc_bezier_patch *patch, const double uv0[2], const
 int pc_compose_poly(const pc_bezier_patch *patch, int degree, const double *uv_ctrl,
                     double *cw_out);
 
+/* The same for a rational (u, v) Bezier curve: Cartesian control points
+ * uv_ctrl with positive weights (NULL: all 1, pc_compose_poly). The
+ * composed curve has the same degree, its homogeneous points those of
+ * S o (u, v) times a positive scalar polynomial. */
+int pc_compose_poly_weighted(const pc_bezier_patch *patch, int degree, const double *uv_ctrl,
+                             const double *weights, double *cw_out);
+
 /* Cartesian control points (3 doubles each) and weights of a rational Bezier
  * curve given by degree + 1 homogeneous points (4 doubles each); weights must
  * be non-zero (they are positive for a NURBS patch). */

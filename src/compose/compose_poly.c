@@ -23,6 +23,13 @@
  * basis product is a sum of non-negative terms: no cancellation, and C's
  * control points are as accurate as an evaluation of the patch. For d = 1
  * this is the same curve as pc_compose_segment's blossoming.
+ *
+ * A rational pcurve x = X / W (X, W with Bernstein coefficients w_k x_k
+ * and w_k, weights w_k > 0) composes the same way: B_i^p(x) W^p =
+ * C(p, i) X^i (W - X)^(p - i), so x and 1 - x are replaced by X and
+ * W - X (coefficients w_k x_k and w_k (1 - x_k), non-negative still), and
+ * the homogeneous result is C times the scalar W^(p + q): the same
+ * rational curve, of the same degree d (p + q).
  */
 #include "compose.h"
 
@@ -92,13 +99,13 @@ static PC_ALWAYS_INLINE void bernstein_product(const poly_scratch *w, int m, con
 }
 
 /* Bernstein coefficients of B_i^deg(x(s)), i = 0..deg, each of degree
- * d deg, into basis (row i), where x(s) has the d + 1 coefficients x. */
-static PC_ALWAYS_INLINE void basis_of(int d, const double *x, int deg, poly_scratch *w, double *basis)
+ * d deg, into basis (row i), where x(s) has the d + 1 coefficients x and
+ * 1 - x(s) the coefficients one_minus (for a rational pcurve, those of
+ * X and W - X: then the rows are B_i^deg(x) W^deg). */
+static PC_ALWAYS_INLINE void basis_of(int d, const double *x, const double *one_minus, int deg,
+                                      poly_scratch *w, double *basis)
 {
     const size_t st = w->stride;
-    double one_minus[PC_COMPOSE_POLY_MAX_DEGREE + 1];
-    for (int k = 0; k <= d; ++k)
-        one_minus[k] = 1.0 - x[k];
     w->pow_x[0] = w->pow_1x[0] = 1.0;
     for (int a = 1; a <= deg; ++a) {
         bernstein_product(w, d * (a - 1), w->pow_x + (size_t)(a - 1) * st, d, x,
@@ -119,20 +126,26 @@ static PC_ALWAYS_INLINE void basis_of(int d, const double *x, int deg, poly_scra
 /* Cloned per instruction set: with AVX each homogeneous point is one
  * register, and the products below are one multiply-add per term. */
 static PC_HOT_CLONES void compose_poly_with(const pc_bezier_patch *patch, int d,
-                                            const double *uv_ctrl, double *cw_out,
-                                            poly_scratch *w)
+                                            const double *uv_ctrl, const double *weights,
+                                            double *cw_out, poly_scratch *w)
 {
     const int p = patch->deg_u, q = patch->deg_v, nu = d * p, nv = d * q, n = nu + nv;
     const size_t st = w->stride, pu = (size_t)(p + 1);
     const double du = patch->u1 - patch->u0, dv = patch->v1 - patch->v0;
     double x[PC_COMPOSE_POLY_MAX_DEGREE + 1], y[PC_COMPOSE_POLY_MAX_DEGREE + 1];
+    double x1[PC_COMPOSE_POLY_MAX_DEGREE + 1], y1[PC_COMPOSE_POLY_MAX_DEGREE + 1];
     for (int k = 0; k <= d; ++k) {
-        x[k] = (uv_ctrl[2 * k] - patch->u0) / du;
-        y[k] = (uv_ctrl[2 * k + 1] - patch->v0) / dv;
+        const double wk = weights != NULL ? weights[k] : 1.0;
+        const double xk = (uv_ctrl[2 * k] - patch->u0) / du;
+        const double yk = (uv_ctrl[2 * k + 1] - patch->v0) / dv;
+        x[k] = wk * xk;
+        x1[k] = wk * (1.0 - xk);
+        y[k] = wk * yk;
+        y1[k] = wk * (1.0 - yk);
     }
     pascal_triangle(n, w->binom);
-    basis_of(d, x, p, w, w->basis_u);
-    basis_of(d, y, q, w, w->basis_v);
+    basis_of(d, x, x1, p, w, w->basis_u);
+    basis_of(d, y, y1, q, w, w->basis_v);
 
     /* C = sum_j H_j Bv_j with H_j = sum_i P_ij Bu_i: the product's binomial
      * weights split as C(nu, a) on H, C(nv, b) on Bv and 1 / C(n, k) at the
@@ -174,7 +187,8 @@ static PC_HOT_CLONES void compose_poly_with(const pc_bezier_patch *patch, int d,
 
 /* Patches of high degree: tables for the largest sizes. */
 static PC_NOINLINE void compose_poly_large(const pc_bezier_patch *patch, int d,
-                                                const double *uv_ctrl, double *cw_out)
+                                           const double *uv_ctrl, const double *weights,
+                                           double *cw_out)
 {
     double pow_x[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];
     double pow_1x[PC_POLY_MAX_ORDER * PC_POLY_MAX_COEFS];
@@ -183,18 +197,24 @@ static PC_NOINLINE void compose_poly_large(const pc_bezier_patch *patch, int d,
     double row[4 * PC_POLY_MAX_COEFS];
     double binom[PC_POLY_TRIANGLE(PC_POLY_MAX_COEFS - 1)];
     poly_scratch w = {PC_POLY_MAX_COEFS, pow_x, pow_1x, basis_u, basis_v, row, binom};
-    compose_poly_with(patch, d, uv_ctrl, cw_out, &w);
+    compose_poly_with(patch, d, uv_ctrl, weights, cw_out, &w);
 }
 
 int pc_compose_poly(const pc_bezier_patch *patch, int degree, const double *uv_ctrl,
                     double *cw_out)
+{
+    return pc_compose_poly_weighted(patch, degree, uv_ctrl, NULL, cw_out);
+}
+
+int pc_compose_poly_weighted(const pc_bezier_patch *patch, int degree, const double *uv_ctrl,
+                             const double *weights, double *cw_out)
 {
     const int p = patch->deg_u, q = patch->deg_v;
     if (degree < 1 || degree > PC_COMPOSE_POLY_MAX_DEGREE ||
         degree * (p + q) > 2 * PROJCURVE_MAX_DEGREE)
         return -1;
     if (p >= PC_POLY_SMALL_ORDER || q >= PC_POLY_SMALL_ORDER) {
-        compose_poly_large(patch, degree, uv_ctrl, cw_out);
+        compose_poly_large(patch, degree, uv_ctrl, weights, cw_out);
         return degree * (p + q);
     }
     double pow_x[PC_POLY_SMALL_ORDER * PC_POLY_SMALL_COEFS];
@@ -204,6 +224,6 @@ int pc_compose_poly(const pc_bezier_patch *patch, int degree, const double *uv_c
     double row[4 * PC_POLY_SMALL_COEFS];
     double binom[PC_POLY_TRIANGLE(2 * (PC_POLY_SMALL_COEFS - 1))];
     poly_scratch w = {PC_POLY_SMALL_COEFS, pow_x, pow_1x, basis_u, basis_v, row, binom};
-    compose_poly_with(patch, degree, uv_ctrl, cw_out, &w);
+    compose_poly_with(patch, degree, uv_ctrl, weights, cw_out, &w);
     return degree * (p + q);
 }

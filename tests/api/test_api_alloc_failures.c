@@ -165,6 +165,10 @@ static const double down[3] = {0.0, 0.0, -1.0};
 /* above the middle of the net, the curve (z = 30) between it and the net */
 static const double eye[3] = {50.0, 50.0, 200.0};
 static projcurve_surface *surface;
+/* the same net with weights: the exact composition's homogeneous poles */
+static double net_weights[64];
+static projcurve_surface *surface_rational;
+static projcurve_result *result_rational;
 static projcurve_curve *curve;
 static projcurve_options *ortho_opts;
 static projcurve_result *result;
@@ -181,6 +185,7 @@ static void make_net(void)
             net[3 * (j * 8 + i) + 0] = 100.0 * i / 7.0;
             net[3 * (j * 8 + i) + 1] = 100.0 * j / 7.0;
             net[3 * (j * 8 + i) + 2] = pc_test_rng_uniform(&rng, -8.0, 8.0);
+            net_weights[j * 8 + i] = pc_test_rng_uniform(&rng, 0.5, 2.0);
         }
 }
 
@@ -380,14 +385,15 @@ static outcome call_branch_curves(void)
 }
 
 /* The exact composition of every branch's compact pcurve with S (its
- * cuts at the knot lines of the 5 x 5 patches, its parts, its poles). */
-static outcome call_compact_exact(void)
+ * cuts at the knot lines of the 5 x 5 patches, its parts, its poles, the
+ * reduction of its joins; for a rational S its homogeneous poles). */
+static outcome compact_exact_of(const projcurve_result *r, const projcurve_surface *s)
 {
     outcome o = {PROJCURVE_OK, 1469598103934665603ull, 1};
-    for (size_t b = 0; b < projcurve_result_branch_count(result) && o.st == PROJCURVE_OK; ++b) {
+    for (size_t b = 0; b < projcurve_result_branch_count(r) && o.st == PROJCURVE_OK; ++b) {
         projcurve_curve *c = SENTINEL;
         armed = 1;
-        o.st = projcurve_result_branch_compact_exact(ctx, result, surface, b, &c);
+        o.st = projcurve_result_branch_compact_exact(ctx, r, s, b, &c);
         armed = 0;
         if (o.st == PROJCURVE_OK) {
             const hash h = curve_hash(ctx, c);
@@ -399,6 +405,13 @@ static outcome call_compact_exact(void)
         }
     }
     return o;
+}
+
+static outcome call_compact_exact(void) { return compact_exact_of(result, surface); }
+
+static outcome call_compact_exact_rational(void)
+{
+    return compact_exact_of(result_rational, surface_rational);
 }
 
 /* A writer filled step by step; a failed step must leave the writer as it
@@ -577,8 +590,12 @@ int main(int argc, char **argv)
     CHECK_OK(projcurve_options_set_int(ctx, nearest_opts, PROJCURVE_OPT_HITS,
                                        PROJCURVE_HITS_NEAREST));
     CHECK_OK(projcurve_project_directional(ctx, surface, curve, down, NULL, &result));
+    CHECK_OK(projcurve_surface_create_nurbs(ctx, 3, 3, 8, 8, net, net_weights, net_knots,
+                                            net_knots, &surface_rational));
+    CHECK_OK(projcurve_project_directional(ctx, surface_rational, curve, down, NULL,
+                                           &result_rational));
     if (surface == NULL || curve == NULL || result == NULL || ortho_opts == NULL ||
-        nearest_opts == NULL)
+        nearest_opts == NULL || result_rational == NULL)
         return pc_test_finish("test_api_alloc_failures");
     CHECK(projcurve_result_branch_count(result) > 0);
     {
@@ -609,6 +626,7 @@ int main(int argc, char **argv)
         {"project_conical", call_conical},
         {"result_branch_curve", call_branch_curves},
         {"result_branch_compact_exact", call_compact_exact},
+        {"result_branch_compact_exact (rational)", call_compact_exact_rational},
         {"iges_writer", call_iges_write},
         {"step_writer", call_step_write},
     };
@@ -616,6 +634,8 @@ int main(int argc, char **argv)
         check_entry(&entries[i]);
     remove(write_path);
     projcurve_result_destroy(result);
+    projcurve_result_destroy(result_rational);
+    projcurve_surface_destroy(surface_rational);
     projcurve_shape_result_destroy(face_result);
     projcurve_face_destroy(face);
     projcurve_options_destroy(ortho_opts);

@@ -2,7 +2,7 @@
 /*
  * Composition of a polynomial pcurve with a Bezier patch (compose_poly.c):
  * S(u(s), v(s)) for a cubic (u, v)(s) inside a patch is a Bezier curve of
- * degree 3 (p + q). Oracles: brute-force Bernstein sums of the patch at the
+ * degree 3 (p + q); the same for rational pcurves. Oracles: brute-force Bernstein sums of the patch at the
  * pcurve's points (power-form Bernstein polynomials, no de Casteljau, no
  * products), the blossoming composer for straight segments, an exact
  * rational cylinder, and the library's NURBS evaluation on decomposed
@@ -161,6 +161,54 @@ static void test_random_patches(void)
             }
 }
 
+/* Rational pcurves (pc_compose_poly_weighted): random weights in [0.3, 3]
+ * on pcurves of degrees 1..3 in random patches, polynomial and rational;
+ * the composed curve against the patch at q(s) = sum w_i B_i uv_i /
+ * sum w_i B_i. Weights all 1 give pc_compose_poly's points bit for bit. */
+static void test_weighted_pcurves(void)
+{
+    static const int degrees[][2] = {{1, 1}, {2, 2}, {3, 3}, {2, 1}, {5, 3}};
+    static double cw[4 * MAX_ORDER * MAX_ORDER];
+    pc_test_rng rng;
+    pc_test_rng_seed(&rng, 6104);
+    const double size = sqrt(3.0);
+    for (size_t k = 0; k < sizeof degrees / sizeof degrees[0]; ++k)
+        for (int rational = 0; rational <= 1; ++rational)
+            for (int d = 1; d <= 3; ++d) {
+                pc_bezier_patch pt;
+                random_patch(&rng, degrees[k][0], degrees[k][1], rational ? 0.2 : 1.0,
+                             rational ? 5.0 : 1.0, cw, &pt);
+                double uv[8], w[4], out[4 * MAX_OUT], plain[4 * MAX_OUT];
+                random_pcurve(&rng, &pt, d, uv);
+                for (int i = 0; i <= d; ++i)
+                    w[i] = pc_test_rng_uniform(&rng, 0.3, 3.0);
+                const int n = pc_compose_poly_weighted(&pt, d, uv, w, out);
+                CHECK(n == d * (pt.deg_u + pt.deg_v));
+                double worst = 0.0;
+                for (int j = 0; j < N_SAMPLES && n > 0; ++j) {
+                    const double t = (double)j / (N_SAMPLES - 1);
+                    double a[4], b[4], q[2] = {0.0, 0.0}, den = 0.0;
+                    for (int i = 0; i <= d; ++i) {
+                        const double bw = bernstein(d, i, t) * w[i];
+                        q[0] += bw * uv[2 * i];
+                        q[1] += bw * uv[2 * i + 1];
+                        den += bw;
+                    }
+                    curve_point_h(n, out, t, a);
+                    patch_point_h(&pt, q[0] / den, q[1] / den, b);
+                    worst = fmax(worst, cartesian_distance(a, b));
+                }
+                if (!(worst <= REL_TOL * size))
+                    fprintf(stderr, "weighted: degrees (%d,%d) rational %d pcurve %d: %.3g\n",
+                            pt.deg_u, pt.deg_v, rational, d, worst);
+                CHECK(worst <= REL_TOL * size);
+                const double ones[4] = {1.0, 1.0, 1.0, 1.0};
+                CHECK(pc_compose_poly_weighted(&pt, d, uv, ones, out) == n);
+                CHECK(pc_compose_poly(&pt, d, uv, plain) == n);
+                CHECK(memcmp(out, plain, 4 * (size_t)(n + 1) * sizeof *out) == 0);
+            }
+}
+
 /* A straight pcurve gives the blossoming composer's control points. */
 static void test_matches_segment(void)
 {
@@ -284,6 +332,7 @@ static void test_decomposed_surfaces(void)
 int main(void)
 {
     test_random_patches();
+    test_weighted_pcurves();
     test_matches_segment();
     test_refusals();
     test_rational_cylinder();
