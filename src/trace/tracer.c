@@ -202,11 +202,13 @@ static int chord_beyond_speed(const pc_tracer *tr, const pc_proj_point *cur,
 /* 1 when S seen from Dir turns over between cur and next although det
  * need not change sign: at the middle of the step's (u, v) chord det has
  * the other sign than at cur (both away from a fold, where the fold's own
- * tests apply and the sign of det is noise). Asked only where the area element |Su x Sv| changes
- * much over the step (PC_TRACE_AREA_CHANGE): there the parametrisation
- * may fold back on itself in layers (docs/tracing.md, "Pleats"), and a
- * step can pass two cusps (det changing sign twice, which the fold test
- * does not see) onto another layer. On linkrods.step surface 11, curve
+ * tests apply and the sign of det is noise). Asked only where the cusp
+ * rate says |Su x Sv| changes much over the step (PC_TRACE_AREA_CHANGE):
+ * there the parametrisation may fold back on itself in layers
+ * (docs/tracing.md, "Pleats"), and a step can pass two cusps (det
+ * changing sign twice, which the fold test does not see) onto another
+ * layer; cusp_distance sees a cusp ahead only once the area shrinks
+ * towards it, not one behind a stretch where it first grows. On linkrods.step surface 11, curve
  * 78, a backward step from the middle layer at t = 0.975 landed 0.094
  * before on the surface's edge, past the cusp where that layer is born
  * (t = 0.950) and across the inner layer, det +0.38 at one end, +1e-5 at
@@ -414,12 +416,14 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             *why = PROJCURVE_END_SILHOUETTE;
             return PROJCURVE_OK;
         }
-        /* a cusp ahead: the branch ends on it once the rest of the way is
-         * within the corrector's tolerance on S, and a step goes at most
-         * PC_TRACE_CUSP_FRACTION of the way there (so it never passes it:
-         * the approach is geometric, as towards a fold) */
+        /* a cusp ahead: the branch ends on it (J singular, as at a fold)
+         * once the rest of the way on S is below PC_TRACE_CUSP_REACHED,
+         * and a step goes at most PC_TRACE_CUSP_FRACTION of the way there
+         * (so it never passes it: the approach is geometric, as towards a
+         * fold) */
         const double cusp = cusp_distance(cur, sign);
-        if (cusp * cur->speed <= fmax(proj->newton_tol, PC_TRACE_CUSP_REACHED * proj->model_size)) {
+        const double reached = fmax(proj->newton_tol, PC_TRACE_CUSP_REACHED * proj->model_size);
+        if (cusp * cur->speed <= reached) {
             *why = PROJCURVE_END_SILHOUETTE;
             return PROJCURVE_OK;
         }

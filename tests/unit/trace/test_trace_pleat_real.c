@@ -104,10 +104,10 @@ static void check_curve(const projcurve_model *m, const pc_oracle_mesh *mesh,
         /* as the verifier counts them: the curve also runs along the
          * surface's edge v1, where S is vertical (every ray grazes it
          * within 1e-6 of P), which neither counts */
+        const double grazing = sin(PC_VERIFY_GRAZING_DEG * 3.14159265358979323846 / 180.0);
         size_t n_hits = 0;
         for (size_t i = 0; i < n_all && i < 32; ++i)
-            n_hits += hits[i].lambda >= in.lambda_min &&
-                      hits[i].cos_dir >= sin(PC_VERIFY_GRAZING_DEG * 3.14159265358979323846 / 180.0);
+            n_hits += hits[i].lambda >= in.lambda_min && hits[i].cos_dir >= grazing;
         size_t alive = 0;
         for (size_t b = 0; b < nb; ++b) {
             double range[2];
