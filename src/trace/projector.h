@@ -41,6 +41,12 @@ typedef struct pc_proj_point {
     double speed;      /* |Q'(t)| = |Su u' + Sv v'| in model units ([SY13]
                           eq. (3.6)), for the arc-length step (3.7); 0 when
                           unknown (the engine then measures it itself) */
+    double cusp_rate;  /* d ln |Su x Sv| / dt along the branch from the pure
+                          second derivatives Suu, Svv: negative ahead (t
+                          increasing) when a cusp of the parametrisation
+                          closes in (a v line folding back on itself,
+                          tracer.c cusp_distance); 0 when the projector does
+                          not tell */
 } pc_proj_point;
 
 /* Starts *out at (t, u, v) with q', q'', det and speed 0: what a
@@ -54,6 +60,7 @@ static inline void pc_proj_point_start(pc_proj_point *out, double t, double u, d
     out->du = out->dv = out->ddu = out->ddv = 0.0;
     out->det = 0.0;
     out->speed = 0.0;
+    out->cusp_rate = 0.0;
 }
 
 struct pc_projector {

@@ -93,6 +93,29 @@ static double nominal_step(const pc_tracer *tr, const pc_proj_point *cur)
     return h < tr->max_step ? h : tr->max_step;
 }
 
+/* How far ahead in t (the run's direction `sign`) the branch at cur
+ * reaches a cusp of the parametrisation, INFINITY when none is in sight.
+ * Where a derivative of S vanishes and reverses (Sv along a v line that
+ * folds back on itself: linkrods.step surface 11, docs/tracing.md
+ * "Pleats"), the surface doubles back in layers, J = [e_i.Su, e_i.Sv] is
+ * singular on the cusp line and two branches (a layer and the next) meet
+ * and end there as at a fold; but |Su x Sv| vanishes with Sv while the
+ * normalised det Dir.(Su x Sv) / |Su x Sv| does not (it jumps from about
+ * -0.3 to +0.3), so neither the fold test nor the arc-length step (|Q'|
+ * stays bounded) sees the end coming, and a step longer than the pleat
+ * lands on the layer beyond the next, with det of the same sign. Towards
+ * a cusp the branch runs like towards a fold, with the square-root law
+ * |Su x Sv| ~ sqrt(t_c - t): d ln |Su x Sv| / dt = -1 / (2 (t_c - t)), so
+ * t_c - t = 1 / (2 |rate|) when the area shrinks ahead. Near a fold
+ * (|det| small) the fold's own handling applies instead. */
+static double cusp_distance(const pc_proj_point *cur, double sign)
+{
+    const double rate = sign * cur->cusp_rate;
+    if (!(rate < 0.0) || fabs(cur->det) < PC_PROJECTOR_DET_NEAR_FOLD)
+        return INFINITY;
+    return 0.5 / -rate;
+}
+
 /* The fold test: det J changes sign (or vanishes) only across a fold. */
 static int crosses_fold(const pc_proj_point *a, const pc_proj_point *b)
 {
@@ -176,6 +199,33 @@ static int chord_beyond_speed(const pc_tracer *tr, const pc_proj_point *cur,
            PC_TRACE_CHORD_SPEED * fabs(next->t - cur->t) * speed + noise;
 }
 
+/* 1 when S seen from Dir turns over between cur and next although det
+ * need not change sign: at the middle of the step's (u, v) chord det has
+ * the other sign than at cur (both away from a fold, where the fold's own
+ * tests apply and the sign of det is noise). Asked only where the cusp
+ * rate says |Su x Sv| changes much over the step (PC_TRACE_AREA_CHANGE):
+ * there the parametrisation may fold back on itself in layers
+ * (docs/tracing.md, "Pleats"), and a step can pass two cusps (det
+ * changing sign twice, which the fold test does not see) onto another
+ * layer; cusp_distance sees a cusp ahead only once the area shrinks
+ * towards it, not one behind a stretch where it first grows. On linkrods.step surface 11, curve
+ * 78, a backward step from the middle layer at t = 0.975 landed 0.094
+ * before on the surface's edge, past the cusp where that layer is born
+ * (t = 0.950) and across the inner layer, det +0.38 at one end, +1e-5 at
+ * the other, -0.2 between. */
+static int chord_turns_over(const pc_tracer *tr, const pc_proj_point *cur,
+                            const pc_proj_point *next)
+{
+    const double h = fabs(next->t - cur->t);
+    if (fabs(cur->det) < PC_PROJECTOR_DET_NEAR_FOLD ||
+        !(fmax(fabs(cur->cusp_rate), fabs(next->cusp_rate)) * h > PC_TRACE_AREA_CHANGE))
+        return 0;
+    pc_proj_point mid;
+    tr->proj->derivatives(tr->proj, 0.5 * (cur->t + next->t), 0.5 * (cur->u + next->u),
+                          0.5 * (cur->v + next->v), &mid);
+    return fabs(mid.det) >= PC_PROJECTOR_DET_NEAR_FOLD && (cur->det > 0.0) != (mid.det > 0.0);
+}
+
 /* Predicts and corrects one step from cur to the curve parameter t. On
  * ACCEPT and EXIT, *next holds the new point (with its derivatives). */
 static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
@@ -216,7 +266,8 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
             return STEP_REJECT;
         const int found = pc_locate_exit(tr, cur, h, next);
         if (found >= 0 && (jumped_on_surface(tr, cur, next) ||
-                           (tr->jump_checks && chord_beyond_speed(tr, cur, next))))
+                           (tr->jump_checks && chord_beyond_speed(tr, cur, next)) ||
+                           chord_turns_over(tr, cur, next)))
             return STEP_REJECT;
         return found == 1 ? STEP_EXIT : (found == 0 ? STEP_ACCEPT : STEP_REJECT);
     }
@@ -236,7 +287,8 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
     if (derived == 0)
         derived = proj->derivatives(proj, t, uv[0], uv[1], next) ? 1 : -1;
     if (derived < 0 || crosses_fold(cur, next) || jumped_on_surface(tr, cur, next) ||
-        (tr->jump_checks && chord_beyond_speed(tr, cur, next)))
+        (tr->jump_checks && chord_beyond_speed(tr, cur, next)) ||
+        chord_turns_over(tr, cur, next))
         return STEP_REJECT;
     record_error(tr, residual_error);
     return STEP_ACCEPT;
@@ -364,7 +416,18 @@ projcurve_status pc_trace_run(pc_tracer *tr, const pc_seed *seed, int direction,
             *why = PROJCURVE_END_SILHOUETTE;
             return PROJCURVE_OK;
         }
-        double h = nominal_step(tr, cur) * scale;
+        /* a cusp ahead: the branch ends on it (J singular, as at a fold)
+         * once the rest of the way on S is below PC_TRACE_CUSP_REACHED,
+         * and a step goes at most PC_TRACE_CUSP_FRACTION of the way there
+         * (so it never passes it: the approach is geometric, as towards a
+         * fold) */
+        const double cusp = cusp_distance(cur, sign);
+        const double reached = fmax(proj->newton_tol, PC_TRACE_CUSP_REACHED * proj->model_size);
+        if (cusp * cur->speed <= reached) {
+            *why = PROJCURVE_END_SILHOUETTE;
+            return PROJCURVE_OK;
+        }
+        double h = fmin(nominal_step(tr, cur), PC_TRACE_CUSP_FRACTION * cusp) * scale;
         /* the floor of a cut step: 1e-13 of the domain in t, and a move of
          * the projection on S (h |Q'|) no longer than the corrector's
          * tolerance, below which the points it would add cannot be told

@@ -26,6 +26,22 @@
  * its two ends passed a peak of the speed (a pair of folds, or another
  * branch reached across them): it is cut (tracer.c, chord_beyond_speed). */
 #define PC_TRACE_CHORD_SPEED 1.0
+/* Ahead of a cusp of the parametrisation (tracer.c, cusp_distance) a step
+ * goes at most this fraction of the way there. */
+#define PC_TRACE_CUSP_FRACTION 0.5
+/* A branch ends on a cusp ahead once the rest of the way there is below
+ * this fraction of the model size on S (or the corrector's tolerance, if
+ * larger; 1e-4 of the default eps_D): closer, |Su x Sv| is ~1e-7 of its
+ * size, the square-root law that estimates the way holds no better than
+ * rounding, the corrector may reach the layer beyond, and the refinement
+ * could not verify the last segments (at 1e-9 on linkrods.step surface 11,
+ * curve 78, a branch ended FAILED 9e-9 in t before the cusp). */
+#define PC_TRACE_CUSP_REACHED 1e-8
+/* A step over which the parametrisation's area element |Su x Sv| changes
+ * by more than this in its logarithm (|d ln |Su x Sv| / dt| h, at either
+ * end) is checked at the middle of its (u, v) chord (tracer.c,
+ * chord_turns_over). */
+#define PC_TRACE_AREA_CHANGE 0.25
 /* Boundary exits are located until (u, v) is within this fraction of the
  * domain's width from the boundary, then snapped onto it. */
 #define PC_TRACE_BOUNDARY_TOL 1e-12

@@ -519,7 +519,9 @@ static void collect(sweep *sw, const job *j, const reply *rp, const pc_bounded_o
         const size_t wrong = v->off_surface + v->off_projection + v->behind + v->far_from_exact;
         if (wrong > 0 || v->accessor_failures > 0)
             row.classes |= 1u << F_WRONG;
-        if (v->missed > 0)
+        /* a point image (the curve running along Dir) is no branch, and
+         * the result must say so by a failure (projcurve.h) */
+        if (v->missed > 0 || (v->point_image_points > 0 && rp->verify.reported_failures <= 0))
             row.classes |= 1u << F_MISSED;
         if (v->zero_piece_branches > 0)
             row.classes |= 1u << F_ZERO;
@@ -529,12 +531,13 @@ static void collect(sweep *sw, const job *j, const reply *rp, const pc_bounded_o
         snprintf(detail + len, sizeof detail - len,
                  ", %zu pieces; wrong %zu/%zu (off S %zu, off ray %zu, behind %zu, far %zu; "
                  "worst %.3g eps_D; first at t %.6g: gap %.3g eps_D, lambda %.3g); "
-                 "missed %zu/%zu (t %.6g, %.3g eps_D); "
+                 "missed %zu/%zu (t %.6g, %.3g eps_D; point image %zu); "
                  "zero-piece %zu, failed %zu",
                  v->pieces, wrong, v->samples, v->off_surface, v->off_projection, v->behind,
                  v->far_from_exact, fmax(v->worst_residual, v->worst_exact), v->wrong_t,
                  v->wrong_gap / rp->call.eps_d, v->wrong_lambda,
                  v->missed, v->oracle_points, v->missed_t, v->worst_missed,
+                 v->point_image_points,
                  v->zero_piece_branches, v->failed_ends);
     }
     ++sw->run;

@@ -689,7 +689,25 @@ static void note_missed(verifier *vf, double t, double d)
     rep->worst_missed = fmax(rep->worst_missed, d / vf->in->eps_d);
 }
 
-static void complete_directional(verifier *vf, double t, const double p[3])
+/* 1 when the curve at t runs along Dir to eps_D: the rays of the
+ * neighbouring samples t - dt and t + dt (clamped to the domain) are the
+ * ray of t to eps_D (P moved along it, |(P(t +- dt) - P(t)) x Dir| <=
+ * eps_D), so each ray hit there is the hit of the whole stretch: the
+ * curve's image is a point of S. */
+static int runs_along_dir(const verifier *vf, double t, double dt, const double p[3])
+{
+    for (int side = -1; side <= 1; side += 2) {
+        double q[3], w[3], c[3];
+        curve_point(vf, t + side * dt, q);
+        sub3(q, p, w);
+        cross3(w, vf->dir_unit, c);
+        if (!(norm3(c) <= vf->in->eps_d))
+            return 0;
+    }
+    return 1;
+}
+
+static void complete_directional(verifier *vf, double t, double dt, const double p[3])
 {
     const pc_sweep_input *in = vf->in;
     pc_oracle_hit hits[MAX_HITS];
@@ -706,7 +724,11 @@ static void complete_directional(verifier *vf, double t, const double p[3])
         double h[3];
         projcurve_surface_eval(NULL, in->surface, hits[k].u, hits[k].v, 0, h);
         const double d = cover_distance(vf, h);
-        if (!(d <= tol))
+        if (d <= tol)
+            continue;
+        if (runs_along_dir(vf, t, dt, p))
+            ++vf->rep->point_image_points;
+        else
             note_missed(vf, t, d);
     }
 }
@@ -852,7 +874,7 @@ void pc_sweep_verify(const pc_sweep_input *in, const projcurve_result *r,
             if (in->orthogonal)
                 complete_orthogonal(&vf, t, p);
             else
-                complete_directional(&vf, t, p);
+                complete_directional(&vf, t, (vf.t1 - vf.t0) / n, p);
         }
     }
     free(vf.pieces);

@@ -19,6 +19,8 @@
  *    (directional, ray_oracle.h's mesh) or the local minima of the distance
  *    from P(t) to S (orthogonal, the same mesh's points refined by Newton)
  *    must each lie within eps_D of some returned piece;
+ *    a hit where the curve runs along Dir (its image a point of S, not a
+ *    curve) is counted apart, for the caller to require a reported failure;
  *  - signals: a branch with no pieces, a branch that ends FAILED.
  *
  * Documented exclusions, counted but not failed: samples and hits where
@@ -67,6 +69,12 @@ typedef struct pc_sweep_report {
                                      * normal line (any t), and lambda there */
     /* completeness */
     size_t oracle_points, missed, grazing_points;
+    /* hits not covered where the curve runs along Dir (the rays of the
+     * neighbouring samples are its ray to eps_D): the curve's image is a
+     * point of S, which the library does not return as a branch but counts
+     * as a failure (projcurve.h, projcurve_project_directional); the
+     * caller requires that failure (not counted in missed) */
+    size_t point_image_points;
     double missed_t;             /* t of the first missed point, NaN if none */
     double worst_missed;         /* its distance to the pieces / eps_d */
     /* signals */
