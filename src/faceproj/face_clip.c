@@ -284,7 +284,8 @@ static projcurve_status clip_branch(projcurve_context *ctx, const pc_loop_sample
     pc_loop_hits hits = {0};
     projcurve_status st = guess_polyline(ctx, b, &poly);
     if (st == PROJCURVE_OK)
-        st = pc_loop_crossings(ctx, s, proj, poly.items, poly.count / 3, &hits);
+        st = pc_loop_crossings(ctx, s, proj, poly.items, poly.count / 3, b->seams, b->n_seams,
+                               &hits);
     const double T0 = fmin(b->points[0], b->points[3 * (b->n_points - 1)]);
     const double T1 = fmax(b->points[0], b->points[3 * (b->n_points - 1)]);
     /* stretches between consecutive bounds, the kept ones merged while

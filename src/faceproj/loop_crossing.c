@@ -25,10 +25,8 @@ static double offset_3d(const projcurve_surface *surface, const double uv[2], co
     return vec3_norm(vec3_add(vec3_scale(e[1], d[0]), vec3_scale(e[2], d[1])));
 }
 
-/* Newton in (t, tau) on q(t) - c(tau) = 0 from the guess in *h, t kept
- * within [t_lo, t_hi]. */
-static void refine_hit(const pc_loop_samples *s, const pc_projector *proj, double t_lo,
-                       double t_hi, pc_loop_hit *h)
+void pc_loop_hit_refine(const pc_loop_samples *s, const pc_projector *proj, double t_lo,
+                        double t_hi, pc_loop_hit *h)
 {
     const pc_piece_samples *ps = &s->pieces[h->which];
     const pc_curve2 *cv = &s->face->loops[ps->loop].pieces[ps->piece].curve;
@@ -159,8 +157,18 @@ static void drop_duplicates(const pc_projector *proj, pc_loop_hits *hits, size_t
     hits->count = m;
 }
 
+/* hits[from..] in increasing t, each crossing once. */
+static void sort_hits(const pc_projector *proj, pc_loop_hits *hits, size_t from)
+{
+    if (hits->count == from)
+        return; /* no crossing (items may be NULL) */
+    qsort(hits->items + from, hits->count - from, sizeof *hits->items, by_t);
+    drop_duplicates(proj, hits, from);
+}
+
 projcurve_status pc_loop_crossings(projcurve_context *ctx, const pc_loop_samples *s,
                                    const pc_projector *proj, const double *poly, size_t n,
+                                   const pc_seam_record *seams, size_t n_seams,
                                    pc_loop_hits *hits)
 {
     const size_t from = hits->count;
@@ -174,10 +182,13 @@ projcurve_status pc_loop_crossings(projcurve_context *ctx, const pc_loop_samples
     const double t_lo = fmin(poly[0], poly[3 * (n - 1)]);
     const double t_hi = fmax(poly[0], poly[3 * (n - 1)]);
     for (size_t i = from; i < hits->count; ++i)
-        refine_hit(s, proj, t_lo, t_hi, &hits->items[i]);
-    if (hits->count == from)
-        return PROJCURVE_OK; /* no crossing (items may be NULL) */
-    qsort(hits->items + from, hits->count - from, sizeof *hits->items, by_t);
-    drop_duplicates(proj, hits, from);
-    return PROJCURVE_OK;
+        pc_loop_hit_refine(s, proj, t_lo, t_hi, &hits->items[i]);
+    sort_hits(proj, hits, from);
+    /* then where the side of the loops changes between two crossings */
+    const size_t found = hits->count;
+    const projcurve_status st = pc_loop_crossings_by_side(ctx, s, proj, poly, n, seams, n_seams,
+                                                         hits, from);
+    if (st == PROJCURVE_OK && hits->count > found)
+        sort_hits(proj, hits, from);
+    return st;
 }

@@ -8,9 +8,16 @@
  *
  * Crossings are first guessed where the branch's polyline (its traced
  * points, or its composed pieces' pcurves, all exact points of the
- * projection) meets the loop pieces' samples: a crossing that neither
- * polyline shows (the branch dipping into a loop and out again between two
- * of its points, less than eps_D deep for a composed branch) is not found.
+ * projection) meets the loop pieces' samples. Then each stretch between
+ * two crossings (or a crossing and an end) is sampled on the exact
+ * projection and classified against the face: where the side changes from
+ * IN to OUT or back between two samples, a crossing the polyline missed
+ * lies between them (the polyline's chord on the inside of a loop while
+ * the pcurve bulges past it); it is located by bisection on the side and
+ * refined by the same Newton (loop_crossing_sides.c). A crossing that
+ * neither shows (the branch dipping into a loop and out again between two
+ * polyline points and between two samples, less than eps_D deep for a
+ * composed branch) is not found.
  */
 #ifndef PC_FACEPROJ_LOOP_CROSSING_H
 #define PC_FACEPROJ_LOOP_CROSSING_H
@@ -19,6 +26,7 @@
 
 #include "faceproj/loop_samples.h"
 #include "trace/projector.h"
+#include "trace/result.h"
 
 /* The crossing's accuracy in 3D, relative to the model size. */
 #define PC_CROSSING_TOL 1e-10
@@ -38,11 +46,30 @@ typedef struct pc_loop_hits {
 } pc_loop_hits;
 
 /* Appends to hits the crossings of the polyline poly (n vertices of (t, u,
- * v), t monotone) with the loops of s, each
- * refined on proj, sorted by t. Statuses: OK, NO_MEMORY. */
+ * v), t monotone) with the loops of s, each refined on proj, sorted by t.
+ * seams: the branch's jumps (n_seams records, seam/seam.h), where the
+ * polyline runs from one side of the domain to the other: the side search
+ * takes no sample there. Statuses: OK, NO_MEMORY. */
 projcurve_status pc_loop_crossings(projcurve_context *ctx, const pc_loop_samples *s,
                                    const pc_projector *proj, const double *poly, size_t n,
+                                   const pc_seam_record *seams, size_t n_seams,
                                    pc_loop_hits *hits);
+
+/* Newton in (t, tau) on q(t) - c(tau) = 0 from the guess in *h (t, tau,
+ * uv, which set), t kept within [t_lo, t_hi]; h holds the last iterate,
+ * refined 1 when within PC_CROSSING_TOL. */
+void pc_loop_hit_refine(const pc_loop_samples *s, const pc_projector *proj, double t_lo,
+                        double t_hi, pc_loop_hit *h);
+
+/* The side-change search of the header comment over the stretches between
+ * the crossings hits[from..] (sorted by t; poly, seams as for
+ * pc_loop_crossings, poly's vertices the guesses of the corrector):
+ * appends each crossing found and refined (unsorted, after the others).
+ * Statuses: OK, NO_MEMORY. */
+projcurve_status pc_loop_crossings_by_side(projcurve_context *ctx, const pc_loop_samples *s,
+                                           const pc_projector *proj, const double *poly, size_t n,
+                                           const pc_seam_record *seams, size_t n_seams,
+                                           pc_loop_hits *hits, size_t from);
 
 /* The point of the projection at t from the guess uv (updated): 1 when the
  * corrector converged. */

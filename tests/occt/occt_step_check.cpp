@@ -17,7 +17,10 @@
 // uncertainty of each other (the two forms of one curve). Branches joined
 // across the seams of a full cylinder and a torus give one SURFACE_CURVE
 // per seam segment, each PCURVE inside OCCT's bounds of its surface (to
-// 1e-12 of the width). A whole-shape result
+// 1e-12 of the width); so do the face pieces of the B-rep cases
+// cyl_analytic_seam_conical and sphere_analytic_conical_outside (pieces
+// that cross their face's seam), each face's result written with
+// projcurve_step_writer_add_result. A whole-shape result
 // (projcurve_step_writer_add_shape_result) on the 2x2 shell: one
 // COMPOSITE_CURVE of four segments over B-splines OCCT converts, meeting
 // within the chaining tolerance, transferred as four edges.
@@ -418,32 +421,15 @@ void check_circle(const std::string &dir)
 // compact form is within eps_D of the projection; the file's uncertainty,
 // the fits' errors measured at their check samples, is exceeded by dense
 // samples by a few percent here, so it is not the bound).
-void check_seam_case(const std::string &dir, const char *name, pc_shape_surface shape,
-                     const double p0[3], const double p1[3], size_t jumps)
+//
+// The result r onto s written by projcurve_step_writer_add_result and read
+// back: `segments` SURFACE_CURVEs, each checked as above.
+void check_written_seams(const std::string &path, const projcurve_surface *s,
+                         const projcurve_result *r, size_t segments)
 {
-    projcurve_surface *s = pc_shape_surface_create(&shape);
-    pc_shape_surface_free(&shape);
-    const double ctrl[6] = {p0[0], p0[1], p0[2], p1[0], p1[1], p1[2]};
-    const double knots[4] = {0, 0, 1, 1};
-    projcurve_curve *c = nullptr;
-    CHECK_OK(projcurve_curve_create_nurbs(ctx, 1, 2, ctrl, nullptr, knots, &c));
-    projcurve_result *r = nullptr;
-    if (s && c)
-        CHECK_OK(projcurve_project_orthogonal(ctx, s, c, nullptr, &r));
-    projcurve_curve_destroy(c);
-    if (r == nullptr) {
-        projcurve_surface_destroy(s);
-        return;
-    }
-    size_t seen = 0;
-    for (size_t b = 0; b < r->n_branches; ++b)
-        seen += r->branches[b].n_seams;
-    CHECK(seen == jumps);
-    const size_t segments = r->n_branches + jumps;
     projcurve_step_writer *w = nullptr;
     CHECK_OK(projcurve_step_writer_create(ctx, &w));
     CHECK_OK(projcurve_step_writer_add_result(ctx, w, s, r));
-    const std::string path = dir + "/occt_seams_" + name + ".step";
     CHECK_OK(projcurve_step_writer_write(ctx, w, path.c_str()));
     projcurve_step_writer_destroy(w);
     double uncertainty = 0.0, box[6];
@@ -485,8 +471,88 @@ void check_seam_case(const std::string &dir, const char *name, pc_shape_surface 
                     "(uncertainty %g)\n",
                     path.c_str(), k, t0, t1, gap, uncertainty);
     }
+}
+
+void check_seam_case(const std::string &dir, const char *name, pc_shape_surface shape,
+                     const double p0[3], const double p1[3], size_t jumps)
+{
+    projcurve_surface *s = pc_shape_surface_create(&shape);
+    pc_shape_surface_free(&shape);
+    const double ctrl[6] = {p0[0], p0[1], p0[2], p1[0], p1[1], p1[2]};
+    const double knots[4] = {0, 0, 1, 1};
+    projcurve_curve *c = nullptr;
+    CHECK_OK(projcurve_curve_create_nurbs(ctx, 1, 2, ctrl, nullptr, knots, &c));
+    projcurve_result *r = nullptr;
+    if (s && c)
+        CHECK_OK(projcurve_project_orthogonal(ctx, s, c, nullptr, &r));
+    projcurve_curve_destroy(c);
+    if (r == nullptr) {
+        projcurve_surface_destroy(s);
+        return;
+    }
+    size_t seen = 0;
+    for (size_t b = 0; b < r->n_branches; ++b)
+        seen += r->branches[b].n_seams;
+    CHECK(seen == jumps);
+    check_written_seams(dir + "/occt_seams_" + name + ".step", s, r, r->n_branches + jumps);
     projcurve_result_destroy(r);
     projcurve_surface_destroy(s);
+}
+
+// The face pieces of a B-rep case of tests/data/cases-brep projected from
+// its eye (projcurve_project_shape), each face's result written with
+// projcurve_step_writer_add_result on the face's surface: a piece that
+// crosses its face's seam has its jumps (projcurve_result_branch_seam_count)
+// and is written as one SURFACE_CURVE per seam segment, each PCURVE inside
+// the surface's bounds (before face pieces kept their jumps, the cylinder's
+// piece was one PCURVE with u up to 7.49 on [0, 2 pi], which OCCT
+// rejected). `jumps` is the count the case must give (the curve crosses
+// the seam of each face it meets once).
+void check_face_seam_case(const std::string &dir, const char *name, const char *model_file,
+                          const double eye[3], double eps_d, size_t jumps)
+{
+    projcurve_model *model = nullptr, *curves = nullptr;
+    const std::string mpath = std::string("cases-brep/") + model_file;
+    const std::string cpath = std::string("cases-brep/") + name + ".curves.igs";
+    CHECK_OK(projcurve_model_read_file(ctx, pc_test_data_path(mpath.c_str()), &model));
+    CHECK_OK(projcurve_model_read_file(ctx, pc_test_data_path(cpath.c_str()), &curves));
+    projcurve_options *o = nullptr;
+    CHECK_OK(projcurve_options_create(ctx, &o));
+    CHECK_OK(projcurve_options_set_double(ctx, o, PROJCURVE_OPT_TOL_DISTANCE, eps_d));
+    projcurve_shape_result *sr = nullptr;
+    if (model && curves && projcurve_model_shape_count(model) > 0 &&
+        projcurve_model_curve_count(curves) > 0)
+        CHECK_OK(projcurve_project_shape(ctx, projcurve_model_shape(model, 0),
+                                         projcurve_model_curve(curves, 0),
+                                         PROJCURVE_PROJECT_CONICAL, eye, o, &sr));
+    CHECK(sr != nullptr);
+    const projcurve_shape *shape = sr ? projcurve_model_shape(model, 0) : nullptr;
+    size_t seen = 0;
+    for (size_t i = 0; sr && i < projcurve_shape_result_face_count(sr); ++i) {
+        size_t fi = 0;
+        const projcurve_result *fr = nullptr;
+        projcurve_status fs = PROJCURVE_OK;
+        CHECK_OK(projcurve_shape_result_face(ctx, sr, i, &fi, &fr, &fs, nullptr));
+        if (fr == nullptr || projcurve_result_branch_count(fr) == 0)
+            continue;
+        size_t face_jumps = 0;
+        for (size_t b = 0; b < projcurve_result_branch_count(fr); ++b) {
+            size_t n = 0;
+            CHECK_OK(projcurve_result_branch_seam_count(ctx, fr, b, &n));
+            face_jumps += n;
+        }
+        seen += face_jumps;
+        const projcurve_surface *s = projcurve_face_surface(projcurve_shape_face(shape, fi));
+        check_written_seams(dir + "/occt_face_seams_" + name + "_" + std::to_string(fi) +
+                                ".step",
+                            s, fr, projcurve_result_branch_count(fr) + face_jumps);
+    }
+    CHECK(seen == jumps);
+    std::printf("%s: %zu seam jump(s) over its face pieces\n", name, seen);
+    projcurve_shape_result_destroy(sr);
+    projcurve_options_destroy(o);
+    projcurve_model_destroy(curves);
+    projcurve_model_destroy(model);
 }
 
 // occt_step_check --file PATH N TOL: a file written elsewhere (the
@@ -650,6 +716,12 @@ int main(int argc, char **argv)
     check_seam_case(dir, "cylinder", pc_shape_cylinder(1.0, 2.0), cyl0, cyl1, 1);
     const double tor0[3] = {3, -1, -0.6}, tor1[3] = {3, 1, 0.4};
     check_seam_case(dir, "torus", pc_shape_torus(2.0, 0.5), tor0, tor1, 2);
+    // the eyes and tolerances of tests/data/cases-brep/MANIFEST.tsv
+    const double cyl_eye[3] = {0, 0, 10}, sphere_eye[3] = {0, 0, 40};
+    check_face_seam_case(dir, "cyl_analytic_seam_conical", "cylinder_analytic.step", cyl_eye,
+                         1e-3, 1);
+    check_face_seam_case(dir, "sphere_analytic_conical_outside", "sphere_analytic.step",
+                         sphere_eye, 1e-3, 2);
     check_shape_result(dir);
     projcurve_context_destroy(ctx);
     return pc_test_finish("occt_step_check");
