@@ -20,6 +20,7 @@
 
 #include <math.h>
 
+#include "trace/cusp_rate.h"
 #include "trace/precision.h"
 
 /* Newton diverges when its residual fails to decrease this many times. */
@@ -232,6 +233,9 @@ static int conical_derivatives(const pc_projector *self, double t, double u, dou
     out->ddu = q2[0];
     out->ddv = q2[1];
     out->speed = vec3_norm(w1); /* [SY13] eq. (3.6) */
+    /* a cusp of the parametrisation is one of S, whatever the rays: the
+     * same rate as the directional projector's (docs/conical.md) */
+    out->cusp_rate = pc_cusp_rate(s, n, area2, q1);
     return isfinite(out->speed) && isfinite(out->ddu) && isfinite(out->ddv);
 }
 

@@ -15,6 +15,7 @@
 #include <math.h>
 
 #include "nurbs/span_bound.h"
+#include "trace/cusp_rate.h"
 #include "trace/precision.h"
 
 /* Without a third-derivative bound (rational surfaces), a Newton step is in
@@ -401,26 +402,6 @@ static int dir_correct(const pc_projector *self, double t, double uv[2], int *it
     return newton(self, t, 0.0, uv, iterations);
 }
 
-/* The rate at which a cusp of the parametrisation closes in along the
- * branch (q1 = q'), N = Su x Sv (|N|^2 = area2 > 0): the part of d ln |N|
- * / dt = N.N' / |N|^2 that comes from the pure second derivatives, N' ~
- * Suu u' x Sv + Su x Svv v'. Where Sv vanishes and reverses along a v line
- * (a cusp: Sv ~ (v - v_c) Svv, docs/tracing.md "Pleats"), |N| goes to 0
- * with it while Dir.N / |N| does not, and this is v' / (v - v_c): what
- * tells the tracer the cusp is near (likewise Su along a u line). At a
- * pole or a collapsed row (a whole u line on one point: Su ~ (v - v_0)
- * Suv, Suu -> 0 with it) the mixed term Suv makes |N| vanish and this
- * rate stays bounded: the branch passes a pole, it ends at a cusp. */
-static double cusp_rate(const pc_vec3 *s, pc_vec3 n, double area2, const double q1[2])
-{
-    if (!(area2 > 0.0))
-        return 0.0;
-    const pc_vec3 n_t = vec3_add(vec3_cross(vec3_scale(s[3], q1[0]), s[2]),
-                                 vec3_cross(s[1], vec3_scale(s[5], q1[1])));
-    const double rate = vec3_dot(n, n_t) / area2;
-    return isfinite(rate) ? rate : 0.0;
-}
-
 /* q' and q'' from differentiating G(q(t), t) = 0 once and twice:
  *   J q'  = [e_i.P']
  *   J q'' = [e_i.P''] - [e_i.(Suu u'^2 + 2 Suv u'v' + Svv v'^2)]
@@ -456,7 +437,7 @@ static int dir_derivatives(const pc_projector *self, double t, double u, double 
     out->ddu = q2[0];
     out->ddv = q2[1];
     out->speed = vec3_norm(vec3_axpy(vec3_scale(s[1], q1[0]), q1[1], s[2])); /* eq. (3.6) */
-    out->cusp_rate = cusp_rate(s, n, area2, q1);
+    out->cusp_rate = pc_cusp_rate(s, n, area2, q1);
     return isfinite(out->speed) && isfinite(out->ddu) && isfinite(out->ddv);
 }
 

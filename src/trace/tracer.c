@@ -226,6 +226,36 @@ static int chord_turns_over(const pc_tracer *tr, const pc_proj_point *cur,
     return fabs(mid.det) >= PC_PROJECTOR_DET_NEAR_FOLD && (cur->det > 0.0) != (mid.det > 0.0);
 }
 
+/* 1 when the step from cur lands (nearly) on a cusp that cur did not see
+ * ahead: at next the area element |Su x Sv| shrinks ahead so fast that
+ * the rest of the way there (the square-root law of cusp_distance, taken
+ * here also where det is small: at a cusp it is the ratio of two
+ * vanishing terms) is less than PC_TRACE_CUSP_FRACTION of the step, and
+ * at the middle of the step's (u, v) chord the rate says so too (towards
+ * a cusp it grows as 1 / (t_c - t), there about 1 / h; at a pole it stays
+ * bounded, and only at the pole itself, where Su x Sv is rounding, can it
+ * be anything: a step onto the pole of a NURBS sphere is no landing on a
+ * cusp). Where a branch runs between two cusps, the rate at cur tells
+ * only the nearer one, and a corrector or exit locator that fails on the
+ * layer beyond the other may bring the step right onto it: seen from an
+ * eye 1e3 sizes above linkrods.step surface 11 (curve 78), a backward
+ * step of 0.025 in t from the middle layer at t = 0.975 ended at the cusp
+ * where that layer is born (t = 0.950, det 0.001) in one chord that the
+ * refinement could not follow there. Cut, the step approaches that cusp
+ * geometrically as cusp_distance makes the steps towards the cusp ahead. */
+static int lands_on_cusp(const pc_tracer *tr, const pc_proj_point *cur,
+                         const pc_proj_point *next)
+{
+    const double h = next->t - cur->t;
+    const double limit = -0.5 / PC_TRACE_CUSP_FRACTION;
+    if (fabs(cur->det) < PC_PROJECTOR_DET_NEAR_FOLD || !(next->cusp_rate * h < limit))
+        return 0;
+    pc_proj_point mid;
+    tr->proj->derivatives(tr->proj, 0.5 * (cur->t + next->t), 0.5 * (cur->u + next->u),
+                          0.5 * (cur->v + next->v), &mid);
+    return mid.cusp_rate * h < PC_TRACE_CUSP_FRACTION * limit;
+}
+
 /* Predicts and corrects one step from cur to the curve parameter t. On
  * ACCEPT and EXIT, *next holds the new point (with its derivatives). */
 static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
@@ -267,7 +297,7 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
         const int found = pc_locate_exit(tr, cur, h, next);
         if (found >= 0 && (jumped_on_surface(tr, cur, next) ||
                            (tr->jump_checks && chord_beyond_speed(tr, cur, next)) ||
-                           chord_turns_over(tr, cur, next)))
+                           chord_turns_over(tr, cur, next) || lands_on_cusp(tr, cur, next)))
             return STEP_REJECT;
         return found == 1 ? STEP_EXIT : (found == 0 ? STEP_ACCEPT : STEP_REJECT);
     }
@@ -288,7 +318,7 @@ static step_outcome try_step(pc_tracer *tr, const pc_proj_point *cur, double t,
         derived = proj->derivatives(proj, t, uv[0], uv[1], next) ? 1 : -1;
     if (derived < 0 || crosses_fold(cur, next) || jumped_on_surface(tr, cur, next) ||
         (tr->jump_checks && chord_beyond_speed(tr, cur, next)) ||
-        chord_turns_over(tr, cur, next))
+        chord_turns_over(tr, cur, next) || lands_on_cusp(tr, cur, next))
         return STEP_REJECT;
     record_error(tr, residual_error);
     return STEP_ACCEPT;
