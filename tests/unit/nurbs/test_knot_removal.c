@@ -108,7 +108,7 @@ static void test_insert_remove(unsigned long long seed, int p, int dim, double u
     pc_test_rng rng;
     pc_test_rng_seed(&rng, seed);
     curve c = random_curve(&rng, p, dim, 5);
-    const double have = u == floor(u) ? 1 : 0; /* a knot already (simple) */
+    const int have = u == floor(u); /* a knot already (simple) */
     curve stages[MAX_DEG + 1];
     int n_ins = 0;
     stages[0] = c;
