@@ -13,9 +13,10 @@
  * own (the piece's parameter mapped linearly): on linkrods.step one lies
  * 0.07 in u past a crossing that the projection reaches 1.3e-5 later in
  * t, so its side does not belong to its t. Two samples of one stretch on
- * opposite sides (IN and OUT: ON decides nothing) have a crossing between them that the polyline did not show:
- * bisection on the side brings it into the ON band, the loop piece nearest
- * to that point and the Newton of pc_loop_hit_refine place it. Only a
+ * opposite sides (IN and OUT: ON decides nothing) have a crossing between
+ * them that the polyline did not show: bisection on the side brings it
+ * into the ON band, the loop piece nearest to that point and the Newton of
+ * pc_loop_hit_refine place it. Only a
  * crossing Newton brings within PC_CROSSING_TOL is added: one it cannot
  * place (the corrector failing, a branch running along the loop) leaves
  * the stretch as it was.

@@ -208,11 +208,11 @@ static int chord_beyond_speed(const pc_tracer *tr, const pc_proj_point *cur,
  * (docs/tracing.md, "Pleats"), and a step can pass two cusps (det
  * changing sign twice, which the fold test does not see) onto another
  * layer; cusp_distance sees a cusp ahead only once the area shrinks
- * towards it, not one behind a stretch where it first grows. On linkrods.step surface 11, curve
- * 78, a backward step from the middle layer at t = 0.975 landed 0.094
- * before on the surface's edge, past the cusp where that layer is born
- * (t = 0.950) and across the inner layer, det +0.38 at one end, +1e-5 at
- * the other, -0.2 between. */
+ * towards it, not one behind a stretch where it first grows. On
+ * linkrods.step surface 11, curve 78, a backward step from the middle
+ * layer at t = 0.975 landed 0.094 before on the surface's edge, past the
+ * cusp where that layer is born (t = 0.950) and across the inner layer,
+ * det +0.38 at one end, +1e-5 at the other, -0.2 between. */
 static int chord_turns_over(const pc_tracer *tr, const pc_proj_point *cur,
                             const pc_proj_point *next)
 {
